@@ -1,0 +1,44 @@
+// cosmos: the command-line front end of COSMOS-Cell. Every failure on bad input ends in one
+// line on stderr naming the file, key or device and the reason, and a non-zero exit.
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <map>
+
+#include "apps/command_registry.hpp"
+#include "core/input_error.hpp"
+
+namespace cosmos::cli {
+namespace {
+std::map<std::string, CommandInstaller>& registry() {
+  static std::map<std::string, CommandInstaller> commands;
+  return commands;
+}
+}  // namespace
+
+CommandRegistration::CommandRegistration(std::string name, CommandInstaller install) {
+  registry().emplace(std::move(name), std::move(install));
+}
+
+void install_commands(CLI::App& root) {
+  for (auto& [name, install] : registry()) install(root);
+}
+
+}  // namespace cosmos::cli
+
+int main(int argc, char** argv) {
+  CLI::App app{"COSMOS-Cell: free-form part recognition from range data (Dorai's COSMOS)"};
+  app.require_subcommand(1);
+  cosmos::cli::install_commands(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error);
+  } catch (const cosmos::InputError& error) {
+    std::cerr << "cosmos: " << error.what() << "\n";
+    return 1;
+  } catch (const std::exception& error) {
+    std::cerr << "cosmos: error: " << error.what() << "\n";
+    return 2;
+  }
+  return 0;
+}

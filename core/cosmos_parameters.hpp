@@ -1,0 +1,47 @@
+#pragma once
+// Every parameter of the COSMOS pipeline of one view, with its documented default.
+// The defaults are the thesis's where it gives one (5x5 window, 15 smoothing iterations,
+// shape diameter 0.25, 15 patches, bin width 0.005).
+
+namespace cosmos {
+
+struct SurfaceFitParameters {
+  int window_size = 5;            // odd; §3.5.1 uses 5x5
+  bool bicubic = true;            // bicubic z(x, y) (§3.5.1); false: biquadratic
+  double depth_jump_mm = 3.0;     // |dz| per pixel step above which samples lie across an edge
+  int min_samples = 12;           // fewer valid same-side samples: the pixel is invalid
+};
+
+struct SmoothingParameters {
+  int iterations = 15;            // §3.5.1: 15 iterations
+  double normal_scale_deg = 8.0;  // robust scale of a predicted normal's deviation
+  double curvature_scale = 0.5;   // robust scale of relative curvature-tensor disagreement
+  double self_weight = 1.0;       // weight of a pixel's own frame among its neighbours'
+};
+
+struct ShapeIndexParameters {
+  // Eqs. 3.21-3.22: |grad S_I| = 1 / (pi * sqrt(k1^2 + k2^2)). Pixels more sensitive than
+  // this (in mm, i.e. S_I per 1/mm) are planar: here curvatures below ~1/157 mm^-1.
+  double planar_sensitivity_mm = 50.0;
+  double max_tilt_deg = 85.0;     // steeper normals are unreliable (grazing data): excluded
+};
+
+struct SegmentationParameters {
+  double shape_diameter_limit = 0.25;  // §3.5.2
+  int max_patches = 15;                // §5.4.3 adaptive mode; 0 = fixed limit only
+  double min_patch_area_fraction = 0.01;  // patches below this share of the view fold away
+};
+
+struct SpectrumParameters {
+  double bin_width = 0.005;  // §3.5.4
+};
+
+struct CosmosParameters {
+  SurfaceFitParameters fit;
+  SmoothingParameters smoothing;
+  ShapeIndexParameters shape_index;
+  SegmentationParameters segmentation;
+  SpectrumParameters spectrum;
+};
+
+}  // namespace cosmos

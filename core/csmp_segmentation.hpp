@@ -1,0 +1,24 @@
+#pragma once
+// Constant-shape maximal patches by constrained region growing (§3.5.2), with the adaptive
+// shape-diameter limit of §5.4.3.
+#include <cstdint>
+#include <vector>
+
+#include "core/cosmos_parameters.hpp"
+#include "core/pixel_grid.hpp"
+#include "core/shape_index.hpp"
+
+namespace cosmos {
+
+inline constexpr std::int32_t kNoPatch = -1;
+
+struct CsmpSegmentation {
+  PixelGrid<std::int32_t> patch_of_pixel;  // patch id in [0, patch_count) or kNoPatch
+  int patch_count = 0;
+  double shape_diameter_limit = 0;         // the limit that was used (adaptive or fixed)
+};
+
+CsmpSegmentation segment_csmps(const ShapeIndexField& field,
+                               const SegmentationParameters& parameters);
+
+}  // namespace cosmos

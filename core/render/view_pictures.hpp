@@ -1,0 +1,14 @@
+#pragma once
+// The pictures `cosmos inspect` writes for a person to look at.
+#include <filesystem>
+
+#include "core/cosmos_pipeline.hpp"
+#include "core/range_image.hpp"
+
+namespace cosmos {
+
+// Writes range.png, shape_index.png, csmps.png, gauss_map.png and spectrum.png into dir.
+void write_view_pictures(const RangeImage& image, const ViewAnalysis& analysis,
+                         const std::filesystem::path& dir);
+
+}  // namespace cosmos
