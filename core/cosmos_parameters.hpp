@@ -10,6 +10,10 @@ struct SurfaceFitParameters {
   bool bicubic = true;            // bicubic z(x, y) (§3.5.1); false: biquadratic
   double depth_jump_mm = 3.0;     // |dz| per pixel step above which samples lie across an edge
   int min_samples = 12;           // fewer valid same-side samples: the pixel is invalid
+  // RMS residual (mm) above which a window is taken to straddle a crease (an orientation
+  // discontinuity); the pixel is then fitted from the shifted window, still containing it,
+  // that fits best. Well above sensor noise (~0.02 mm); 0 disables.
+  double crease_residual_mm = 0.06;
 };
 
 struct SmoothingParameters {
@@ -27,9 +31,17 @@ struct ShapeIndexParameters {
 };
 
 struct SegmentationParameters {
-  double shape_diameter_limit = 0.25;  // §3.5.2
-  int max_patches = 15;                // §5.4.3 adaptive mode; 0 = fixed limit only
-  double min_patch_area_fraction = 0.01;  // patches below this share of the view fold away
+  double shape_diameter_limit = 0.25;  // §3.5.2, used as is when max_patches = 0
+  // §5.4.3 adaptive mode: the smallest limit, from adaptive_start_limit up in steps, that
+  // leaves at most max_patches patches of at least the minimum area; 0 = fixed limit.
+  int max_patches = 15;
+  double adaptive_start_limit = 0.05;
+  double adaptive_limit_step = 0.025;
+  int boundary_refinement_passes = 8;  // §3.5.2 post-processing of boundary pixels (at most)
+  double min_patch_area_fraction = 0.03;  // patches below this share of the view fold away
+  // Planar pixels join one planar patch only when their normals agree this well, so the faces
+  // of a polyhedron meeting at a crease stay separate patches (§3.2.2).
+  double planar_crease_deg = 5.0;
 };
 
 struct SpectrumParameters {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/cosmos_parameters.hpp"
+#include "core/darboux_frame_field.hpp"
 #include "core/pixel_grid.hpp"
 #include "core/shape_index.hpp"
 
@@ -18,7 +19,8 @@ struct CsmpSegmentation {
   double shape_diameter_limit = 0;         // the limit that was used (adaptive or fixed)
 };
 
-CsmpSegmentation segment_csmps(const ShapeIndexField& field,
+// `frames` supplies the normals that keep differently oriented planar faces apart.
+CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndexField& field,
                                const SegmentationParameters& parameters);
 
 }  // namespace cosmos

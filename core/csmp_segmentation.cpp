@@ -1,0 +1,227 @@
+#include "core/csmp_segmentation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+#include "core/region_merge_queue.hpp"
+
+namespace cosmos {
+namespace {
+
+// Forward half of the 8-neighbourhood (right, below-left, below, below-right): every
+// adjacency once.
+constexpr int kForwardNeighbors[4] = {4, 5, 6, 7};
+
+bool is_region_pixel(SurfaceLabel label) { return label != SurfaceLabel::kInvalid; }
+
+// Calls visit(i, j) for every same-side 8-adjacent pair of region pixels, once.
+template <class Visit>
+void for_each_adjacent_pair(const ShapeIndexField& field, Visit&& visit) {
+  for (int row = 0; row < field.height(); ++row) {
+    for (int column = 0; column < field.width(); ++column) {
+      const std::size_t i = field.label.index(column, row);
+      if (!is_region_pixel(field.label[i])) continue;
+      for (int k : kForwardNeighbors) {
+        if (!((field.same_side[i] >> k) & 1u)) continue;
+        const int c = column + kNeighborOffsets[k].column, r = row + kNeighborOffsets[k].row;
+        const std::size_t j = field.label.index(c, r);
+        if (is_region_pixel(field.label[j])) visit(i, j);
+      }
+    }
+  }
+}
+
+struct PatchStats {
+  double area_mm2 = 0;
+  double shape_index_area = 0;  // sum of S_I * area, for the mean
+  std::vector<int> neighbors;   // roots, may hold stale or repeated entries
+  double mean() const { return area_mm2 > 0 ? shape_index_area / area_mm2 : 0; }
+};
+
+// Folds every patch smaller than min_area into its adjacent patch of most similar mean shape
+// index (§5.4.3), smallest first; tiny patches left with no neighbour are dropped.
+std::vector<bool> fold_tiny_patches(const ShapeIndexField& field, const std::vector<int>& region_of_pixel,
+                                    RegionMergeQueue& regions, double min_area_mm2) {
+  const std::size_t n = regions.region_count();
+  std::vector<PatchStats> stats(n);
+  for (std::size_t i = 0; i < field.label.size(); ++i) {
+    if (region_of_pixel[i] < 0) continue;
+    PatchStats& s = stats[regions.find(region_of_pixel[i])];
+    s.area_mm2 += field.area_mm2[i];
+    s.shape_index_area += static_cast<double>(field.shape_index[i]) * field.area_mm2[i];
+  }
+  for_each_adjacent_pair(field, [&](std::size_t i, std::size_t j) {
+    const int a = regions.find(region_of_pixel[i]), b = regions.find(region_of_pixel[j]);
+    if (a == b) return;
+    stats[a].neighbors.push_back(b);
+    stats[b].neighbors.push_back(a);
+  });
+  std::vector<int> tiny;
+  for (std::size_t r = 0; r < n; ++r) {
+    auto& s = stats[r];
+    std::sort(s.neighbors.begin(), s.neighbors.end());
+    s.neighbors.erase(std::unique(s.neighbors.begin(), s.neighbors.end()), s.neighbors.end());
+    if (regions.find(static_cast<int>(r)) == static_cast<int>(r) && s.area_mm2 < min_area_mm2)
+      tiny.push_back(static_cast<int>(r));
+  }
+  std::stable_sort(tiny.begin(), tiny.end(),
+                   [&](int a, int b) { return stats[a].area_mm2 < stats[b].area_mm2; });
+  // Into significant neighbours first (repeatedly, as folding makes more neighbours
+  // significant), so a ramp of thin strips between two patches splits between them instead
+  // of gluing itself into one more patch; then tiny clusters among themselves.
+  auto fold_pass = [&](bool into_significant_only) {
+    bool changed = false;
+    for (int patch : tiny) {
+      const int root = regions.find(patch);
+      PatchStats& s = stats[root];
+      if (s.area_mm2 >= min_area_mm2) continue;
+      int best = -1;
+      double best_difference = 0;
+      for (int neighbor : s.neighbors) {
+        const int other = regions.find(neighbor);
+        if (other == root || (into_significant_only && stats[other].area_mm2 < min_area_mm2)) continue;
+        const double difference = std::abs(stats[other].mean() - s.mean());
+        if (best < 0 || difference < best_difference || (difference == best_difference && other < best)) {
+          best = other;
+          best_difference = difference;
+        }
+      }
+      if (best < 0) continue;
+      PatchStats merged = std::move(stats[best]);
+      merged.area_mm2 += s.area_mm2;
+      merged.shape_index_area += s.shape_index_area;
+      merged.neighbors.insert(merged.neighbors.end(), s.neighbors.begin(), s.neighbors.end());
+      regions.unite(root, best);
+      const int new_root = regions.find(root);
+      std::vector<int> roots;
+      for (int neighbor : merged.neighbors) {
+        const int other = regions.find(neighbor);
+        if (other != new_root) roots.push_back(other);
+      }
+      std::sort(roots.begin(), roots.end());
+      roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
+      merged.neighbors = std::move(roots);
+      stats[new_root] = std::move(merged);
+      changed = true;
+    }
+    return changed;
+  };
+  while (fold_pass(true)) {
+  }
+  while (fold_pass(false)) {
+  }
+  std::vector<bool> dropped(n, false);
+  for (int patch : tiny) {
+    const int root = regions.find(patch);
+    if (stats[root].area_mm2 < min_area_mm2) dropped[root] = true;  // an island of noise
+  }
+  return dropped;
+}
+
+int count_patches_at_least(RegionMergeQueue& regions, double min_area_mm2) {
+  int count = 0;
+  for (std::size_t r = 0; r < regions.region_count(); ++r)
+    if (regions.find(static_cast<int>(r)) == static_cast<int>(r) && regions.area_mm2(static_cast<int>(r)) >= min_area_mm2)
+      ++count;
+  return count;
+}
+
+// The post-processing of §3.5.2: a curved boundary pixel moves to the adjacent curved patch
+// whose mean shape index is nearer its own, so boundaries settle where the shape index is
+// halfway between the patches instead of where growing happened to stop. Jacobi-style (reads
+// the old labels only), so the result does not depend on the scan order.
+bool refine_boundaries(const ShapeIndexField& field, CsmpSegmentation& segmentation) {
+  bool changed = false;
+  std::vector<double> area(segmentation.patch_count, 0), shape_area(segmentation.patch_count, 0);
+  const auto& patch = segmentation.patch_of_pixel;
+  for (std::size_t i = 0; i < patch.size(); ++i) {
+    if (patch[i] == kNoPatch || field.label[i] != SurfaceLabel::kCurved) continue;
+    area[patch[i]] += field.area_mm2[i];
+    shape_area[patch[i]] += field.area_mm2[i] * field.shape_index[i];
+  }
+  std::vector<double> mean(segmentation.patch_count, kPlanarShapeIndex);
+  for (int p = 0; p < segmentation.patch_count; ++p)
+    if (area[p] > 0) mean[p] = shape_area[p] / area[p];
+  PixelGrid<std::int32_t> refined = patch;
+  for (int row = 0; row < patch.height(); ++row) {
+    for (int column = 0; column < patch.width(); ++column) {
+      const std::size_t i = patch.index(column, row);
+      if (patch[i] == kNoPatch || field.label[i] != SurfaceLabel::kCurved) continue;
+      const double s = field.shape_index[i];
+      double best_distance = std::abs(s - mean[patch[i]]);
+      for (int k = 0; k < 8; ++k) {
+        if (!((field.same_side[i] >> k) & 1u)) continue;
+        const std::size_t j = patch.index(column + kNeighborOffsets[k].column, row + kNeighborOffsets[k].row);
+        const int other = patch[j];
+        if (other == kNoPatch || other == patch[i] || field.label[j] != SurfaceLabel::kCurved) continue;
+        const double distance = std::abs(s - mean[other]);
+        if (distance < best_distance) {
+          best_distance = distance;
+          refined[i] = other;
+          changed = true;
+        }
+      }
+    }
+  }
+  segmentation.patch_of_pixel = std::move(refined);
+  return changed;
+}
+
+}  // namespace
+
+CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndexField& field,
+                               const SegmentationParameters& parameters) {
+  const std::size_t pixels = field.label.size();
+  std::vector<int> region_of_pixel(pixels, -1);
+  RegionMergeQueue regions;
+  regions.reserve(pixels, 4 * pixels);
+  double visible_area_mm2 = 0;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    if (!is_region_pixel(field.label[i])) continue;
+    const float s = field.shape_index[i];
+    region_of_pixel[i] = regions.add_region(s, s, field.area_mm2[i]);
+    visible_area_mm2 += field.area_mm2[i];
+  }
+  // Planar pixels grow their own patches: planar-curved pairs get no edge, nor do planar
+  // pairs across a crease.
+  const double crease_cos = std::cos(parameters.planar_crease_deg * std::numbers::pi / 180.0);
+  for_each_adjacent_pair(field, [&](std::size_t i, std::size_t j) {
+    if (field.label[i] != field.label[j]) return;
+    if (field.label[i] == SurfaceLabel::kPlanar) {
+      double cosine = 0;
+      for (int axis = kNx; axis <= kNz; ++axis) cosine += frames.frame[axis][i] * frames.frame[axis][j];
+      if (cosine < crease_cos) return;
+    }
+    regions.add_edge(region_of_pixel[i], region_of_pixel[j]);
+  });
+
+  const double min_area_mm2 = parameters.min_patch_area_fraction * visible_area_mm2;
+  const bool adaptive = parameters.max_patches > 0;
+  double limit = adaptive ? parameters.adaptive_start_limit : parameters.shape_diameter_limit;
+  regions.grow(limit);
+  while (adaptive && limit < 1.0 &&
+         count_patches_at_least(regions, min_area_mm2) > parameters.max_patches) {
+    limit = std::min(1.0, limit + parameters.adaptive_limit_step);
+    regions.grow(limit);
+  }
+  const std::vector<bool> dropped = fold_tiny_patches(field, region_of_pixel, regions, min_area_mm2);
+
+  CsmpSegmentation result;
+  result.shape_diameter_limit = limit;
+  result.patch_of_pixel = PixelGrid<std::int32_t>(field.width(), field.height(), kNoPatch);
+  std::vector<std::int32_t> patch_of_root(regions.region_count(), kNoPatch);
+  for (std::size_t i = 0; i < pixels; ++i) {
+    if (region_of_pixel[i] < 0) continue;
+    const int root = regions.find(region_of_pixel[i]);
+    if (dropped[root]) continue;
+    if (patch_of_root[root] == kNoPatch) patch_of_root[root] = result.patch_count++;
+    result.patch_of_pixel[i] = patch_of_root[root];
+  }
+  for (int pass = 0; pass < parameters.boundary_refinement_passes; ++pass)
+    if (!refine_boundaries(field, result)) break;
+  return result;
+}
+
+}  // namespace cosmos

@@ -1,0 +1,35 @@
+#pragma once
+// Curvature-consistency smoothing (§3.5.1; Ferrie, Lagarde & Whaite 1993; Sander & Zucker
+// 1990): each iteration re-estimates a pixel's Darboux frame as a robust average of the frames
+// its valid same-side 8-neighbours predict for it. A neighbour j predicts, by transporting its
+// local quadric to pixel i, the normal n_j + W_j (p_i - p_j) and its own Weingarten tensor
+// re-projected onto the new tangent plane. Predictions are weighted by how well they agree
+// with pixel i's current frame (Cauchy weights on the normal deviation and on the relative
+// curvature-tensor disagreement), so frames are never averaged across creases.
+//
+// One iteration of one row reads only rows r-1..r+1 of the previous iteration, so the real-time
+// loop can pipeline the iterations row by row; the row kernel is branch-free per pixel.
+#include <cstdint>
+
+#include "core/cosmos_parameters.hpp"
+#include "core/darboux_frame_field.hpp"
+
+namespace cosmos {
+
+// Rows r-1, r, r+1 (index 0, 1, 2) of the fixed geometry and of the previous iteration's
+// frames; at the image border the missing row points at row r (its same-side bits are 0).
+struct SmoothingRowInput {
+  int width = 0;
+  const std::uint8_t* valid = nullptr;
+  const std::uint8_t* same_side = nullptr;
+  const float* position[3][3] = {};
+  const float* frame[3][kFrameComponents] = {};
+};
+
+void smooth_frame_row(const SmoothingRowInput& in, float* const* out_frame,
+                      const SmoothingParameters& parameters);
+
+// Runs parameters.iterations iterations over the whole field in place.
+void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& parameters);
+
+}  // namespace cosmos

@@ -1,0 +1,263 @@
+#include "core/local_surface_fit.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace cosmos {
+namespace {
+
+constexpr int kBicubicTerms = 10;
+constexpr int kBiquadraticTerms = 6;
+
+// Monomials 1, u, v, u^2, uv, v^2, u^3, u^2 v, u v^2, v^3 in pixel steps (conditioning does
+// not depend on the pixel size; to_metric() rescales).
+Eigen::Matrix<double, kBicubicTerms, 1> monomials(double u, double v) {
+  Eigen::Matrix<double, kBicubicTerms, 1> m;
+  m << 1, u, v, u * u, u * v, v * v, u * u * u, u * u * v, u * v * v, v * v * v;
+  return m;
+}
+
+// Solves the leading Terms x Terms block with fixed-size matrices (no allocation); false when
+// the samples do not determine the surface (e.g. all on one line).
+template <int Terms>
+bool solve_normal_equations(const Eigen::Matrix<double, kBicubicTerms, kBicubicTerms>& lower,
+                            const Eigen::Matrix<double, kBicubicTerms, 1>& right_side,
+                            Eigen::Matrix<double, 6, 1>& quadric_coefficients) {
+  const Eigen::Matrix<double, Terms, Terms> a =
+      lower.template topLeftCorner<Terms, Terms>().template selfadjointView<Eigen::Lower>();
+  const Eigen::LDLT<Eigen::Matrix<double, Terms, Terms>> solver(a);
+  const auto diagonal = solver.vectorD();
+  if (solver.info() != Eigen::Success || diagonal.minCoeff() <= 1e-9 * diagonal.maxCoeff())
+    return false;
+  const Eigen::Matrix<double, Terms, 1> c = solver.solve(right_side.template head<Terms>());
+  quadric_coefficients = c.template head<6>();
+  return true;
+}
+
+// Derivatives at (u, v) of the monomials, as rows z, z_u, z_v, z_uu/2, z_uv, z_vv/2 (the
+// quadric coefficients of the Taylor expansion at that point).
+Eigen::Matrix<double, 6, kBicubicTerms> taylor_rows(double u, double v) {
+  Eigen::Matrix<double, 6, kBicubicTerms> t;
+  t << 1, u, v, u * u, u * v, v * v, u * u * u, u * u * v, u * v * v, v * v * v,    //
+      0, 1, 0, 2 * u, v, 0, 3 * u * u, 2 * u * v, v * v, 0,                         //
+      0, 0, 1, 0, u, 2 * v, 0, u * u, 2 * u * v, 3 * v * v,                         //
+      0, 0, 0, 1, 0, 0, 3 * u, v, 0, 0,                                             //
+      0, 0, 0, 0, 1, 0, 0, 2 * u, 2 * v, 0,                                         //
+      0, 0, 0, 0, 0, 1, 0, 0, u, 3 * v;
+  return t;
+}
+
+}  // namespace
+
+void darboux_frame_from_derivatives(const SurfaceDerivatives& d, float* f) {
+  const double p = d.zx, q = d.zy;
+  const double w2 = 1 + p * p + q * q;
+  const double w = std::sqrt(w2);
+  f[kNx] = static_cast<float>(-p / w);
+  f[kNy] = static_cast<float>(-q / w);
+  f[kNz] = static_cast<float>(1 / w);
+  // Second fundamental form with the sign flipped so that convex towards +z is positive.
+  const Eigen::Matrix2d second{{-d.zxx / w, -d.zxy / w}, {-d.zxy / w, -d.zyy / w}};
+  const Eigen::Matrix2d first_inverse = Eigen::Matrix2d{{1 + q * q, -p * q}, {-p * q, 1 + p * p}} / w2;
+  const Eigen::Matrix2d m = first_inverse * second * first_inverse;
+  // W = J M J^T with J = [X_u X_v] = [[1,0],[0,1],[p,q]]: the shape operator as a 3D tensor.
+  Eigen::Matrix<double, 3, 2> j;
+  j << 1, 0, 0, 1, p, q;
+  const Eigen::Matrix3d weingarten = j * m * j.transpose();
+  f[kWxx] = static_cast<float>(weingarten(0, 0));
+  f[kWxy] = static_cast<float>(weingarten(0, 1));
+  f[kWxz] = static_cast<float>(weingarten(0, 2));
+  f[kWyy] = static_cast<float>(weingarten(1, 1));
+  f[kWyz] = static_cast<float>(weingarten(1, 2));
+  f[kWzz] = static_cast<float>(weingarten(2, 2));
+}
+
+LocalSurfaceFitter::LocalSurfaceFitter(const SurfaceFitParameters& parameters,
+                                       double pixel_size_x_mm, double pixel_size_y_mm)
+    : parameters_(parameters),
+      pixel_size_x_mm_(pixel_size_x_mm),
+      pixel_size_y_mm_(pixel_size_y_mm),
+      half_window_(std::clamp(parameters.window_size / 2, 1, kMaxWindowSize / 2)),
+      side_(2 * half_window_ + 1),
+      basis_size_(parameters.bicubic ? kBicubicTerms : kBiquadraticTerms) {
+  const int samples = side_ * side_;
+  Eigen::MatrixXd design(samples, basis_size_);
+  for (int dv = -half_window_, k = 0; dv <= half_window_; ++dv)
+    for (int du = -half_window_; du <= half_window_; ++du, ++k)
+      design.row(k) = monomials(du, dv).head(basis_size_).transpose();
+  const Eigen::MatrixXd pseudo_inverse =
+      (design.transpose() * design).ldlt().solve(design.transpose());
+  for (int ov = -half_window_; ov <= half_window_; ++ov)
+    for (int ou = -half_window_; ou <= half_window_; ++ou)
+      offset_kernels_.emplace_back(taylor_rows(-ou, -ov).leftCols(basis_size_) * pseudo_inverse);
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(design);
+  residual_basis_ =
+      (qr.householderQ() * Eigen::MatrixXd::Identity(samples, basis_size_)).transpose();
+}
+
+SurfaceDerivatives LocalSurfaceFitter::to_metric(const QuadricCoefficients& c) const {
+  const double dx = pixel_size_x_mm_, dy = pixel_size_y_mm_;
+  SurfaceDerivatives d;
+  d.z_mm = c[0];
+  d.zx = c[1] / dx;
+  d.zy = c[2] / dy;
+  d.zxx = 2 * c[3] / (dx * dx);
+  d.zxy = c[4] / (dx * dy);
+  d.zyy = 2 * c[5] / (dy * dy);
+  return d;
+}
+
+// Samples of the window centred at (window_column, window_row), relative to the depth of the
+// pixel (column, row); false when one is missing or lies across a depth jump from the pixel.
+bool LocalSurfaceFitter::gather_window(const RangeImage& image, int window_column, int window_row,
+                                       int column, int row, WindowSamples& samples) const {
+  const int h = half_window_;
+  if (window_column < h || window_row < h || window_column + h >= image.width() ||
+      window_row + h >= image.height())
+    return false;
+  const float center = image.z_mm(column, row);
+  for (int dv = -h, k = 0; dv <= h; ++dv) {
+    const float* z_row = image.z_mm.row(window_row + dv);
+    for (int du = -h; du <= h; ++du, ++k) {
+      const float z = z_row[window_column + du];
+      const int steps = std::max(std::abs(window_column + du - column), std::abs(window_row + dv - row));
+      if (!(std::abs(z - center) <= parameters_.depth_jump_mm * steps)) return false;
+      samples[k] = static_cast<double>(z) - center;
+    }
+  }
+  return true;
+}
+
+double LocalSurfaceFitter::residual_sum_of_squares(const WindowSamples& samples) const {
+  const int n = side_ * side_;
+  double total = 0;
+  for (int k = 0; k < n; ++k) total += samples[k] * samples[k];
+  for (int b = 0; b < basis_size_; ++b) {
+    double projection = 0;
+    for (int k = 0; k < n; ++k) projection += residual_basis_(b, k) * samples[k];
+    total -= projection * projection;
+  }
+  return std::max(total, 0.0);
+}
+
+LocalSurfaceFitter::QuadricCoefficients LocalSurfaceFitter::apply_kernel(
+    int offset_index, const WindowSamples& samples) const {
+  const auto& kernel = offset_kernels_[offset_index];
+  QuadricCoefficients c = QuadricCoefficients::Zero();
+  for (int k = 0; k < side_ * side_; ++k) c += kernel.col(k) * samples[k];
+  return c;
+}
+
+bool LocalSurfaceFitter::fit_pixel(const RangeImage& image, int column, int row,
+                                   SurfaceDerivatives& d) const {
+  const float center = image.z_mm(column, row);
+  if (!std::isfinite(center)) return false;
+  WindowSamples samples;
+  if (!gather_window(image, column, row, column, row, samples))
+    return fit_partial_window(image, column, row, d);
+  const int centered = half_window_ * side_ + half_window_;
+  int best_offset = centered;
+  const double crease_rss =
+      parameters_.crease_residual_mm * parameters_.crease_residual_mm * side_ * side_;
+  double best_rss = crease_rss > 0 ? residual_sum_of_squares(samples) : 0;
+  if (best_rss > crease_rss) {
+    WindowSamples shifted;
+    for (int ov = -half_window_, o = 0; ov <= half_window_; ++ov) {
+      for (int ou = -half_window_; ou <= half_window_; ++ou, ++o) {
+        if (o == centered || !gather_window(image, column + ou, row + ov, column, row, shifted)) continue;
+        const double rss = residual_sum_of_squares(shifted);
+        if (rss < best_rss) {
+          best_rss = rss;
+          best_offset = o;
+          samples = shifted;
+        }
+      }
+    }
+  }
+  QuadricCoefficients c = apply_kernel(best_offset, samples);
+  c[0] += center;
+  d = to_metric(c);
+  return true;
+}
+
+bool LocalSurfaceFitter::fit_partial_window(const RangeImage& image, int column, int row,
+                                            SurfaceDerivatives& d) const {
+  const float center = image.z_mm(column, row);
+  const int h = half_window_;
+  Eigen::Matrix<double, kBicubicTerms, kBicubicTerms> normal_matrix =
+      Eigen::Matrix<double, kBicubicTerms, kBicubicTerms>::Zero();
+  Eigen::Matrix<double, kBicubicTerms, 1> right_side = Eigen::Matrix<double, kBicubicTerms, 1>::Zero();
+  int samples = 0;
+  for (int dv = -h; dv <= h; ++dv) {
+    for (int du = -h; du <= h; ++du) {
+      if (!image.z_mm.contains(column + du, row + dv)) continue;
+      const float z = image.z_mm(column + du, row + dv);
+      const int steps = std::max(std::abs(du), std::abs(dv));
+      if (!(std::abs(z - center) <= parameters_.depth_jump_mm * steps)) continue;
+      const auto m = monomials(du, dv);
+      normal_matrix.selfadjointView<Eigen::Lower>().rankUpdate(m);
+      right_side += m * (z - center);
+      ++samples;
+    }
+  }
+  if (samples < parameters_.min_samples) return false;
+  // A cubic needs more support than a quadric; sparse windows fall back to the quadric.
+  QuadricCoefficients coefficients;
+  const bool solved = (basis_size_ == kBicubicTerms && samples >= 16)
+                          ? solve_normal_equations<kBicubicTerms>(normal_matrix, right_side, coefficients)
+                          : solve_normal_equations<kBiquadraticTerms>(normal_matrix, right_side, coefficients);
+  if (!solved) return false;
+  coefficients[0] += center;
+  d = to_metric(coefficients);
+  return true;
+}
+
+void LocalSurfaceFitter::fit_row(const RangeImage& image, int row, DarbouxFrameField& out) const {
+  float frame[kFrameComponents];
+  for (int column = 0; column < image.width(); ++column) {
+    const std::size_t i = out.valid.index(column, row);
+    SurfaceDerivatives d;
+    const bool ok = fit_pixel(image, column, row, d);
+    out.valid[i] = ok ? 1 : 0;
+    out.position_mm[0][i] = static_cast<float>(image.x_mm(column));
+    out.position_mm[1][i] = static_cast<float>(image.y_mm(row));
+    out.position_mm[2][i] = ok ? static_cast<float>(d.z_mm) : 0.0f;
+    if (ok) {
+      darboux_frame_from_derivatives(d, frame);
+    } else {
+      std::fill(frame, frame + kFrameComponents, 0.0f);
+      frame[kNz] = 1.0f;
+    }
+    for (int c = 0; c < kFrameComponents; ++c) out.frame[c][i] = frame[c];
+  }
+}
+
+void LocalSurfaceFitter::link_row(const RangeImage& image, int row, DarbouxFrameField& out) const {
+  for (int column = 0; column < image.width(); ++column) {
+    const std::size_t i = out.valid.index(column, row);
+    std::uint8_t mask = 0;
+    if (out.valid[i]) {
+      const float center = image.z_mm[i];
+      for (int k = 0; k < 8; ++k) {
+        const int c = column + kNeighborOffsets[k].column, r = row + kNeighborOffsets[k].row;
+        if (!out.valid.contains(c, r) || !out.valid(c, r)) continue;
+        if (std::abs(image.z_mm(c, r) - center) <= parameters_.depth_jump_mm)
+          mask |= static_cast<std::uint8_t>(1u << k);
+      }
+    }
+    out.same_side[i] = mask;
+  }
+}
+
+DarbouxFrameField fit_local_surfaces(const RangeImage& image,
+                                     const SurfaceFitParameters& parameters) {
+  DarbouxFrameField field(image.width(), image.height());
+  const LocalSurfaceFitter fitter(parameters, image.pixel_size_x_mm, image.pixel_size_y_mm);
+  for (int row = 0; row < image.height(); ++row) fitter.fit_row(image, row, field);
+  for (int row = 0; row < image.height(); ++row) fitter.link_row(image, row, field);
+  return field;
+}
+
+}  // namespace cosmos

@@ -1,0 +1,45 @@
+#pragma once
+// Constrained region growing over a region-adjacency graph (§3.5.2): union-find regions that
+// remember their shape-index range, and a bucket queue of adjacency edges keyed by the shape
+// diameter (max S_I - min S_I) the merged region would have. Costs only grow as regions grow,
+// so stale edges are re-filed lazily when popped. Growing can be resumed with a larger limit
+// (the adaptive mode of §5.4.3) without starting over. Deterministic: integer buckets, LIFO
+// within a bucket.
+#include <cstdint>
+#include <vector>
+
+namespace cosmos {
+
+class RegionMergeQueue {
+ public:
+  // Regions are created with add_region() in index order, edges with add_edge().
+  void reserve(std::size_t regions, std::size_t edges);
+  int add_region(float shape_index_min, float shape_index_max, float area_mm2);
+  void add_edge(int a, int b);
+
+  // Merges adjacent pairs, least merged shape diameter first, while it is <= limit.
+  void grow(double shape_diameter_limit);
+
+  int find(int region);
+  void unite(int a, int b);  // unconditional merge (used to fold tiny patches)
+  float area_mm2(int root) const { return area_mm2_[root]; }
+  float shape_index_min(int root) const { return min_[root]; }
+  float shape_index_max(int root) const { return max_[root]; }
+  std::size_t region_count() const { return parent_.size(); }
+
+ private:
+  struct Edge {
+    std::int32_t a;
+    std::int32_t b;
+  };
+  static constexpr int kBuckets = 1024;  // over shape diameters [0, 1]
+  float merged_diameter(int root_a, int root_b) const;
+  static int bucket_of(float diameter);
+
+  std::vector<std::int32_t> parent_;
+  std::vector<float> min_, max_, area_mm2_;
+  std::vector<std::vector<Edge>> buckets_ = std::vector<std::vector<Edge>>(kBuckets + 1);
+  std::vector<Edge> deferred_;  // popped edges above the current limit, kept for a resume
+};
+
+}  // namespace cosmos

@@ -1,0 +1,78 @@
+#include "core/shape_index.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace cosmos {
+
+float shape_index(float kappa1, float kappa2) {
+  // Eq. 3.2 is written for the thesis's sign convention, where convex surfaces have negative
+  // curvatures; with convex positive the same value is 1/2 + atan(...)/pi.
+  const float sum = kappa1 + kappa2, difference = kappa1 - kappa2;
+  return 0.5f + std::atan2(sum, difference) / std::numbers::pi_v<float>;
+}
+
+float curvedness(float kappa1, float kappa2) {
+  return std::sqrt(0.5f * (kappa1 * kappa1 + kappa2 * kappa2));  // Eq. 3.3
+}
+
+float shape_index_sensitivity_mm(float kappa1, float kappa2) {
+  // |(dS/dk1, dS/dk2)| from Eqs. 3.21-3.22 = 1 / (pi sqrt(k1^2 + k2^2)).
+  const float magnitude = std::sqrt(kappa1 * kappa1 + kappa2 * kappa2);
+  if (magnitude == 0.0f) return std::numeric_limits<float>::infinity();
+  return 1.0f / (std::numbers::pi_v<float> * magnitude);
+}
+
+namespace {
+
+ShapeIndexField make_field(int width, int height) {
+  ShapeIndexField field;
+  field.label = PixelGrid<SurfaceLabel>(width, height, SurfaceLabel::kInvalid);
+  field.shape_index = PixelGrid<float>(width, height, std::numeric_limits<float>::quiet_NaN());
+  field.curvedness_per_mm = PixelGrid<float>(width, height, 0.0f);
+  field.area_mm2 = PixelGrid<float>(width, height, 0.0f);
+  field.same_side = PixelGrid<std::uint8_t>(width, height, 0);
+  return field;
+}
+
+}  // namespace
+
+void classify_row(const DarbouxFrameField& frames, int row, double pixel_size_x_mm,
+                  double pixel_size_y_mm, const ShapeIndexParameters& parameters,
+                  ShapeIndexField& out) {
+  const float min_normal_z =
+      static_cast<float>(std::cos(parameters.max_tilt_deg * std::numbers::pi / 180.0));
+  const float cell_area_mm2 = static_cast<float>(pixel_size_x_mm * pixel_size_y_mm);
+  const float planar_sensitivity = static_cast<float>(parameters.planar_sensitivity_mm);
+  for (int column = 0; column < frames.width(); ++column) {
+    const std::size_t i = frames.valid.index(column, row);
+    const float normal_z = frames.frame[kNz][i];
+    if (!frames.valid[i] || !(normal_z >= min_normal_z)) {
+      out.label[i] = SurfaceLabel::kInvalid;
+      out.shape_index[i] = std::numeric_limits<float>::quiet_NaN();
+      out.curvedness_per_mm[i] = 0;
+      out.area_mm2[i] = 0;
+      out.same_side[i] = 0;
+      continue;
+    }
+    const PrincipalCurvatures k = principal_curvatures(frames, i);
+    const bool planar = shape_index_sensitivity_mm(k.kappa1, k.kappa2) > planar_sensitivity;
+    out.label[i] = planar ? SurfaceLabel::kPlanar : SurfaceLabel::kCurved;
+    out.shape_index[i] = planar ? kPlanarShapeIndex : shape_index(k.kappa1, k.kappa2);
+    out.curvedness_per_mm[i] = curvedness(k.kappa1, k.kappa2);
+    // The cell's true surface area: its footprint divided by cos(tilt) = n_z.
+    out.area_mm2[i] = cell_area_mm2 / normal_z;
+    out.same_side[i] = frames.same_side[i];
+  }
+}
+
+ShapeIndexField classify_surface(const DarbouxFrameField& frames, double pixel_size_x_mm,
+                                 double pixel_size_y_mm, const ShapeIndexParameters& parameters) {
+  ShapeIndexField field = make_field(frames.width(), frames.height());
+  for (int row = 0; row < frames.height(); ++row)
+    classify_row(frames, row, pixel_size_x_mm, pixel_size_y_mm, parameters, field);
+  return field;
+}
+
+}  // namespace cosmos
