@@ -120,14 +120,6 @@ std::vector<bool> fold_tiny_patches(const ShapeIndexField& field, const std::vec
   return dropped;
 }
 
-int count_patches_at_least(RegionMergeQueue& regions, double min_area_mm2) {
-  int count = 0;
-  for (std::size_t r = 0; r < regions.region_count(); ++r)
-    if (regions.find(static_cast<int>(r)) == static_cast<int>(r) && regions.area_mm2(static_cast<int>(r)) >= min_area_mm2)
-      ++count;
-  return count;
-}
-
 // The post-processing of §3.5.2: a curved boundary pixel moves to the adjacent curved patch
 // whose mean shape index is nearer its own, so boundaries settle where the shape index is
 // halfway between the patches instead of where growing happened to stop. Jacobi-style (reads
@@ -198,15 +190,20 @@ CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndex
   });
 
   const double min_area_mm2 = parameters.min_patch_area_fraction * visible_area_mm2;
+  regions.count_regions_of_area_at_least(static_cast<float>(min_area_mm2));
   const bool adaptive = parameters.max_patches > 0;
   double limit = adaptive ? parameters.adaptive_start_limit : parameters.shape_diameter_limit;
   regions.grow(limit);
-  while (adaptive && limit < 1.0 &&
-         count_patches_at_least(regions, min_area_mm2) > parameters.max_patches) {
-    limit = std::min(1.0, limit + parameters.adaptive_limit_step);
-    regions.grow(limit);
+  std::vector<bool> dropped;
+  for (;;) {
+    while (adaptive && limit < 1.0 && regions.significant_region_count() > parameters.max_patches) {
+      limit = std::min(1.0, limit + parameters.adaptive_limit_step);
+      regions.grow(limit);
+    }
+    // Folding can join tiny patches into new significant ones: grow on if that overshoots.
+    dropped = fold_tiny_patches(field, region_of_pixel, regions, min_area_mm2);
+    if (!adaptive || limit >= 1.0 || regions.significant_region_count() <= parameters.max_patches) break;
   }
-  const std::vector<bool> dropped = fold_tiny_patches(field, region_of_pixel, regions, min_area_mm2);
 
   CsmpSegmentation result;
   result.shape_diameter_limit = limit;

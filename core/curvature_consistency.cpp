@@ -12,93 +12,10 @@ namespace {
 constexpr float kCurvatureFloorPerMm = 1e-3f;
 
 struct RobustScales {
-  float inverse_normal_scale;     // 1 / (1 - cos(normal scale))
-  float inverse_curvature_scale2; // 1 / curvature_scale^2
+  float inverse_normal_scale;      // 1 / (1 - cos(normal scale))
+  float inverse_curvature_scale2;  // 1 / curvature_scale^2
   float self_weight;
 };
-
-// The smoothed frame of the pixel at `column`; `kClamp` keeps neighbour reads inside the row
-// at its two ends (their same-side bits are 0 there, so they get no weight).
-template <bool kClamp>
-inline void smooth_pixel(const SmoothingRowInput& in, float* const* out, int column,
-                         const RobustScales& s) {
-  const float* const* f = in.frame[1];
-  const float ni[3] = {f[kNx][column], f[kNy][column], f[kNz][column]};
-  const float wi[6] = {f[kWxx][column], f[kWxy][column], f[kWxz][column],
-                       f[kWyy][column], f[kWyz][column], f[kWzz][column]};
-  const float wi_norm2 = wi[0] * wi[0] + wi[3] * wi[3] + wi[5] * wi[5] +
-                         2 * (wi[1] * wi[1] + wi[2] * wi[2] + wi[4] * wi[4]);
-  const float pi[3] = {in.position[1][0][column], in.position[1][1][column],
-                       in.position[1][2][column]};
-  const float self_weight = s.self_weight * ni[2] * ni[2];
-  float sum_n[3] = {self_weight * ni[0], self_weight * ni[1], self_weight * ni[2]};
-  float sum_w[6];
-  for (int k = 0; k < 6; ++k) sum_w[k] = self_weight * wi[k];
-  float sum_weight = self_weight;
-  const unsigned mask = in.same_side[column];
-
-  for (int k = 0; k < 8; ++k) {
-    const int r = kNeighborOffsets[k].row + 1;
-    int j = column + kNeighborOffsets[k].column;
-    if constexpr (kClamp) j = std::clamp(j, 0, in.width - 1);
-    const float* const* g = in.frame[r];
-    const float nj[3] = {g[kNx][j], g[kNy][j], g[kNz][j]};
-    const float wj[6] = {g[kWxx][j], g[kWxy][j], g[kWxz][j], g[kWyy][j], g[kWyz][j], g[kWzz][j]};
-    const float d[3] = {pi[0] - in.position[r][0][j], pi[1] - in.position[r][1][j],
-                        pi[2] - in.position[r][2][j]};
-    // Transport: the neighbour's quadric predicts the normal n_j + W_j d at this pixel.
-    float np[3] = {nj[0] + wj[0] * d[0] + wj[1] * d[1] + wj[2] * d[2],
-                   nj[1] + wj[1] * d[0] + wj[3] * d[1] + wj[4] * d[2],
-                   nj[2] + wj[2] * d[0] + wj[4] * d[1] + wj[5] * d[2]};
-    const float inv_len = 1.0f / std::sqrt(np[0] * np[0] + np[1] * np[1] + np[2] * np[2]);
-    for (float& v : np) v *= inv_len;
-    const float normal_deviation =
-        (1.0f - (np[0] * ni[0] + np[1] * ni[1] + np[2] * ni[2])) * s.inverse_normal_scale;
-    float dw2 = 0, wj_norm2 = 0;
-    for (int m = 0; m < 6; ++m) {
-      const float multiplicity = (m == 0 || m == 3 || m == 5) ? 1.0f : 2.0f;
-      dw2 += multiplicity * (wj[m] - wi[m]) * (wj[m] - wi[m]);
-      wj_norm2 += multiplicity * wj[m] * wj[m];
-    }
-    const float curvature_disagreement =
-        dw2 / (wi_norm2 + wj_norm2 + kCurvatureFloorPerMm * kCurvatureFloorPerMm) *
-        s.inverse_curvature_scale2;
-    // Steeply tilted neighbours are sampled sparsely and fit poorly (near silhouettes): their
-    // predictions count with the squared cosine of their tilt.
-    const float reliability = nj[2] * nj[2];
-    const float weight = static_cast<float>((mask >> k) & 1u) * reliability /
-                         ((1.0f + normal_deviation) * (1.0f + curvature_disagreement));
-    for (int m = 0; m < 3; ++m) sum_n[m] += weight * np[m];
-    for (int m = 0; m < 6; ++m) sum_w[m] += weight * wj[m];
-    sum_weight += weight;
-  }
-
-  const float inv_len = 1.0f / std::sqrt(sum_n[0] * sum_n[0] + sum_n[1] * sum_n[1] +
-                                         sum_n[2] * sum_n[2]);
-  const float n[3] = {sum_n[0] * inv_len, sum_n[1] * inv_len, sum_n[2] * inv_len};
-  const float inv_weight = 1.0f / sum_weight;
-  const float w[6] = {sum_w[0] * inv_weight, sum_w[1] * inv_weight, sum_w[2] * inv_weight,
-                      sum_w[3] * inv_weight, sum_w[4] * inv_weight, sum_w[5] * inv_weight};
-  // Project the averaged tensor onto the new tangent plane: W' = P W P, P = I - n n^T,
-  // i.e. W - n u^T - u n^T + a n n^T with u = W n, a = n.u.
-  const float u[3] = {w[0] * n[0] + w[1] * n[1] + w[2] * n[2],
-                      w[1] * n[0] + w[3] * n[1] + w[4] * n[2],
-                      w[2] * n[0] + w[4] * n[1] + w[5] * n[2]};
-  const float a = n[0] * u[0] + n[1] * u[1] + n[2] * u[2];
-  const bool keep = in.valid[column] == 0;
-  auto store = [&](int component, float value) {
-    out[component][column] = keep ? f[component][column] : value;
-  };
-  store(kNx, n[0]);
-  store(kNy, n[1]);
-  store(kNz, n[2]);
-  store(kWxx, w[0] - 2 * n[0] * u[0] + a * n[0] * n[0]);
-  store(kWxy, w[1] - n[0] * u[1] - u[0] * n[1] + a * n[0] * n[1]);
-  store(kWxz, w[2] - n[0] * u[2] - u[0] * n[2] + a * n[0] * n[2]);
-  store(kWyy, w[3] - 2 * n[1] * u[1] + a * n[1] * n[1]);
-  store(kWyz, w[4] - n[1] * u[2] - u[1] * n[2] + a * n[1] * n[2]);
-  store(kWzz, w[5] - 2 * n[2] * u[2] + a * n[2] * n[2]);
-}
 
 RobustScales robust_scales(const SmoothingParameters& p) {
   const double normal_scale_rad = p.normal_scale_deg * std::numbers::pi / 180.0;
@@ -107,22 +24,138 @@ RobustScales robust_scales(const SmoothingParameters& p) {
           static_cast<float>(p.self_weight)};
 }
 
+// |W|^2 (Frobenius) of a symmetric tensor stored as xx, xy, xz, yy, yz, zz.
+inline float tensor_norm2(float xx, float xy, float xz, float yy, float yz, float zz) {
+  return xx * xx + yy * yy + zz * zz + 2 * (xy * xy + xz * xz + yz * yz);
+}
+
+// Starts the sums with the pixel's own frame; steep pixels are sampled sparsely and fit
+// poorly (near silhouettes), so every frame counts with the squared cosine of its tilt.
+void start_sums(const SmoothingRowInput& in, SmoothingWorkspace& ws, const RobustScales& s) {
+  const float* const* f = in.frame[1];
+  float* own_norm = ws.sum(SmoothingWorkspace::kOwnNorm);
+  float* weight = ws.sum(SmoothingWorkspace::kWeight);
+  for (int c = 0; c < in.width; ++c) {
+    weight[c] = s.self_weight * f[kNz][c] * f[kNz][c];
+    own_norm[c] = tensor_norm2(f[kWxx][c], f[kWxy][c], f[kWxz][c], f[kWyy][c], f[kWyz][c], f[kWzz][c]);
+  }
+  for (int m = 0; m < kFrameComponents; ++m) {
+    float* sum = ws.sum(m);
+    const float* component = f[m];
+#pragma GCC ivdep
+    for (int c = 0; c < in.width; ++c) sum[c] = weight[c] * component[c];
+  }
+}
+
+// Adds the predictions of the neighbour in direction k for columns [begin, end).
+void add_neighbor_predictions(const SmoothingRowInput& in, SmoothingWorkspace& ws, int k,
+                              int begin, int end, const RobustScales& s) {
+  const int r = kNeighborOffsets[k].row + 1, dc = kNeighborOffsets[k].column;
+  const float* const* f = in.frame[1];
+  const float* const* g = in.frame[r];
+  const float *nix = f[kNx], *niy = f[kNy], *niz = f[kNz];
+  const float *wixx = f[kWxx], *wixy = f[kWxy], *wixz = f[kWxz], *wiyy = f[kWyy], *wiyz = f[kWyz], *wizz = f[kWzz];
+  const float *njx = g[kNx] + dc, *njy = g[kNy] + dc, *njz = g[kNz] + dc;
+  const float *wjxx = g[kWxx] + dc, *wjxy = g[kWxy] + dc, *wjxz = g[kWxz] + dc;
+  const float *wjyy = g[kWyy] + dc, *wjyz = g[kWyz] + dc, *wjzz = g[kWzz] + dc;
+  const float *pix = in.position[1][0], *piy = in.position[1][1], *piz = in.position[1][2];
+  const float *pjx = in.position[r][0] + dc, *pjy = in.position[r][1] + dc, *pjz = in.position[r][2] + dc;
+  const std::uint8_t* mask = in.same_side;
+  const float* own_norm = ws.sum(SmoothingWorkspace::kOwnNorm);
+  float *snx = ws.sum(kNx), *sny = ws.sum(kNy), *snz = ws.sum(kNz);
+  float *swxx = ws.sum(kWxx), *swxy = ws.sum(kWxy), *swxz = ws.sum(kWxz);
+  float *swyy = ws.sum(kWyy), *swyz = ws.sum(kWyz), *swzz = ws.sum(kWzz);
+  float* sweight = ws.sum(SmoothingWorkspace::kWeight);
+  const float floor2 = kCurvatureFloorPerMm * kCurvatureFloorPerMm;
+#pragma GCC ivdep
+  for (int c = begin; c < end; ++c) {
+    const float dx = pix[c] - pjx[c], dy = piy[c] - pjy[c], dz = piz[c] - pjz[c];
+    // Transport: the neighbour's quadric predicts the normal n_j + W_j d at this pixel.
+    float px = njx[c] + wjxx[c] * dx + wjxy[c] * dy + wjxz[c] * dz;
+    float py = njy[c] + wjxy[c] * dx + wjyy[c] * dy + wjyz[c] * dz;
+    float pz = njz[c] + wjxz[c] * dx + wjyz[c] * dy + wjzz[c] * dz;
+    const float inv_len = 1.0f / std::sqrt(px * px + py * py + pz * pz);
+    px *= inv_len;
+    py *= inv_len;
+    pz *= inv_len;
+    const float normal_deviation = (1.0f - (px * nix[c] + py * niy[c] + pz * niz[c])) * s.inverse_normal_scale;
+    const float difference2 = tensor_norm2(wjxx[c] - wixx[c], wjxy[c] - wixy[c], wjxz[c] - wixz[c],
+                                           wjyy[c] - wiyy[c], wjyz[c] - wiyz[c], wjzz[c] - wizz[c]);
+    const float neighbor_norm2 = tensor_norm2(wjxx[c], wjxy[c], wjxz[c], wjyy[c], wjyz[c], wjzz[c]);
+    const float disagreement = difference2 / (own_norm[c] + neighbor_norm2 + floor2) * s.inverse_curvature_scale2;
+    const float linked = static_cast<float>((mask[c] >> k) & 1u);
+    const float weight = linked * njz[c] * njz[c] / ((1.0f + normal_deviation) * (1.0f + disagreement));
+    snx[c] += weight * px;
+    sny[c] += weight * py;
+    snz[c] += weight * pz;
+    swxx[c] += weight * wjxx[c];
+    swxy[c] += weight * wjxy[c];
+    swxz[c] += weight * wjxz[c];
+    swyy[c] += weight * wjyy[c];
+    swyz[c] += weight * wjyz[c];
+    swzz[c] += weight * wjzz[c];
+    sweight[c] += weight;
+  }
+}
+
+// The new frame: the normalized mean normal, and the mean tensor projected onto its tangent
+// plane, W' = P W P with P = I - n n^T, i.e. W - n u^T - u n^T + a n n^T, u = W n, a = n.u.
+void finish_row(const SmoothingRowInput& in, SmoothingWorkspace& ws, float* const* out) {
+  const float* const* f = in.frame[1];
+  const float *sx = ws.sum(kNx), *sy = ws.sum(kNy), *sz = ws.sum(kNz);
+  const float *sxx = ws.sum(kWxx), *sxy = ws.sum(kWxy), *sxz = ws.sum(kWxz);
+  const float *syy = ws.sum(kWyy), *syz = ws.sum(kWyz), *szz = ws.sum(kWzz);
+  const float* sweight = ws.sum(SmoothingWorkspace::kWeight);
+  const std::uint8_t* valid = in.valid;
+  float* out_rows[kFrameComponents];
+  const float* f_rows[kFrameComponents];
+  for (int m = 0; m < kFrameComponents; ++m) out_rows[m] = out[m], f_rows[m] = f[m];
+#pragma GCC ivdep
+  for (int c = 0; c < in.width; ++c) {
+    const float inv_len = 1.0f / std::sqrt(sx[c] * sx[c] + sy[c] * sy[c] + sz[c] * sz[c]);
+    const float n0 = sx[c] * inv_len, n1 = sy[c] * inv_len, n2 = sz[c] * inv_len;
+    const float inv_weight = 1.0f / sweight[c];
+    const float w0 = sxx[c] * inv_weight, w1 = sxy[c] * inv_weight, w2 = sxz[c] * inv_weight;
+    const float w3 = syy[c] * inv_weight, w4 = syz[c] * inv_weight, w5 = szz[c] * inv_weight;
+    const float u0 = w0 * n0 + w1 * n1 + w2 * n2, u1 = w1 * n0 + w3 * n1 + w4 * n2,
+                u2 = w2 * n0 + w4 * n1 + w5 * n2;
+    const float a = n0 * u0 + n1 * u1 + n2 * u2;
+    const float updated[kFrameComponents] = {n0, n1, n2,
+                                             w0 - 2 * n0 * u0 + a * n0 * n0,
+                                             w1 - n0 * u1 - u0 * n1 + a * n0 * n1,
+                                             w2 - n0 * u2 - u0 * n2 + a * n0 * n2,
+                                             w3 - 2 * n1 * u1 + a * n1 * n1,
+                                             w4 - n1 * u2 - u1 * n2 + a * n1 * n2,
+                                             w5 - 2 * n2 * u2 + a * n2 * n2};
+    // Invalid pixels keep their (neutral, finite) frame: a blend instead of a branch.
+    const float take = valid[c] ? 1.0f : 0.0f;
+    for (int m = 0; m < kFrameComponents; ++m) out_rows[m][c] = f_rows[m][c] + take * (updated[m] - f_rows[m][c]);
+  }
+}
+
 }  // namespace
 
+SmoothingWorkspace::SmoothingWorkspace(int width) : width_(width) {
+  for (auto& sum : sums_) sum.assign(static_cast<std::size_t>(std::max(width, 1)), 0.0f);
+}
+
 void smooth_frame_row(const SmoothingRowInput& in, float* const* out_frame,
-                      const SmoothingParameters& parameters) {
+                      const SmoothingParameters& parameters, SmoothingWorkspace& workspace) {
   const RobustScales scales = robust_scales(parameters);
-  if (in.width <= 0) return;
-  smooth_pixel<true>(in, out_frame, 0, scales);
-  for (int column = 1; column + 1 < in.width; ++column)
-    smooth_pixel<false>(in, out_frame, column, scales);
-  if (in.width > 1) smooth_pixel<true>(in, out_frame, in.width - 1, scales);
+  start_sums(in, workspace, scales);
+  for (int k = 0; k < 8; ++k) {
+    // Columns whose neighbour in direction k exists (the others have no same-side bit).
+    const int dc = kNeighborOffsets[k].column;
+    add_neighbor_predictions(in, workspace, k, dc < 0 ? 1 : 0, dc > 0 ? in.width - 1 : in.width, scales);
+  }
+  finish_row(in, workspace, out_frame);
 }
 
 void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& parameters) {
   if (parameters.iterations <= 0) return;
   const int width = field.width(), height = field.height();
   std::array<PixelGrid<float>, kFrameComponents> scratch = field.frame;
+  SmoothingWorkspace workspace(width);
   auto* previous = &field.frame;
   auto* next = &scratch;
   for (int iteration = 0; iteration < parameters.iterations; ++iteration) {
@@ -138,7 +171,7 @@ void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& para
       }
       float* out[kFrameComponents];
       for (int c = 0; c < kFrameComponents; ++c) out[c] = (*next)[c].row(row);
-      smooth_frame_row(in, out, parameters);
+      smooth_frame_row(in, out, parameters, workspace);
     }
     std::swap(previous, next);
   }

@@ -5,11 +5,15 @@
 // local quadric to pixel i, the normal n_j + W_j (p_i - p_j) and its own Weingarten tensor
 // re-projected onto the new tangent plane. Predictions are weighted by how well they agree
 // with pixel i's current frame (Cauchy weights on the normal deviation and on the relative
-// curvature-tensor disagreement), so frames are never averaged across creases.
+// curvature-tensor disagreement) and by the neighbour's reliability (its tilt), so frames are
+// never averaged across creases and silhouettes do not bleed inwards.
 //
 // One iteration of one row reads only rows r-1..r+1 of the previous iteration, so the real-time
-// loop can pipeline the iterations row by row; the row kernel is branch-free per pixel.
+// loop can pipeline the iterations row by row. The row kernel runs one neighbour direction at
+// a time over the whole row (structure-of-arrays, no branches) so that it vectorizes.
+#include <array>
 #include <cstdint>
+#include <vector>
 
 #include "core/cosmos_parameters.hpp"
 #include "core/darboux_frame_field.hpp"
@@ -26,8 +30,23 @@ struct SmoothingRowInput {
   const float* frame[3][kFrameComponents] = {};
 };
 
+// Row-sized accumulators, allocated once for the widest row (no allocation per row).
+class SmoothingWorkspace {
+ public:
+  explicit SmoothingWorkspace(int width);
+  int width() const { return width_; }
+  float* sum(int k) { return sums_[k].data(); }
+
+  static constexpr int kWeight = kFrameComponents;       // sum of weights
+  static constexpr int kOwnNorm = kFrameComponents + 1;  // |W_i|^2 of the pixel itself
+
+ private:
+  int width_;
+  std::array<std::vector<float>, kFrameComponents + 2> sums_;
+};
+
 void smooth_frame_row(const SmoothingRowInput& in, float* const* out_frame,
-                      const SmoothingParameters& parameters);
+                      const SmoothingParameters& parameters, SmoothingWorkspace& workspace);
 
 // Runs parameters.iterations iterations over the whole field in place.
 void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& parameters);

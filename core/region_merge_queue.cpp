@@ -42,10 +42,19 @@ int RegionMergeQueue::find(int region) {
   return region;
 }
 
+void RegionMergeQueue::count_regions_of_area_at_least(float area_mm2) {
+  significant_area_mm2_ = area_mm2;
+  significant_regions_ = 0;
+  for (std::size_t r = 0; r < parent_.size(); ++r)
+    if (parent_[r] == static_cast<std::int32_t>(r) && area_mm2_[r] >= area_mm2) ++significant_regions_;
+}
+
 void RegionMergeQueue::unite(int a, int b) {
   a = find(a);
   b = find(b);
   if (a == b) return;
+  significant_regions_ -= (area_mm2_[a] >= significant_area_mm2_) + (area_mm2_[b] >= significant_area_mm2_);
+  significant_regions_ += area_mm2_[a] + area_mm2_[b] >= significant_area_mm2_;
   // Union by area keeps trees shallow; ties by index keep it deterministic.
   if (area_mm2_[a] < area_mm2_[b] || (area_mm2_[a] == area_mm2_[b] && a > b)) std::swap(a, b);
   parent_[b] = a;

@@ -20,6 +20,11 @@ class RegionMergeQueue {
   // Merges adjacent pairs, least merged shape diameter first, while it is <= limit.
   void grow(double shape_diameter_limit);
 
+  // From now on, keep count of the regions of at least this area (the adaptive mode's
+  // criterion), updated by every merge.
+  void count_regions_of_area_at_least(float area_mm2);
+  int significant_region_count() const { return significant_regions_; }
+
   int find(int region);
   void unite(int a, int b);  // unconditional merge (used to fold tiny patches)
   float area_mm2(int root) const { return area_mm2_[root]; }
@@ -39,7 +44,9 @@ class RegionMergeQueue {
   std::vector<std::int32_t> parent_;
   std::vector<float> min_, max_, area_mm2_;
   std::vector<std::vector<Edge>> buckets_ = std::vector<std::vector<Edge>>(kBuckets + 1);
-  std::vector<Edge> deferred_;  // popped edges above the current limit, kept for a resume
+  std::vector<Edge> deferred_;
+  float significant_area_mm2_ = 0;
+  int significant_regions_ = 0;  // popped edges above the current limit, kept for a resume
 };
 
 }  // namespace cosmos

@@ -1,0 +1,113 @@
+// The chapter-3 pipeline, stage by stage, on a 640x480 range image of a free-form surface
+// (issue targets on one core: curvature + S_I <= 10 ms, 15 smoothing iterations <= 100 ms,
+// segmentation <= 10 ms). Run: build/bench/cosmos_pipeline_bench --benchmark_repetitions=5
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+
+#include "core/cosmos_pipeline.hpp"
+#include "core/curvature_consistency.hpp"
+#include "core/local_surface_fit.hpp"
+
+namespace cosmos {
+namespace {
+
+// A smooth free-form relief: a few Gaussian bumps and dents on a gentle wave, 0.4 mm pixels,
+// with 0.02 mm sensor noise.
+RangeImage free_form_surface() {
+  RangeImage image(640, 480, 0.4, 0.4);
+  std::mt19937_64 generator(5);
+  std::normal_distribution<double> noise(0.0, 0.02);
+  struct Bump { double x, y, sigma, height; };
+  const Bump bumps[] = {{60, 50, 18, 25}, {170, 120, 25, -15}, {200, 40, 12, 10}, {100, 150, 30, 20}};
+  for (int row = 0; row < image.height(); ++row) {
+    for (int column = 0; column < image.width(); ++column) {
+      const double x = image.x_mm(column), y = image.y_mm(row);
+      double z = 5 * std::sin(x / 23.0) * std::cos(y / 31.0);
+      for (const Bump& b : bumps)
+        z += b.height * std::exp(-((x - b.x) * (x - b.x) + (y - b.y) * (y - b.y)) / (2 * b.sigma * b.sigma));
+      image.z_mm(column, row) = static_cast<float>(z + noise(generator));
+    }
+  }
+  return image;
+}
+
+const RangeImage& surface() {
+  static const RangeImage image = free_form_surface();
+  return image;
+}
+
+void BM_CurvatureAndShapeIndex(benchmark::State& state) {
+  const CosmosParameters parameters;
+  for (auto _ : state) {
+    auto frames = fit_local_surfaces(surface(), parameters.fit);
+    auto field = classify_surface(frames, 0.4, 0.4, parameters.shape_index);
+    benchmark::DoNotOptimize(field.shape_index.data());
+  }
+}
+BENCHMARK(BM_CurvatureAndShapeIndex)->Unit(benchmark::kMillisecond);
+
+void BM_Smoothing15Iterations(benchmark::State& state) {
+  const CosmosParameters parameters;
+  const auto fitted = fit_local_surfaces(surface(), parameters.fit);
+  for (auto _ : state) {
+    state.PauseTiming();
+    auto frames = fitted;
+    state.ResumeTiming();
+    smooth_curvatures(frames, parameters.smoothing);
+    benchmark::DoNotOptimize(frames.frame[kNx].data());
+  }
+}
+BENCHMARK(BM_Smoothing15Iterations)->Unit(benchmark::kMillisecond);
+
+struct Classified {
+  DarbouxFrameField frames;
+  ShapeIndexField field;
+};
+
+const Classified& classified() {
+  static const Classified result = [] {
+    const CosmosParameters parameters;
+    Classified c;
+    c.frames = fit_local_surfaces(surface(), parameters.fit);
+    smooth_curvatures(c.frames, parameters.smoothing);
+    c.field = classify_surface(c.frames, 0.4, 0.4, parameters.shape_index);
+    return c;
+  }();
+  return result;
+}
+
+void BM_Segmentation(benchmark::State& state) {
+  const CosmosParameters parameters;
+  const auto& c = classified();
+  int patches = 0;
+  for (auto _ : state) {
+    const auto segmentation = segment_csmps(c.frames, c.field, parameters.segmentation);
+    patches = segmentation.patch_count;
+  }
+  state.counters["patches"] = patches;
+}
+BENCHMARK(BM_Segmentation)->Unit(benchmark::kMillisecond);
+
+void BM_CosmosAndSpectrum(benchmark::State& state) {
+  const CosmosParameters parameters;
+  const auto& c = classified();
+  const auto segmentation = segment_csmps(c.frames, c.field, parameters.segmentation);
+  for (auto _ : state) {
+    const auto view = build_cosmos_view(c.frames, c.field, segmentation);
+    const auto spectrum = compute_shape_spectrum(c.field, parameters.spectrum);
+    benchmark::DoNotOptimize(spectrum_moments(spectrum));
+    benchmark::DoNotOptimize(view.patches.data());
+  }
+}
+BENCHMARK(BM_CosmosAndSpectrum)->Unit(benchmark::kMillisecond);
+
+void BM_WholePipeline(benchmark::State& state) {
+  const CosmosParameters parameters;
+  for (auto _ : state) benchmark::DoNotOptimize(analyze_view(surface(), parameters).moments);
+}
+BENCHMARK(BM_WholePipeline)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace cosmos
