@@ -1,0 +1,39 @@
+#pragma once
+// Triangle meshes of catalog parts, read from CAD/scan files (OFF, PLY, STL, OBJ) through
+// assimp. A part is simulated at its physical size, so a loaded mesh is centred (bounding-box
+// centre at the origin) and uniformly scaled so its largest bounding-box extent is the
+// catalog's size_mm: the files' own units (often unit boxes or arbitrary) never matter.
+//
+// Every defect of the file (missing, unknown extension, unreadable by assimp, no triangles,
+// NaN/inf coordinates, all vertices at one point) throws cosmos::InputError with one line
+// naming the file and the reason.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <filesystem>
+#include <vector>
+
+namespace cosmos {
+
+struct TriangleMesh {
+  std::vector<Eigen::Vector3f> vertices;   // mm once loaded with a size
+  std::vector<Eigen::Vector3i> triangles;  // indices into vertices, winding kept from the file
+};
+
+// Reads every triangle of every mesh in the file's scene (node transforms applied), in the
+// file's own units. Polygons are triangulated and identical vertices joined; points and
+// lines are dropped. Throws InputError on any defect listed above.
+TriangleMesh read_mesh_file(const std::filesystem::path& path);
+
+// read_mesh_file, then centred and scaled so the largest bounding-box extent is size_mm.
+// size_mm must be finite and > 0 (InputError naming the file otherwise).
+TriangleMesh load_mesh(const std::filesystem::path& path, double size_mm);
+
+// Axis-aligned bounding box of the vertices (empty box for an empty mesh).
+Eigen::AlignedBox3f bounding_box(const TriangleMesh& mesh);
+
+// Moves the bounding-box centre to the origin and scales uniformly so the largest extent is
+// size_mm. The mesh must have a non-zero extent and size_mm must be > 0 (read_mesh_file and
+// load_mesh guarantee the first; std::invalid_argument otherwise, as it is a caller bug).
+void center_and_scale(TriangleMesh& mesh, double size_mm);
+
+}  // namespace cosmos
