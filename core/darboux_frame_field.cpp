@@ -1,5 +1,6 @@
 #include "core/darboux_frame_field.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cosmos {
@@ -15,6 +16,18 @@ FrameValues frame_at(const DarbouxFrameField& field, std::size_t pixel) {
   FrameValues values;
   for (int c = 0; c < kFrameComponents; ++c) values[c] = field.frame[c][pixel];
   return values;
+}
+
+void principal_values(const FrameValues& f, float& kappa1, float& kappa2) {
+  // W is tangent to n, so its eigenvalues are k1, k2 and 0: from its trace and the sum of its
+  // principal 2x2 minors, k1 + k2 and k1 k2.
+  const float trace = f[kWxx] + f[kWyy] + f[kWzz];
+  const float minors = f[kWxx] * f[kWyy] - f[kWxy] * f[kWxy] + f[kWxx] * f[kWzz] - f[kWxz] * f[kWxz] +
+                       f[kWyy] * f[kWzz] - f[kWyz] * f[kWyz];
+  const float mean = 0.5f * trace;
+  const float radius = std::sqrt(std::max(0.0f, mean * mean - minors));
+  kappa1 = mean + radius;
+  kappa2 = mean - radius;
 }
 
 PrincipalCurvatures principal_curvatures(const FrameValues& f) {

@@ -45,6 +45,10 @@ struct PrincipalCurvatures {
 using FrameValues = std::array<float, kFrameComponents>;
 PrincipalCurvatures principal_curvatures(const FrameValues& frame);
 FrameValues frame_at(const DarbouxFrameField& field, std::size_t pixel);
+
+// The principal curvatures alone (no directions): cheaper, for per-pixel classification.
+void principal_values(const FrameValues& frame, float& kappa1, float& kappa2);
+
 PrincipalCurvatures principal_curvatures(const DarbouxFrameField& field, std::size_t pixel);
 
 }  // namespace cosmos

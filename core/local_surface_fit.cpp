@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 namespace cosmos {
 namespace {
@@ -58,30 +59,33 @@ void darboux_frame_from_derivatives(const SurfaceDerivatives& d, float* f) {
   f[kNx] = static_cast<float>(-p / w);
   f[kNy] = static_cast<float>(-q / w);
   f[kNz] = static_cast<float>(1 / w);
-  // Second fundamental form with the sign flipped so that convex towards +z is positive.
-  const Eigen::Matrix2d second{{-d.zxx / w, -d.zxy / w}, {-d.zxy / w, -d.zyy / w}};
-  const Eigen::Matrix2d first_inverse = Eigen::Matrix2d{{1 + q * q, -p * q}, {-p * q, 1 + p * p}} / w2;
-  const Eigen::Matrix2d m = first_inverse * second * first_inverse;
-  // W = J M J^T with J = [X_u X_v] = [[1,0],[0,1],[p,q]]: the shape operator as a 3D tensor.
-  Eigen::Matrix<double, 3, 2> j;
-  j << 1, 0, 0, 1, p, q;
-  const Eigen::Matrix3d weingarten = j * m * j.transpose();
-  f[kWxx] = static_cast<float>(weingarten(0, 0));
-  f[kWxy] = static_cast<float>(weingarten(0, 1));
-  f[kWxz] = static_cast<float>(weingarten(0, 2));
-  f[kWyy] = static_cast<float>(weingarten(1, 1));
-  f[kWyz] = static_cast<float>(weingarten(1, 2));
-  f[kWzz] = static_cast<float>(weingarten(2, 2));
+  // Second fundamental form II with the sign flipped so that convex towards +z is positive,
+  // M = I^-1 II I^-1 and W = J M J^T with J = [X_u X_v] = [[1,0],[0,1],[p,q]]: the shape
+  // operator as a 3D tensor.
+  const double l = -d.zxx / w, m = -d.zxy / w, n = -d.zyy / w;
+  const double i11 = (1 + q * q) / w2, i12 = -p * q / w2, i22 = (1 + p * p) / w2;
+  const double a11 = i11 * l + i12 * m, a12 = i11 * m + i12 * n;  // I^-1 II
+  const double a21 = i12 * l + i22 * m, a22 = i12 * m + i22 * n;
+  const double m11 = a11 * i11 + a12 * i12, m12 = a11 * i12 + a12 * i22;
+  const double m22 = a21 * i12 + a22 * i22;
+  f[kWxx] = static_cast<float>(m11);
+  f[kWxy] = static_cast<float>(m12);
+  f[kWxz] = static_cast<float>(m11 * p + m12 * q);
+  f[kWyy] = static_cast<float>(m22);
+  f[kWyz] = static_cast<float>(m12 * p + m22 * q);
+  f[kWzz] = static_cast<float>(p * (m11 * p + m12 * q) + q * (m12 * p + m22 * q));
 }
 
 LocalSurfaceFitter::LocalSurfaceFitter(const SurfaceFitParameters& parameters,
-                                       double pixel_size_x_mm, double pixel_size_y_mm)
+                                       double pixel_size_x_mm, double pixel_size_y_mm,
+                                       int max_width)
     : parameters_(parameters),
       pixel_size_x_mm_(pixel_size_x_mm),
       pixel_size_y_mm_(pixel_size_y_mm),
       half_window_(std::clamp(parameters.window_size / 2, 1, kMaxWindowSize / 2)),
       side_(2 * half_window_ + 1),
-      basis_size_(parameters.bicubic ? kBicubicTerms : kBiquadraticTerms) {
+      basis_size_(parameters.bicubic ? kBicubicTerms : kBiquadraticTerms),
+      separable_(half_window_, parameters.bicubic ? 3 : 2, max_width) {
   const int samples = side_ * side_;
   Eigen::MatrixXd design(samples, basis_size_);
   for (int dv = -half_window_, k = 0; dv <= half_window_; ++dv)
@@ -152,17 +156,27 @@ LocalSurfaceFitter::QuadricCoefficients LocalSurfaceFitter::apply_kernel(
 
 bool LocalSurfaceFitter::fit_pixel(const RangeImage& image, int column, int row,
                                    SurfaceDerivatives& d) const {
+  if (!std::isfinite(image.z_mm(column, row))) return false;
+  return fit_crease_window(image, column, row, d) || fit_partial_window(image, column, row, d);
+}
+
+// The complete window of the pixel or, when its residual shows a crease, the best-fitting
+// shifted complete window that still contains the pixel; false when no complete window fits.
+bool LocalSurfaceFitter::fit_crease_window(const RangeImage& image, int column, int row,
+                                           SurfaceDerivatives& d) const {
   const float center = image.z_mm(column, row);
-  if (!std::isfinite(center)) return false;
   WindowSamples samples;
-  if (!gather_window(image, column, row, column, row, samples))
-    return fit_partial_window(image, column, row, d);
+  const bool centered_complete = gather_window(image, column, row, column, row, samples);
   const int centered = half_window_ * side_ + half_window_;
-  int best_offset = centered;
+  int best_offset = -1;
+  double best_rss = std::numeric_limits<double>::infinity();
+  if (centered_complete) {
+    best_offset = centered;
+    best_rss = residual_sum_of_squares(samples);
+  }
   const double crease_rss =
       parameters_.crease_residual_mm * parameters_.crease_residual_mm * side_ * side_;
-  double best_rss = crease_rss > 0 ? residual_sum_of_squares(samples) : 0;
-  if (best_rss > crease_rss) {
+  if (crease_rss > 0 && best_rss > crease_rss) {
     WindowSamples shifted;
     for (int ov = -half_window_, o = 0; ov <= half_window_; ++ov) {
       for (int ou = -half_window_; ou <= half_window_; ++ou, ++o) {
@@ -176,6 +190,7 @@ bool LocalSurfaceFitter::fit_pixel(const RangeImage& image, int column, int row,
       }
     }
   }
+  if (best_offset < 0) return false;
   QuadricCoefficients c = apply_kernel(best_offset, samples);
   c[0] += center;
   d = to_metric(c);
@@ -214,12 +229,25 @@ bool LocalSurfaceFitter::fit_partial_window(const RangeImage& image, int column,
   return true;
 }
 
-void LocalSurfaceFitter::fit_row(const RangeImage& image, int row, DarbouxFrameField& out) const {
+void LocalSurfaceFitter::fit_row(const RangeImage& image, int row, DarbouxFrameField& out) {
+  separable_.fit_row(image, row, parameters_.depth_jump_mm);
+  const std::uint8_t* complete = separable_.complete();
+  const double* rss = separable_.residual_sum_of_squares();
+  const double crease_rss =
+      parameters_.crease_residual_mm * parameters_.crease_residual_mm * side_ * side_;
   float frame[kFrameComponents];
   for (int column = 0; column < image.width(); ++column) {
     const std::size_t i = out.valid.index(column, row);
     SurfaceDerivatives d;
-    const bool ok = fit_pixel(image, column, row, d);
+    bool ok;
+    if (complete[column] && !(crease_rss > 0 && rss[column] > crease_rss)) {
+      QuadricCoefficients c;
+      for (int t = 0; t < SeparableWindowFit::kQuadricTerms; ++t) c[t] = separable_.quadric(t)[column];
+      d = to_metric(c);
+      ok = true;
+    } else {
+      ok = fit_pixel(image, column, row, d);
+    }
     out.valid[i] = ok ? 1 : 0;
     out.position_mm[0][i] = static_cast<float>(image.x_mm(column));
     out.position_mm[1][i] = static_cast<float>(image.y_mm(row));
@@ -254,7 +282,7 @@ void LocalSurfaceFitter::link_row(const RangeImage& image, int row, DarbouxFrame
 DarbouxFrameField fit_local_surfaces(const RangeImage& image,
                                      const SurfaceFitParameters& parameters) {
   DarbouxFrameField field(image.width(), image.height());
-  const LocalSurfaceFitter fitter(parameters, image.pixel_size_x_mm, image.pixel_size_y_mm);
+  LocalSurfaceFitter fitter(parameters, image.pixel_size_x_mm, image.pixel_size_y_mm, image.width());
   for (int row = 0; row < image.height(); ++row) fitter.fit_row(image, row, field);
   for (int row = 0; row < image.height(); ++row) fitter.link_row(image, row, field);
   return field;

@@ -13,6 +13,7 @@
 #include "core/cosmos_parameters.hpp"
 #include "core/darboux_frame_field.hpp"
 #include "core/range_image.hpp"
+#include "core/separable_window_fit.hpp"
 
 namespace cosmos {
 
@@ -32,10 +33,11 @@ class LocalSurfaceFitter {
   static constexpr int kMaxWindowSize = 11;
 
   LocalSurfaceFitter(const SurfaceFitParameters& parameters, double pixel_size_x_mm,
-                     double pixel_size_y_mm);
+                     double pixel_size_y_mm, int max_width);
 
-  // Fits row `row` of the image into `out` (needs image rows row +- window size).
-  void fit_row(const RangeImage& image, int row, DarbouxFrameField& out) const;
+  // Fits row `row` of the image into `out` (needs image rows row +- window size). Fitting
+  // rows in increasing order reuses the separable row filters.
+  void fit_row(const RangeImage& image, int row, DarbouxFrameField& out);
   // Same-side masks of row `row`; needs the fits of rows row-1 .. row+1.
   void link_row(const RangeImage& image, int row, DarbouxFrameField& out) const;
 
@@ -44,6 +46,7 @@ class LocalSurfaceFitter {
   using QuadricCoefficients = Eigen::Matrix<double, 6, 1>;
 
   bool fit_pixel(const RangeImage& image, int column, int row, SurfaceDerivatives& d) const;
+  bool fit_crease_window(const RangeImage& image, int column, int row, SurfaceDerivatives& d) const;
   bool gather_window(const RangeImage& image, int window_column, int window_row, int column,
                      int row, WindowSamples& samples) const;
   double residual_sum_of_squares(const WindowSamples& samples) const;
@@ -63,6 +66,7 @@ class LocalSurfaceFitter {
   std::vector<Eigen::Matrix<double, 6, Eigen::Dynamic>> offset_kernels_;
   // Orthonormal basis of the polynomial space over the window (rows): residual = |z|^2 - |Q z|^2.
   Eigen::MatrixXd residual_basis_;
+  SeparableWindowFit separable_;
 };
 
 DarbouxFrameField fit_local_surfaces(const RangeImage& image,

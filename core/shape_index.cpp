@@ -56,11 +56,12 @@ void classify_row(const DarbouxFrameField& frames, int row, double pixel_size_x_
       out.same_side[i] = 0;
       continue;
     }
-    const PrincipalCurvatures k = principal_curvatures(frames, i);
-    const bool planar = shape_index_sensitivity_mm(k.kappa1, k.kappa2) > planar_sensitivity;
+    float kappa1, kappa2;
+    principal_values(frame_at(frames, i), kappa1, kappa2);
+    const bool planar = shape_index_sensitivity_mm(kappa1, kappa2) > planar_sensitivity;
     out.label[i] = planar ? SurfaceLabel::kPlanar : SurfaceLabel::kCurved;
-    out.shape_index[i] = planar ? kPlanarShapeIndex : shape_index(k.kappa1, k.kappa2);
-    out.curvedness_per_mm[i] = curvedness(k.kappa1, k.kappa2);
+    out.shape_index[i] = planar ? kPlanarShapeIndex : shape_index(kappa1, kappa2);
+    out.curvedness_per_mm[i] = curvedness(kappa1, kappa2);
     // The cell's true surface area: its footprint divided by cos(tilt) = n_z.
     out.area_mm2[i] = cell_area_mm2 / normal_z;
     out.same_side[i] = frames.same_side[i];

@@ -1,0 +1,130 @@
+#include "core/separable_window_fit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace cosmos {
+
+SeparableWindowFit::SeparableWindowFit(int half_window, int degree, int max_width)
+    : half_(half_window),
+      side_(2 * half_window + 1),
+      degree_(degree),
+      filters_(degree + 2),
+      max_width_(std::max(max_width, 1)),
+      polynomial_(static_cast<std::size_t>(degree + 1) * side_, 0.0),
+      norm_(degree + 1, 0.0),
+      monomial_(static_cast<std::size_t>(degree + 1) * (degree + 1), 0.0),
+      slot_row_(side_, -1),
+      filtered_(static_cast<std::size_t>(side_) * filters_ * max_width_, 0.0),
+      row_min_(static_cast<std::size_t>(side_) * max_width_, 0.0f),
+      row_max_(static_cast<std::size_t>(side_) * max_width_, 0.0f),
+      residual_(max_width_, 0.0),
+      dot_(max_width_, 0.0),
+      range_low_(max_width_, 0.0f),
+      range_high_(max_width_, 0.0f),
+      complete_(max_width_, 0) {
+  for (auto& q : quadric_) q.assign(max_width_, 0.0);
+  // Gram-Schmidt of 1, u, u^2, ... over the window's sample positions.
+  for (int i = 0; i <= degree_; ++i) {
+    monomial_[i * (degree_ + 1) + i] = 1.0;
+    for (int k = 0; k < side_; ++k) polynomial_[i * side_ + k] = std::pow(k - half_, i);
+    for (int j = 0; j < i; ++j) {
+      double dot = 0;
+      for (int k = 0; k < side_; ++k) dot += polynomial_[i * side_ + k] * polynomial_[j * side_ + k];
+      const double factor = dot / norm_[j];
+      for (int k = 0; k < side_; ++k) polynomial_[i * side_ + k] -= factor * polynomial_[j * side_ + k];
+      for (int m = 0; m <= degree_; ++m) monomial_[i * (degree_ + 1) + m] -= factor * monomial_[j * (degree_ + 1) + m];
+    }
+    for (int k = 0; k < side_; ++k) norm_[i] += polynomial_[i * side_ + k] * polynomial_[i * side_ + k];
+  }
+}
+
+void SeparableWindowFit::filter_image_row(const RangeImage& image, int image_row, int slot) {
+  slot_row_[slot] = image_row;
+  const int width = image.width();
+  const float* z = image.z_mm.row(image_row);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int f = 0; f < filters_; ++f) {
+    double* out = &filtered(slot, f, 0);
+    std::fill(out, out + width, nan);  // columns whose window leaves the image
+    const double* p = f <= degree_ ? &polynomial_[f * side_] : nullptr;
+    for (int c = half_; c + half_ < width; ++c) {
+      double sum = 0;
+      for (int k = 0; k < side_; ++k) {
+        const double value = z[c + k - half_];
+        sum += p ? p[k] * value : value * value;
+      }
+      out[c] = sum;  // NaN when any sample is missing
+    }
+  }
+  float* low = &row_min_[static_cast<std::size_t>(slot) * max_width_];
+  float* high = &row_max_[static_cast<std::size_t>(slot) * max_width_];
+  for (int c = half_; c + half_ < width; ++c) {
+    low[c] = *std::min_element(z + c - half_, z + c + half_ + 1);
+    high[c] = *std::max_element(z + c - half_, z + c + half_ + 1);
+  }
+}
+
+void SeparableWindowFit::fit_row(const RangeImage& image, int row, double max_depth_range_mm) {
+  const int width = image.width();
+  std::fill(complete_.begin(), complete_.begin() + width, 0);
+  if (row < half_ || row + half_ >= image.height()) return;
+  int slots[kMaxSide];
+  for (int dv = -half_; dv <= half_; ++dv) {
+    const int image_row = row + dv;
+    slots[dv + half_] = image_row % side_;
+    if (slot_row_[slots[dv + half_]] != image_row) filter_image_row(image, image_row, slots[dv + half_]);
+  }
+  // Column-inner loops over whole rows, so the compiler vectorizes them.
+  const int begin = half_, end = width - half_;
+  double* squares = residual_.data();
+  for (int c = begin; c < end; ++c) squares[c] = 0;
+  std::vector<float>& low = range_low_;
+  std::vector<float>& high = range_high_;
+  std::fill(low.begin(), low.end(), std::numeric_limits<float>::infinity());
+  std::fill(high.begin(), high.end(), -std::numeric_limits<float>::infinity());
+  for (int k = 0; k < side_; ++k) {
+    const double* row_squares = &filtered(slots[k], filters_ - 1, 0);
+    const float* row_low = &row_min_[static_cast<std::size_t>(slots[k]) * max_width_];
+    const float* row_high = &row_max_[static_cast<std::size_t>(slots[k]) * max_width_];
+    for (int c = begin; c < end; ++c) {
+      squares[c] += row_squares[c];
+      low[c] = std::min(low[c], row_low[c]);
+      high[c] = std::max(high[c], row_high[c]);
+    }
+  }
+  for (auto& q : quadric_) std::fill(q.begin(), q.begin() + width, 0.0);
+  // a_ij = <z, p_i(u) p_j(v)> / (|p_i|^2 |p_j|^2) for i + j <= degree; the Taylor terms at the
+  // centre follow from the polynomials' low-order monomial coefficients; the residual is what
+  // the fit does not explain, |z|^2 - sum a_ij <z, p_i p_j>.
+  const int stride = degree_ + 1;
+  double* dot = dot_.data();
+  for (int i = 0; i <= degree_; ++i) {
+    for (int j = 0; i + j <= degree_; ++j) {
+      for (int c = begin; c < end; ++c) dot[c] = 0;
+      for (int k = 0; k < side_; ++k) {
+        const double weight = polynomial_[j * side_ + k];
+        const double* f = &filtered(slots[k], i, 0);
+        for (int c = begin; c < end; ++c) dot[c] += weight * f[c];
+      }
+      const double* mi = &monomial_[i * stride];
+      const double* mj = &monomial_[j * stride];
+      const double taylor[kQuadricTerms] = {mi[0] * mj[0], mi[1] * mj[0], mi[0] * mj[1],
+                                            degree_ >= 2 ? mi[2] * mj[0] : 0.0, mi[1] * mj[1],
+                                            degree_ >= 2 ? mi[0] * mj[2] : 0.0};
+      const double inverse_norm = 1.0 / (norm_[i] * norm_[j]);
+      for (int c = begin; c < end; ++c) {
+        const double a = dot[c] * inverse_norm;
+        squares[c] -= a * dot[c];
+        for (int t = 0; t < kQuadricTerms; ++t) quadric_[t][c] += a * taylor[t];
+      }
+    }
+  }
+  for (int c = begin; c < end; ++c) {
+    complete_[c] = std::isfinite(squares[c]) && high[c] - low[c] <= max_depth_range_mm;
+    squares[c] = std::max(0.0, squares[c]);
+  }
+}
+
+}  // namespace cosmos

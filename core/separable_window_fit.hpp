@@ -1,0 +1,56 @@
+#pragma once
+// The least-squares polynomial fit of §3.5.1 over complete windows, computed separably.
+// On a square window the product polynomials p_i(u) p_j(v) of the discrete orthogonal
+// polynomials on {-h..h} are orthogonal, so every fit coefficient is a row filter followed by
+// a column filter: about 15 multiply-adds per pixel for a 5x5 bicubic instead of 250, and
+// the fit's residual comes for free. Row filters are cached in a ring of 2h+1 image rows, so
+// fitting the rows of an image in order filters each image row once (the real-time loop fits
+// one row per profile).
+#include <cstdint>
+#include <vector>
+
+#include "core/range_image.hpp"
+
+namespace cosmos {
+
+class SeparableWindowFit {
+ public:
+  static constexpr int kQuadricTerms = 6;  // z, z_u, z_v, z_uu/2, z_uv, z_vv/2 (pixel units)
+  static constexpr int kMaxSide = 15;
+
+  SeparableWindowFit(int half_window, int degree, int max_width);
+
+  // Fits the centred window of every pixel of `row`. A pixel is `complete` when its whole
+  // window has data spanning at most max_depth_range_mm; only then are its coefficients
+  // (relative to nothing: absolute z) and residual meaningful.
+  void fit_row(const RangeImage& image, int row, double max_depth_range_mm);
+
+  const double* quadric(int term) const { return quadric_[term].data(); }
+  const double* residual_sum_of_squares() const { return residual_.data(); }
+  const std::uint8_t* complete() const { return complete_.data(); }
+
+ private:
+  void filter_image_row(const RangeImage& image, int image_row, int slot);
+  double& filtered(int slot, int filter, int column) {
+    return filtered_[(static_cast<std::size_t>(slot) * filters_ + filter) * max_width_ + column];
+  }
+
+  int half_;
+  int side_;
+  int degree_;
+  int filters_;  // degree + 1 polynomial filters, then the sum of squares
+  int max_width_;
+  std::vector<double> polynomial_;       // p_i(u) at u = -h..h, row per degree
+  std::vector<double> norm_;             // sum over u of p_i(u)^2
+  std::vector<double> monomial_;         // monomial coefficients of p_i, row per degree
+  std::vector<int> slot_row_;            // image row held by each ring slot (-1: none)
+  std::vector<double> filtered_;         // slot x filter x column
+  std::vector<float> row_min_, row_max_; // slot x column: depth range of the window's row
+  std::vector<double> quadric_[kQuadricTerms];
+  std::vector<double> residual_;
+  std::vector<double> dot_;
+  std::vector<float> range_low_, range_high_;
+  std::vector<std::uint8_t> complete_;
+};
+
+}  // namespace cosmos
