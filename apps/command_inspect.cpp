@@ -1,0 +1,103 @@
+// cosmos inspect RANGE --out DIR: the COSMOS representation of one range image (chapter 3),
+// written as cosmos.json and five pictures for a person to look at.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <system_error>
+
+#include "apps/command_registry.hpp"
+#include "core/cosmos_pipeline.hpp"
+#include "core/input_error.hpp"
+#include "core/io/cosmos_json.hpp"
+#include "core/io/range_image_file.hpp"
+#include "core/render/view_pictures.hpp"
+
+namespace cosmos::cli {
+namespace {
+
+struct InspectOptions {
+  std::filesystem::path range_path;
+  std::filesystem::path out_dir;
+  int smoothing_iterations = SmoothingParameters{}.iterations;
+  int max_patches = SegmentationParameters{}.max_patches;
+};
+
+void require_non_negative(const char* option, int value) {
+  if (value < 0)
+    throw InputError(std::string(option) + ": must be >= 0, got " + std::to_string(value));
+}
+
+std::size_t fitted_pixels(const ViewAnalysis& analysis) {
+  std::size_t count = 0;
+  for (SurfaceLabel label : analysis.field.label.values())
+    count += label != SurfaceLabel::kInvalid ? 1 : 0;
+  return count;
+}
+
+void run_inspect(const InspectOptions& options) {
+  require_non_negative("--smoothing-iterations", options.smoothing_iterations);
+  require_non_negative("--max-patches", options.max_patches);
+  const auto start = std::chrono::steady_clock::now();
+
+  const RangeImage image = read_range_image(options.range_path);
+  const std::size_t data_pixels = image.count_valid();
+  if (data_pixels == 0)
+    throw InputError(options.range_path.string() + ": no pixel has data (all NaN)");
+
+  CosmosParameters parameters;
+  parameters.smoothing.iterations = options.smoothing_iterations;
+  parameters.segmentation.max_patches = options.max_patches;
+  const ViewAnalysis analysis = analyze_view(image, parameters);
+  if (fitted_pixels(analysis) == 0) {
+    throw InputError(options.range_path.string() +
+                     ": no local surface fit succeeded on any of the " +
+                     std::to_string(data_pixels) + " pixels with data (too sparse for a " +
+                     std::to_string(parameters.fit.window_size) + "x" +
+                     std::to_string(parameters.fit.window_size) + " window?)");
+  }
+
+  std::error_code error;
+  std::filesystem::create_directories(options.out_dir, error);
+  if (error)
+    throw InputError("--out " + options.out_dir.string() + ": cannot create directory (" +
+                     error.message() + ")");
+  write_cosmos_json(analysis, options.out_dir / "cosmos.json");
+  write_view_pictures(image, analysis, options.out_dir);
+
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("inspect: %zu valid pixels, %zu patches, %.2f s -> %s\n", analysis.valid_pixels,
+              analysis.view.patches.size(), seconds, options.out_dir.string().c_str());
+}
+
+void install_inspect(CLI::App& root) {
+  auto options = std::make_shared<InspectOptions>();
+  CLI::App* command = root.add_subcommand(
+      "inspect", "Compute the COSMOS of one range image; write cosmos.json and pictures");
+  command
+      ->add_option("RANGE", options->range_path,
+                   "range image (float32 TIFF or PFM, mm) with its <stem>.yaml")
+      ->type_name("FILE")
+      ->required();
+  command->add_option("--out", options->out_dir, "output directory (created if missing)")
+      ->type_name("DIR")
+      ->required();
+  command
+      ->add_option("--smoothing-iterations", options->smoothing_iterations,
+                   "curvature-consistency iterations (>= 0)")
+      ->type_name("N")
+      ->capture_default_str();
+  command
+      ->add_option("--max-patches", options->max_patches,
+                   "adaptive CSMP budget, §5.4.3 (>= 0; 0 = fixed shape-diameter limit)")
+      ->type_name("N")
+      ->capture_default_str();
+  command->callback([options] { run_inspect(*options); });
+}
+
+const CommandRegistration registration{"inspect", install_inspect};
+
+}  // namespace
+}  // namespace cosmos::cli
