@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace cosmos {
 namespace {
@@ -29,133 +30,148 @@ inline float tensor_norm2(float xx, float xy, float xz, float yy, float yz, floa
   return xx * xx + yy * yy + zz * zz + 2 * (xy * xy + xz * xz + yz * yz);
 }
 
-// Starts the sums with the pixel's own frame; steep pixels are sampled sparsely and fit
-// poorly (near silhouettes), so every frame counts with the squared cosine of its tilt.
-void start_sums(const SmoothingRowInput& in, SmoothingWorkspace& ws, const RobustScales& s) {
-  const float* const* f = in.frame[1];
-  float* own_norm = ws.sum(SmoothingWorkspace::kOwnNorm);
-  float* weight = ws.sum(SmoothingWorkspace::kWeight);
-  for (int c = 0; c < in.width; ++c) {
-    weight[c] = s.self_weight * f[kNz][c] * f[kNz][c];
-    own_norm[c] = tensor_norm2(f[kWxx][c], f[kWxy][c], f[kWxz][c], f[kWyy][c], f[kWyz][c], f[kWzz][c]);
-  }
-  for (int m = 0; m < kFrameComponents; ++m) {
-    float* sum = ws.sum(m);
-    const float* component = f[m];
-#pragma GCC ivdep
-    for (int c = 0; c < in.width; ++c) sum[c] = weight[c] * component[c];
-  }
-}
+// Rows of one neighbour direction, shifted so that index c addresses the neighbour of c.
+struct NeighborRows {
+  const float* frame[kFrameComponents];
+  const float* position[3];
+};
 
-// Adds the predictions of the neighbour in direction k for columns [begin, end).
-void add_neighbor_predictions(const SmoothingRowInput& in, SmoothingWorkspace& ws, int k,
-                              int begin, int end, const RobustScales& s) {
-  const int r = kNeighborOffsets[k].row + 1, dc = kNeighborOffsets[k].column;
+// One iteration for columns [begin, end): every pixel starts from its own frame and adds the
+// predictions of its same-side neighbours, then takes the normalized mean normal and the mean
+// tensor projected onto its tangent plane, W' = P W P with P = I - n n^T, i.e.
+// W - n u^T - u n^T + a n n^T with u = W n, a = n.u. Steep pixels are sampled sparsely and fit
+// poorly (near silhouettes), so every frame counts with the squared cosine of its tilt. The
+// eight directions are unrolled at compile time and the loop body has no branches, so the
+// compiler vectorizes across columns with all sums in registers.
+template <int... K>
+void smooth_columns(const SmoothingRowInput& in, const NeighborRows (&neighbors)[8],
+                    float* const* out, int begin, int end, const RobustScales& s,
+                    std::integer_sequence<int, K...>) {
   const float* const* f = in.frame[1];
-  const float* const* g = in.frame[r];
-  const float *nix = f[kNx], *niy = f[kNy], *niz = f[kNz];
-  const float *wixx = f[kWxx], *wixy = f[kWxy], *wixz = f[kWxz], *wiyy = f[kWyy], *wiyz = f[kWyz], *wizz = f[kWzz];
-  const float *njx = g[kNx] + dc, *njy = g[kNy] + dc, *njz = g[kNz] + dc;
-  const float *wjxx = g[kWxx] + dc, *wjxy = g[kWxy] + dc, *wjxz = g[kWxz] + dc;
-  const float *wjyy = g[kWyy] + dc, *wjyz = g[kWyz] + dc, *wjzz = g[kWzz] + dc;
   const float *pix = in.position[1][0], *piy = in.position[1][1], *piz = in.position[1][2];
-  const float *pjx = in.position[r][0] + dc, *pjy = in.position[r][1] + dc, *pjz = in.position[r][2] + dc;
   const std::uint8_t* mask = in.same_side;
-  const float* own_norm = ws.sum(SmoothingWorkspace::kOwnNorm);
-  float *snx = ws.sum(kNx), *sny = ws.sum(kNy), *snz = ws.sum(kNz);
-  float *swxx = ws.sum(kWxx), *swxy = ws.sum(kWxy), *swxz = ws.sum(kWxz);
-  float *swyy = ws.sum(kWyy), *swyz = ws.sum(kWyz), *swzz = ws.sum(kWzz);
-  float* sweight = ws.sum(SmoothingWorkspace::kWeight);
-  const float floor2 = kCurvatureFloorPerMm * kCurvatureFloorPerMm;
-#pragma GCC ivdep
-  for (int c = begin; c < end; ++c) {
-    const float dx = pix[c] - pjx[c], dy = piy[c] - pjy[c], dz = piz[c] - pjz[c];
-    // Transport: the neighbour's quadric predicts the normal n_j + W_j d at this pixel.
-    float px = njx[c] + wjxx[c] * dx + wjxy[c] * dy + wjxz[c] * dz;
-    float py = njy[c] + wjxy[c] * dx + wjyy[c] * dy + wjyz[c] * dz;
-    float pz = njz[c] + wjxz[c] * dx + wjyz[c] * dy + wjzz[c] * dz;
-    const float inv_len = 1.0f / std::sqrt(px * px + py * py + pz * pz);
-    px *= inv_len;
-    py *= inv_len;
-    pz *= inv_len;
-    const float normal_deviation = (1.0f - (px * nix[c] + py * niy[c] + pz * niz[c])) * s.inverse_normal_scale;
-    const float difference2 = tensor_norm2(wjxx[c] - wixx[c], wjxy[c] - wixy[c], wjxz[c] - wixz[c],
-                                           wjyy[c] - wiyy[c], wjyz[c] - wiyz[c], wjzz[c] - wizz[c]);
-    const float neighbor_norm2 = tensor_norm2(wjxx[c], wjxy[c], wjxz[c], wjyy[c], wjyz[c], wjzz[c]);
-    const float disagreement = difference2 / (own_norm[c] + neighbor_norm2 + floor2) * s.inverse_curvature_scale2;
-    const float linked = static_cast<float>((mask[c] >> k) & 1u);
-    const float weight = linked * njz[c] * njz[c] / ((1.0f + normal_deviation) * (1.0f + disagreement));
-    snx[c] += weight * px;
-    sny[c] += weight * py;
-    snz[c] += weight * pz;
-    swxx[c] += weight * wjxx[c];
-    swxy[c] += weight * wjxy[c];
-    swxz[c] += weight * wjxz[c];
-    swyy[c] += weight * wjyy[c];
-    swyz[c] += weight * wjyz[c];
-    swzz[c] += weight * wjzz[c];
-    sweight[c] += weight;
-  }
-}
-
-// The new frame: the normalized mean normal, and the mean tensor projected onto its tangent
-// plane, W' = P W P with P = I - n n^T, i.e. W - n u^T - u n^T + a n n^T, u = W n, a = n.u.
-void finish_row(const SmoothingRowInput& in, SmoothingWorkspace& ws, float* const* out) {
-  const float* const* f = in.frame[1];
-  const float *sx = ws.sum(kNx), *sy = ws.sum(kNy), *sz = ws.sum(kNz);
-  const float *sxx = ws.sum(kWxx), *sxy = ws.sum(kWxy), *sxz = ws.sum(kWxz);
-  const float *syy = ws.sum(kWyy), *syz = ws.sum(kWyz), *szz = ws.sum(kWzz);
-  const float* sweight = ws.sum(SmoothingWorkspace::kWeight);
   const std::uint8_t* valid = in.valid;
-  float* out_rows[kFrameComponents];
-  const float* f_rows[kFrameComponents];
-  for (int m = 0; m < kFrameComponents; ++m) out_rows[m] = out[m], f_rows[m] = f[m];
+  const float floor2 = kCurvatureFloorPerMm * kCurvatureFloorPerMm;
+  float* o[kFrameComponents];
+  const float* fi[kFrameComponents];
+  for (int m = 0; m < kFrameComponents; ++m) o[m] = out[m], fi[m] = f[m];
+  // The byte masks are widened per chunk first: with bytes in the loop the vectorizer would
+  // process 32 columns at a time and spill its registers.
+  constexpr int kChunk = 256;
+  std::uint32_t chunk_bits[kChunk];
+  float chunk_take[kChunk];
+  for (int chunk = begin; chunk < end; chunk += kChunk) {
+    const int chunk_end = std::min(end, chunk + kChunk);
+    for (int c = chunk; c < chunk_end; ++c) {
+      chunk_bits[c - chunk] = mask[c];
+      chunk_take[c - chunk] = valid[c] ? 1.0f : 0.0f;
+    }
 #pragma GCC ivdep
-  for (int c = 0; c < in.width; ++c) {
-    const float inv_len = 1.0f / std::sqrt(sx[c] * sx[c] + sy[c] * sy[c] + sz[c] * sz[c]);
-    const float n0 = sx[c] * inv_len, n1 = sy[c] * inv_len, n2 = sz[c] * inv_len;
-    const float inv_weight = 1.0f / sweight[c];
-    const float w0 = sxx[c] * inv_weight, w1 = sxy[c] * inv_weight, w2 = sxz[c] * inv_weight;
-    const float w3 = syy[c] * inv_weight, w4 = syz[c] * inv_weight, w5 = szz[c] * inv_weight;
-    const float u0 = w0 * n0 + w1 * n1 + w2 * n2, u1 = w1 * n0 + w3 * n1 + w4 * n2,
-                u2 = w2 * n0 + w4 * n1 + w5 * n2;
-    const float a = n0 * u0 + n1 * u1 + n2 * u2;
-    const float updated[kFrameComponents] = {n0, n1, n2,
-                                             w0 - 2 * n0 * u0 + a * n0 * n0,
-                                             w1 - n0 * u1 - u0 * n1 + a * n0 * n1,
-                                             w2 - n0 * u2 - u0 * n2 + a * n0 * n2,
-                                             w3 - 2 * n1 * u1 + a * n1 * n1,
-                                             w4 - n1 * u2 - u1 * n2 + a * n1 * n2,
-                                             w5 - 2 * n2 * u2 + a * n2 * n2};
-    // Invalid pixels keep their (neutral, finite) frame: a blend instead of a branch.
-    const float take = valid[c] ? 1.0f : 0.0f;
-    for (int m = 0; m < kFrameComponents; ++m) out_rows[m][c] = f_rows[m][c] + take * (updated[m] - f_rows[m][c]);
+    for (int c = chunk; c < chunk_end; ++c) {
+      const float ni[3] = {fi[kNx][c], fi[kNy][c], fi[kNz][c]};
+      const float wi[6] = {fi[kWxx][c], fi[kWxy][c], fi[kWxz][c],
+                           fi[kWyy][c], fi[kWyz][c], fi[kWzz][c]};
+      const float own_norm = tensor_norm2(wi[0], wi[1], wi[2], wi[3], wi[4], wi[5]);
+      const float w0 = s.self_weight * ni[2] * ni[2];
+      float sum_n[3] = {w0 * ni[0], w0 * ni[1], w0 * ni[2]};
+      float sum_w[6] = {w0 * wi[0], w0 * wi[1], w0 * wi[2], w0 * wi[3], w0 * wi[4], w0 * wi[5]};
+      float sum_weight = w0;
+      const std::uint32_t bits = chunk_bits[c - chunk];
+      auto add = [&](int k) {
+        const NeighborRows& g = neighbors[k];
+        const float nj[3] = {g.frame[kNx][c], g.frame[kNy][c], g.frame[kNz][c]};
+        const float wj[6] = {g.frame[kWxx][c], g.frame[kWxy][c], g.frame[kWxz][c],
+                             g.frame[kWyy][c], g.frame[kWyz][c], g.frame[kWzz][c]};
+        const float dx = pix[c] - g.position[0][c], dy = piy[c] - g.position[1][c],
+                    dz = piz[c] - g.position[2][c];
+        // Transport: the neighbour's quadric predicts the normal n_j + W_j d at this pixel. W_j d
+        // is tangent to the unit n_j, so the prediction's squared length is 1 + |W_j d|^2 and
+        // its inverse length is 1 - e/2 + 3e^2/8 to third order in e = |W_j d|^2 (no sqrt).
+        const float tx = wj[0] * dx + wj[1] * dy + wj[2] * dz;
+        const float ty = wj[1] * dx + wj[3] * dy + wj[4] * dz;
+        const float tz = wj[2] * dx + wj[4] * dy + wj[5] * dz;
+        const float e = tx * tx + ty * ty + tz * tz;
+        const float inv_len = 1.0f - 0.5f * e + 0.375f * e * e;
+        const float px = (nj[0] + tx) * inv_len, py = (nj[1] + ty) * inv_len,
+                    pz = (nj[2] + tz) * inv_len;
+        const float normal_deviation =
+            (1.0f - (px * ni[0] + py * ni[1] + pz * ni[2])) * s.inverse_normal_scale;
+        const float difference2 = tensor_norm2(wj[0] - wi[0], wj[1] - wi[1], wj[2] - wi[2],
+                                               wj[3] - wi[3], wj[4] - wi[4], wj[5] - wi[5]);
+        const float scale2 =
+            own_norm + tensor_norm2(wj[0], wj[1], wj[2], wj[3], wj[4], wj[5]) + floor2;
+        // linked * n_jz^2 / ((1 + normal deviation) (1 + difference2 / scale2 / c^2)), one
+        // division.
+        const float linked = static_cast<float>((bits >> k) & 1u);
+        const float weight =
+            linked * nj[2] * nj[2] * scale2 /
+            ((1.0f + normal_deviation) * (scale2 + difference2 * s.inverse_curvature_scale2));
+        sum_n[0] += weight * px;
+        sum_n[1] += weight * py;
+        sum_n[2] += weight * pz;
+        for (int m = 0; m < 6; ++m) sum_w[m] += weight * wj[m];
+        sum_weight += weight;
+      };
+      (add(K), ...);
+      const float inv_len =
+          1.0f / std::sqrt(sum_n[0] * sum_n[0] + sum_n[1] * sum_n[1] + sum_n[2] * sum_n[2]);
+      const float n0 = sum_n[0] * inv_len, n1 = sum_n[1] * inv_len, n2 = sum_n[2] * inv_len;
+      const float inv_weight = 1.0f / sum_weight;
+      float w[6];
+      for (int m = 0; m < 6; ++m) w[m] = sum_w[m] * inv_weight;
+      const float u0 = w[0] * n0 + w[1] * n1 + w[2] * n2, u1 = w[1] * n0 + w[3] * n1 + w[4] * n2,
+                  u2 = w[2] * n0 + w[4] * n1 + w[5] * n2;
+      const float a = n0 * u0 + n1 * u1 + n2 * u2;
+      const float updated[kFrameComponents] = {n0,
+                                               n1,
+                                               n2,
+                                               w[0] - 2 * n0 * u0 + a * n0 * n0,
+                                               w[1] - n0 * u1 - u0 * n1 + a * n0 * n1,
+                                               w[2] - n0 * u2 - u0 * n2 + a * n0 * n2,
+                                               w[3] - 2 * n1 * u1 + a * n1 * n1,
+                                               w[4] - n1 * u2 - u1 * n2 + a * n1 * n2,
+                                               w[5] - 2 * n2 * u2 + a * n2 * n2};
+      // Invalid pixels keep their (neutral, finite) frame: a blend instead of a branch.
+      const float take = chunk_take[c - chunk];
+      for (int m = 0; m < kFrameComponents; ++m)
+        o[m][c] = fi[m][c] + take * (updated[m] - fi[m][c]);
+    }
   }
 }
 
 }  // namespace
 
-SmoothingWorkspace::SmoothingWorkspace(int width) : width_(width) {
-  for (auto& sum : sums_) sum.assign(static_cast<std::size_t>(std::max(width, 1)), 0.0f);
-}
-
 void smooth_frame_row(const SmoothingRowInput& in, float* const* out_frame,
-                      const SmoothingParameters& parameters, SmoothingWorkspace& workspace) {
+                      const SmoothingParameters& parameters) {
   const RobustScales scales = robust_scales(parameters);
-  start_sums(in, workspace, scales);
+  // At the two end columns a neighbour outside the row is read at the pixel itself (its
+  // same-side bit is 0, so it gets no weight); inside, neighbour k of column c is at c + dc.
+  NeighborRows shifted[8], clamped[8];
   for (int k = 0; k < 8; ++k) {
-    // Columns whose neighbour in direction k exists (the others have no same-side bit).
-    const int dc = kNeighborOffsets[k].column;
-    add_neighbor_predictions(in, workspace, k, dc < 0 ? 1 : 0, dc > 0 ? in.width - 1 : in.width, scales);
+    const int r = kNeighborOffsets[k].row + 1, dc = kNeighborOffsets[k].column;
+    for (int m = 0; m < kFrameComponents; ++m) {
+      shifted[k].frame[m] = in.frame[r][m] + dc;
+      clamped[k].frame[m] = in.frame[r][m];
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+      shifted[k].position[axis] = in.position[r][axis] + dc;
+      clamped[k].position[axis] = in.position[r][axis];
+    }
   }
-  finish_row(in, workspace, out_frame);
+  const auto directions = std::make_integer_sequence<int, 8>{};
+  if (in.width <= 2) {
+    smooth_columns(in, clamped, out_frame, 0, in.width, scales, directions);
+    return;
+  }
+  smooth_columns(in, clamped, out_frame, 0, 1, scales, directions);
+  smooth_columns(in, shifted, out_frame, 1, in.width - 1, scales, directions);
+  smooth_columns(in, clamped, out_frame, in.width - 1, in.width, scales, directions);
 }
 
 void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& parameters) {
   if (parameters.iterations <= 0) return;
   const int width = field.width(), height = field.height();
   std::array<PixelGrid<float>, kFrameComponents> scratch = field.frame;
-  SmoothingWorkspace workspace(width);
   auto* previous = &field.frame;
   auto* next = &scratch;
   for (int iteration = 0; iteration < parameters.iterations; ++iteration) {
@@ -166,12 +182,13 @@ void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& para
       in.same_side = field.same_side.row(row);
       const int rows[3] = {std::max(row - 1, 0), row, std::min(row + 1, height - 1)};
       for (int r = 0; r < 3; ++r) {
-        for (int axis = 0; axis < 3; ++axis) in.position[r][axis] = field.position_mm[axis].row(rows[r]);
+        for (int axis = 0; axis < 3; ++axis)
+          in.position[r][axis] = field.position_mm[axis].row(rows[r]);
         for (int c = 0; c < kFrameComponents; ++c) in.frame[r][c] = (*previous)[c].row(rows[r]);
       }
       float* out[kFrameComponents];
       for (int c = 0; c < kFrameComponents; ++c) out[c] = (*next)[c].row(row);
-      smooth_frame_row(in, out, parameters, workspace);
+      smooth_frame_row(in, out, parameters);
     }
     std::swap(previous, next);
   }

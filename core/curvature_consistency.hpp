@@ -9,11 +9,9 @@
 // never averaged across creases and silhouettes do not bleed inwards.
 //
 // One iteration of one row reads only rows r-1..r+1 of the previous iteration, so the real-time
-// loop can pipeline the iterations row by row. The row kernel runs one neighbour direction at
-// a time over the whole row (structure-of-arrays, no branches) so that it vectorizes.
-#include <array>
+// loop can pipeline the iterations row by row. The row kernel is branch-free over a row of
+// structure-of-arrays frames, so that it vectorizes across columns.
 #include <cstdint>
-#include <vector>
 
 #include "core/cosmos_parameters.hpp"
 #include "core/darboux_frame_field.hpp"
@@ -30,23 +28,8 @@ struct SmoothingRowInput {
   const float* frame[3][kFrameComponents] = {};
 };
 
-// Row-sized accumulators, allocated once for the widest row (no allocation per row).
-class SmoothingWorkspace {
- public:
-  explicit SmoothingWorkspace(int width);
-  int width() const { return width_; }
-  float* sum(int k) { return sums_[k].data(); }
-
-  static constexpr int kWeight = kFrameComponents;       // sum of weights
-  static constexpr int kOwnNorm = kFrameComponents + 1;  // |W_i|^2 of the pixel itself
-
- private:
-  int width_;
-  std::array<std::vector<float>, kFrameComponents + 2> sums_;
-};
-
 void smooth_frame_row(const SmoothingRowInput& in, float* const* out_frame,
-                      const SmoothingParameters& parameters, SmoothingWorkspace& workspace);
+                      const SmoothingParameters& parameters);
 
 // Runs parameters.iterations iterations over the whole field in place.
 void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& parameters);
