@@ -37,6 +37,9 @@ struct SegmentationParameters {
   int max_patches = 15;
   double adaptive_start_limit = 0.05;
   double adaptive_limit_step = 0.025;
+  // Above this the patches would mix shape categories (a cap with a saddle); views whose
+  // patches are kept apart by planar bands or edges cannot reach max_patches anyway.
+  double adaptive_max_limit = 0.5;
   int boundary_refinement_passes = 8;  // §3.5.2 post-processing of boundary pixels (at most)
   double min_patch_area_fraction = 0.03;  // patches below this share of the view fold away
   // Planar pixels join one planar patch only when their normals agree this well, so the faces

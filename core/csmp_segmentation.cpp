@@ -45,29 +45,35 @@ struct PatchStats {
 std::vector<bool> fold_tiny_patches(const ShapeIndexField& field, const std::vector<int>& region_of_pixel,
                                     RegionMergeQueue& regions, double min_area_mm2) {
   const std::size_t n = regions.region_count();
-  std::vector<PatchStats> stats(n);
+  // Statistics for the current roots only (a union-find root keeps its index when it grows).
+  std::vector<int> compact(n, -1);
+  int root_count = 0;
+  for (std::size_t r = 0; r < n; ++r)
+    if (regions.find(static_cast<int>(r)) == static_cast<int>(r)) compact[r] = root_count++;
+  std::vector<PatchStats> root_stats(root_count);
+  auto stats = [&](int root) -> PatchStats& { return root_stats[compact[root]]; };
   for (std::size_t i = 0; i < field.label.size(); ++i) {
     if (region_of_pixel[i] < 0) continue;
-    PatchStats& s = stats[regions.find(region_of_pixel[i])];
+    PatchStats& s = stats(regions.find(region_of_pixel[i]));
     s.area_mm2 += field.area_mm2[i];
     s.shape_index_area += static_cast<double>(field.shape_index[i]) * field.area_mm2[i];
   }
   for_each_adjacent_pair(field, [&](std::size_t i, std::size_t j) {
     const int a = regions.find(region_of_pixel[i]), b = regions.find(region_of_pixel[j]);
     if (a == b) return;
-    stats[a].neighbors.push_back(b);
-    stats[b].neighbors.push_back(a);
+    stats(a).neighbors.push_back(b);
+    stats(b).neighbors.push_back(a);
   });
   std::vector<int> tiny;
   for (std::size_t r = 0; r < n; ++r) {
-    auto& s = stats[r];
+    if (compact[r] < 0) continue;
+    auto& s = stats(static_cast<int>(r));
     std::sort(s.neighbors.begin(), s.neighbors.end());
     s.neighbors.erase(std::unique(s.neighbors.begin(), s.neighbors.end()), s.neighbors.end());
-    if (regions.find(static_cast<int>(r)) == static_cast<int>(r) && s.area_mm2 < min_area_mm2)
-      tiny.push_back(static_cast<int>(r));
+    if (s.area_mm2 < min_area_mm2) tiny.push_back(static_cast<int>(r));
   }
   std::stable_sort(tiny.begin(), tiny.end(),
-                   [&](int a, int b) { return stats[a].area_mm2 < stats[b].area_mm2; });
+                   [&](int a, int b) { return stats(a).area_mm2 < stats(b).area_mm2; });
   // Into significant neighbours first (repeatedly, as folding makes more neighbours
   // significant), so a ramp of thin strips between two patches splits between them instead
   // of gluing itself into one more patch; then tiny clusters among themselves.
@@ -75,21 +81,21 @@ std::vector<bool> fold_tiny_patches(const ShapeIndexField& field, const std::vec
     bool changed = false;
     for (int patch : tiny) {
       const int root = regions.find(patch);
-      PatchStats& s = stats[root];
+      PatchStats& s = stats(root);
       if (s.area_mm2 >= min_area_mm2) continue;
       int best = -1;
       double best_difference = 0;
       for (int neighbor : s.neighbors) {
         const int other = regions.find(neighbor);
-        if (other == root || (into_significant_only && stats[other].area_mm2 < min_area_mm2)) continue;
-        const double difference = std::abs(stats[other].mean() - s.mean());
+        if (other == root || (into_significant_only && stats(other).area_mm2 < min_area_mm2)) continue;
+        const double difference = std::abs(stats(other).mean() - s.mean());
         if (best < 0 || difference < best_difference || (difference == best_difference && other < best)) {
           best = other;
           best_difference = difference;
         }
       }
       if (best < 0) continue;
-      PatchStats merged = std::move(stats[best]);
+      PatchStats merged = std::move(stats(best));
       merged.area_mm2 += s.area_mm2;
       merged.shape_index_area += s.shape_index_area;
       merged.neighbors.insert(merged.neighbors.end(), s.neighbors.begin(), s.neighbors.end());
@@ -103,7 +109,7 @@ std::vector<bool> fold_tiny_patches(const ShapeIndexField& field, const std::vec
       std::sort(roots.begin(), roots.end());
       roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
       merged.neighbors = std::move(roots);
-      stats[new_root] = std::move(merged);
+      stats(new_root) = std::move(merged);
       changed = true;
     }
     return changed;
@@ -115,19 +121,19 @@ std::vector<bool> fold_tiny_patches(const ShapeIndexField& field, const std::vec
   std::vector<bool> dropped(n, false);
   for (int patch : tiny) {
     const int root = regions.find(patch);
-    if (stats[root].area_mm2 < min_area_mm2) dropped[root] = true;  // an island of noise
+    if (stats(root).area_mm2 < min_area_mm2) dropped[root] = true;  // an island of noise
   }
   return dropped;
 }
 
 // The post-processing of §3.5.2: a curved boundary pixel moves to the adjacent curved patch
 // whose mean shape index is nearer its own, so boundaries settle where the shape index is
-// halfway between the patches instead of where growing happened to stop. Jacobi-style (reads
-// the old labels only), so the result does not depend on the scan order.
-bool refine_boundaries(const ShapeIndexField& field, CsmpSegmentation& segmentation) {
-  bool changed = false;
+// halfway between the patches instead of where growing happened to stop. Each pass reads the
+// labels of the previous one only (the result does not depend on the scan order) and looks
+// only at pixels next to the previous pass's moves.
+void refine_boundaries(const ShapeIndexField& field, CsmpSegmentation& segmentation, int passes) {
   std::vector<double> area(segmentation.patch_count, 0), shape_area(segmentation.patch_count, 0);
-  const auto& patch = segmentation.patch_of_pixel;
+  auto& patch = segmentation.patch_of_pixel;
   for (std::size_t i = 0; i < patch.size(); ++i) {
     if (patch[i] == kNoPatch || field.label[i] != SurfaceLabel::kCurved) continue;
     area[patch[i]] += field.area_mm2[i];
@@ -136,29 +142,43 @@ bool refine_boundaries(const ShapeIndexField& field, CsmpSegmentation& segmentat
   std::vector<double> mean(segmentation.patch_count, kPlanarShapeIndex);
   for (int p = 0; p < segmentation.patch_count; ++p)
     if (area[p] > 0) mean[p] = shape_area[p] / area[p];
-  PixelGrid<std::int32_t> refined = patch;
-  for (int row = 0; row < patch.height(); ++row) {
-    for (int column = 0; column < patch.width(); ++column) {
-      const std::size_t i = patch.index(column, row);
+  const int width = patch.width();
+  std::vector<std::size_t> candidates;
+  for (std::size_t i = 0; i < patch.size(); ++i)
+    if (patch[i] != kNoPatch && field.label[i] == SurfaceLabel::kCurved) candidates.push_back(i);
+  std::vector<std::pair<std::size_t, std::int32_t>> moves;
+  std::vector<int> stamp(patch.size(), -1);
+  for (int pass = 0; pass < passes && !candidates.empty(); ++pass) {
+    moves.clear();
+    for (std::size_t i : candidates) {
       if (patch[i] == kNoPatch || field.label[i] != SurfaceLabel::kCurved) continue;
       const double s = field.shape_index[i];
       double best_distance = std::abs(s - mean[patch[i]]);
+      std::int32_t best = patch[i];
+      const int column = static_cast<int>(i % width), row = static_cast<int>(i / width);
       for (int k = 0; k < 8; ++k) {
         if (!((field.same_side[i] >> k) & 1u)) continue;
         const std::size_t j = patch.index(column + kNeighborOffsets[k].column, row + kNeighborOffsets[k].row);
         const int other = patch[j];
         if (other == kNoPatch || other == patch[i] || field.label[j] != SurfaceLabel::kCurved) continue;
         const double distance = std::abs(s - mean[other]);
-        if (distance < best_distance) {
-          best_distance = distance;
-          refined[i] = other;
-          changed = true;
-        }
+        if (distance < best_distance) best_distance = distance, best = other;
       }
+      if (best != patch[i]) moves.emplace_back(i, best);
     }
+    candidates.clear();
+    for (const auto& [i, to] : moves) {
+      patch[i] = to;
+      const int column = static_cast<int>(i % width), row = static_cast<int>(i / width);
+      for (int dr = -1; dr <= 1; ++dr)
+        for (int dc = -1; dc <= 1; ++dc)
+          if (patch.contains(column + dc, row + dr)) {
+            const std::size_t j = patch.index(column + dc, row + dr);
+            if (stamp[j] != pass) stamp[j] = pass, candidates.push_back(j);
+          }
+    }
+    std::sort(candidates.begin(), candidates.end());
   }
-  segmentation.patch_of_pixel = std::move(refined);
-  return changed;
 }
 
 }  // namespace
@@ -196,13 +216,16 @@ CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndex
   regions.grow(limit);
   std::vector<bool> dropped;
   for (;;) {
-    while (adaptive && limit < 1.0 && regions.significant_region_count() > parameters.max_patches) {
-      limit = std::min(1.0, limit + parameters.adaptive_limit_step);
+    while (adaptive && limit < parameters.adaptive_max_limit &&
+           regions.significant_region_count() > parameters.max_patches) {
+      limit = std::min(parameters.adaptive_max_limit, limit + parameters.adaptive_limit_step);
       regions.grow(limit);
     }
     // Folding can join tiny patches into new significant ones: grow on if that overshoots.
     dropped = fold_tiny_patches(field, region_of_pixel, regions, min_area_mm2);
-    if (!adaptive || limit >= 1.0 || regions.significant_region_count() <= parameters.max_patches) break;
+    if (!adaptive || limit >= parameters.adaptive_max_limit ||
+        regions.significant_region_count() <= parameters.max_patches)
+      break;
   }
 
   CsmpSegmentation result;
@@ -216,8 +239,7 @@ CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndex
     if (patch_of_root[root] == kNoPatch) patch_of_root[root] = result.patch_count++;
     result.patch_of_pixel[i] = patch_of_root[root];
   }
-  for (int pass = 0; pass < parameters.boundary_refinement_passes; ++pass)
-    if (!refine_boundaries(field, result)) break;
+  refine_boundaries(field, result, parameters.boundary_refinement_passes);
   return result;
 }
 

@@ -31,7 +31,17 @@ float RegionMergeQueue::merged_diameter(int a, int b) const {
 }
 
 void RegionMergeQueue::add_edge(int a, int b) {
-  buckets_[bucket_of(merged_diameter(a, b))].push_back({a, b});
+  // Pairs that would land in the first bucket are merged at once: the first bucket is popped
+  // before anything else anyway, and merging while filing keeps most pixel pairs of a smooth
+  // surface out of the queue.
+  const int root_a = find(a), root_b = find(b);
+  if (root_a == root_b) return;
+  const int bucket = bucket_of(merged_diameter(root_a, root_b));
+  if (bucket == 0) {
+    unite(root_a, root_b);
+  } else {
+    buckets_[bucket].push_back({a, b});
+  }
 }
 
 int RegionMergeQueue::find(int region) {

@@ -37,7 +37,7 @@ class RegionMergeQueue {
     std::int32_t a;
     std::int32_t b;
   };
-  static constexpr int kBuckets = 1024;  // over shape diameters [0, 1]
+  static constexpr int kBuckets = 256;  // over shape diameters [0, 1]: 0.0039 wide
   float merged_diameter(int root_a, int root_b) const;
   static int bucket_of(float diameter);
 
