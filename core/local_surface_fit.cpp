@@ -50,30 +50,40 @@ Eigen::Matrix<double, 6, kBicubicTerms> taylor_rows(double u, double v) {
   return t;
 }
 
+// The Darboux frame of the graph surface z(x, y) from its derivatives p = z_x, q = z_y and the
+// second derivatives: normal (-p, -q, 1)/w; second fundamental form II with the sign flipped so
+// that convex towards +z is positive; M = I^-1 II I^-1 and W = J M J^T with J = [X_u X_v] =
+// [[1,0],[0,1],[p,q]], the shape operator as a 3D tensor. Branch-free, so loops over a row of
+// pixels vectorize.
+template <class Real>
+inline void graph_surface_frame(Real p, Real q, Real zxx, Real zxy, Real zyy, float* f) {
+  const Real w2 = 1 + p * p + q * q;
+  const Real inv_w = 1 / std::sqrt(w2);
+  const Real inv_w2 = inv_w * inv_w;
+  f[kNx] = static_cast<float>(-p * inv_w);
+  f[kNy] = static_cast<float>(-q * inv_w);
+  f[kNz] = static_cast<float>(inv_w);
+  const Real l = -zxx * inv_w, m = -zxy * inv_w, n = -zyy * inv_w;
+  const Real i11 = (1 + q * q) * inv_w2, i12 = -p * q * inv_w2, i22 = (1 + p * p) * inv_w2;
+  const Real a11 = i11 * l + i12 * m, a12 = i11 * m + i12 * n;  // I^-1 II
+  const Real a21 = i12 * l + i22 * m, a22 = i12 * m + i22 * n;
+  const Real m11 = a11 * i11 + a12 * i12, m12 = a11 * i12 + a12 * i22;
+  const Real m22 = a21 * i12 + a22 * i22;
+  const Real wxz = m11 * p + m12 * q, wyz = m12 * p + m22 * q;
+  f[kWxx] = static_cast<float>(m11);
+  f[kWxy] = static_cast<float>(m12);
+  f[kWxz] = static_cast<float>(wxz);
+  f[kWyy] = static_cast<float>(m22);
+  f[kWyz] = static_cast<float>(wyz);
+  f[kWzz] = static_cast<float>(p * wxz + q * wyz);
+}
+
+constexpr float kNeutralFrame[kFrameComponents] = {0, 0, 1, 0, 0, 0, 0, 0, 0};
+
 }  // namespace
 
 void darboux_frame_from_derivatives(const SurfaceDerivatives& d, float* f) {
-  const double p = d.zx, q = d.zy;
-  const double w2 = 1 + p * p + q * q;
-  const double w = std::sqrt(w2);
-  f[kNx] = static_cast<float>(-p / w);
-  f[kNy] = static_cast<float>(-q / w);
-  f[kNz] = static_cast<float>(1 / w);
-  // Second fundamental form II with the sign flipped so that convex towards +z is positive,
-  // M = I^-1 II I^-1 and W = J M J^T with J = [X_u X_v] = [[1,0],[0,1],[p,q]]: the shape
-  // operator as a 3D tensor.
-  const double l = -d.zxx / w, m = -d.zxy / w, n = -d.zyy / w;
-  const double i11 = (1 + q * q) / w2, i12 = -p * q / w2, i22 = (1 + p * p) / w2;
-  const double a11 = i11 * l + i12 * m, a12 = i11 * m + i12 * n;  // I^-1 II
-  const double a21 = i12 * l + i22 * m, a22 = i12 * m + i22 * n;
-  const double m11 = a11 * i11 + a12 * i12, m12 = a11 * i12 + a12 * i22;
-  const double m22 = a21 * i12 + a22 * i22;
-  f[kWxx] = static_cast<float>(m11);
-  f[kWxy] = static_cast<float>(m12);
-  f[kWxz] = static_cast<float>(m11 * p + m12 * q);
-  f[kWyy] = static_cast<float>(m22);
-  f[kWyz] = static_cast<float>(m12 * p + m22 * q);
-  f[kWzz] = static_cast<float>(p * (m11 * p + m12 * q) + q * (m12 * p + m22 * q));
+  graph_surface_frame(d.zx, d.zy, d.zxx, d.zxy, d.zyy, f);
 }
 
 LocalSurfaceFitter::LocalSurfaceFitter(const SurfaceFitParameters& parameters,
@@ -176,7 +186,9 @@ bool LocalSurfaceFitter::fit_crease_window(const RangeImage& image, int column, 
   }
   const double crease_rss =
       parameters_.crease_residual_mm * parameters_.crease_residual_mm * side_ * side_;
-  if (crease_rss > 0 && best_rss > crease_rss) {
+  // Only a complete window can reveal a crease by its residual; incomplete ones (borders,
+  // holes, depth jumps) are fitted from their valid same-side samples instead.
+  if (centered_complete && crease_rss > 0 && best_rss > crease_rss) {
     WindowSamples shifted;
     for (int ov = -half_window_, o = 0; ov <= half_window_; ++ov) {
       for (int ou = -half_window_; ou <= half_window_; ++ou, ++o) {
@@ -235,47 +247,72 @@ void LocalSurfaceFitter::fit_row(const RangeImage& image, int row, DarbouxFrameF
   const double* rss = separable_.residual_sum_of_squares();
   const double crease_rss =
       parameters_.crease_residual_mm * parameters_.crease_residual_mm * side_ * side_;
-  float frame[kFrameComponents];
-  for (int column = 0; column < image.width(); ++column) {
-    const std::size_t i = out.valid.index(column, row);
+  auto separable_fits = [&](int column) {
+    return complete[column] && (crease_rss <= 0 || rss[column] <= crease_rss);
+  };
+  const int width = image.width();
+  float* frame_row[kFrameComponents];
+  for (int m = 0; m < kFrameComponents; ++m) frame_row[m] = out.frame[m].row(row);
+  float* x_row = out.position_mm[0].row(row);
+  float* y_row = out.position_mm[1].row(row);
+  float* z_row = out.position_mm[2].row(row);
+  std::uint8_t* valid_row = out.valid.row(row);
+  const double* q[SeparableWindowFit::kQuadricTerms];
+  for (int t = 0; t < SeparableWindowFit::kQuadricTerms; ++t) q[t] = separable_.quadric(t);
+  const float inv_dx = static_cast<float>(1 / pixel_size_x_mm_), inv_dy = static_cast<float>(1 / pixel_size_y_mm_);
+  const float y_mm = static_cast<float>(image.y_mm(row));
+  // Complete, crease-free windows: the separable fit, in a branch-free loop over the row.
+#pragma GCC ivdep
+  for (int column = 0; column < width; ++column) {
+    const bool fits = separable_fits(column);
+    float frame[kFrameComponents];
+    graph_surface_frame(static_cast<float>(q[1][column]) * inv_dx, static_cast<float>(q[2][column]) * inv_dy,
+                        2 * static_cast<float>(q[3][column]) * inv_dx * inv_dx,
+                        static_cast<float>(q[4][column]) * inv_dx * inv_dy,
+                        2 * static_cast<float>(q[5][column]) * inv_dy * inv_dy, frame);
+    for (int m = 0; m < kFrameComponents; ++m) frame_row[m][column] = fits ? frame[m] : kNeutralFrame[m];
+    x_row[column] = static_cast<float>(image.x_mm(column));
+    y_row[column] = y_mm;
+    z_row[column] = fits ? static_cast<float>(q[0][column]) : 0.0f;
+    valid_row[column] = fits ? 1 : 0;
+  }
+  // The rest (borders, holes, depth jumps, creases) pixel by pixel.
+  for (int column = 0; column < width; ++column) {
+    if (separable_fits(column)) continue;
     SurfaceDerivatives d;
-    bool ok;
-    if (complete[column] && !(crease_rss > 0 && rss[column] > crease_rss)) {
-      QuadricCoefficients c;
-      for (int t = 0; t < SeparableWindowFit::kQuadricTerms; ++t) c[t] = separable_.quadric(t)[column];
-      d = to_metric(c);
-      ok = true;
-    } else {
-      ok = fit_pixel(image, column, row, d);
-    }
-    out.valid[i] = ok ? 1 : 0;
-    out.position_mm[0][i] = static_cast<float>(image.x_mm(column));
-    out.position_mm[1][i] = static_cast<float>(image.y_mm(row));
-    out.position_mm[2][i] = ok ? static_cast<float>(d.z_mm) : 0.0f;
-    if (ok) {
-      darboux_frame_from_derivatives(d, frame);
-    } else {
-      std::fill(frame, frame + kFrameComponents, 0.0f);
-      frame[kNz] = 1.0f;
-    }
-    for (int c = 0; c < kFrameComponents; ++c) out.frame[c][i] = frame[c];
+    if (!fit_pixel(image, column, row, d)) continue;
+    float frame[kFrameComponents];
+    darboux_frame_from_derivatives(d, frame);
+    for (int m = 0; m < kFrameComponents; ++m) frame_row[m][column] = frame[m];
+    z_row[column] = static_cast<float>(d.z_mm);
+    valid_row[column] = 1;
   }
 }
 
 void LocalSurfaceFitter::link_row(const RangeImage& image, int row, DarbouxFrameField& out) const {
-  for (int column = 0; column < image.width(); ++column) {
-    const std::size_t i = out.valid.index(column, row);
+  const int width = image.width(), height = image.height();
+  const float jump = static_cast<float>(parameters_.depth_jump_mm);
+  const float* z[3];
+  const std::uint8_t* valid[3];
+  for (int r = 0; r < 3; ++r) {
+    // A missing row points at this one with its validity masked off below.
+    const int source = std::clamp(row + r - 1, 0, height - 1);
+    z[r] = image.z_mm.row(source);
+    valid[r] = out.valid.row(source);
+  }
+  const bool row_exists[3] = {row > 0, true, row + 1 < height};
+  std::uint8_t* mask_row = out.same_side.row(row);
+  for (int column = 0; column < width; ++column) {
     std::uint8_t mask = 0;
-    if (out.valid[i]) {
-      const float center = image.z_mm[i];
+    if (valid[1][column]) {
+      const float center = z[1][column];
       for (int k = 0; k < 8; ++k) {
-        const int c = column + kNeighborOffsets[k].column, r = row + kNeighborOffsets[k].row;
-        if (!out.valid.contains(c, r) || !out.valid(c, r)) continue;
-        if (std::abs(image.z_mm(c, r) - center) <= parameters_.depth_jump_mm)
-          mask |= static_cast<std::uint8_t>(1u << k);
+        const int r = kNeighborOffsets[k].row + 1, c = column + kNeighborOffsets[k].column;
+        if (!row_exists[r] || c < 0 || c >= width || !valid[r][c]) continue;
+        if (std::abs(z[r][c] - center) <= jump) mask |= static_cast<std::uint8_t>(1u << k);
       }
     }
-    out.same_side[i] = mask;
+    mask_row[column] = mask;
   }
 }
 
