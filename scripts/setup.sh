@@ -7,7 +7,10 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev libopencv-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libassimp-dev libembree-dev
+  libassimp-dev libembree-dev libqhull-dev
+  libgpiod-dev
+  liblcm-dev liblcm-bin libglib2.0-dev
+  libflatbuffers-dev flatbuffers-compiler
 )
 
 missing=()

@@ -1,0 +1,57 @@
+#pragma once
+// The work cell's digital I/O, as the acquisition loop sees it: the conveyor encoder count,
+// part-present transitions from the photo eye (each with the encoder count at the edge), and
+// the laser-enable, camera-trigger and result-ready outputs. One implementation drives real
+// lines through libgpiod (gpio_lines.hpp); a simulated one follows the simulated conveyor.
+#include <cstdint>
+#include <string_view>
+
+namespace cosmos {
+
+enum class GpioStatus : std::uint8_t {
+  kOk,
+  kTimeout,        // no input edge within the wait
+  kNotConfigured,  // the output has no line in the config
+  kWrongState,     // not started
+  kError,          // see last_error()
+};
+
+enum class GpioOutput : std::uint8_t { kLaserEnable, kCameraTrigger, kResultReady };
+
+struct EncoderReading {
+  std::int64_t ticks = 0;
+  std::int64_t last_step_t_ns = 0;  // CLOCK_MONOTONIC
+  std::uint64_t invalid_transitions = 0;
+  std::uint64_t ignored_edges = 0;
+  std::uint64_t reversals = 0;
+};
+
+struct PhotoEyeEvent {
+  bool present = false;            // true: a part arrived; false: it left
+  std::int64_t t_ns = 0;           // the edge that began it, CLOCK_MONOTONIC
+  std::int64_t encoder_ticks = 0;  // encoder count at that edge
+};
+
+class GpioLines {
+ public:
+  virtual ~GpioLines() = default;
+
+  // Requests the lines and drives every output inactive (set-up, may allocate).
+  virtual GpioStatus start() noexcept = 0;
+  // Drives outputs inactive and releases the lines.
+  virtual GpioStatus stop() noexcept = 0;
+
+  // Real-time: waits at most timeout_ns for input edges and decodes all that arrived.
+  virtual GpioStatus poll_inputs(std::int64_t timeout_ns) noexcept = 0;
+  virtual EncoderReading encoder() const noexcept = 0;
+  virtual bool part_present() const noexcept = 0;
+  // Real-time: the oldest undelivered photo-eye transition; false when there is none.
+  virtual bool next_photo_eye_event(PhotoEyeEvent& event) noexcept = 0;
+  // Real-time: active = the output's asserted level (after active_low).
+  virtual GpioStatus set_output(GpioOutput output, bool active) noexcept = 0;
+
+  // One line naming the chip/line and the reason of the last failure, empty if none.
+  virtual std::string_view last_error() const noexcept = 0;
+};
+
+}  // namespace cosmos

@@ -1,0 +1,232 @@
+#include "firmware_bridge/gpio_lines.hpp"
+
+#include <gpiod.h>
+
+#include <cerrno>
+#include <cstdarg>
+#include <cstdio>
+#include <utility>
+
+#include "firmware_bridge/kernel_timestamp.hpp"
+
+namespace cosmos {
+
+namespace {
+
+constexpr std::array<const char*, kGpioInputCount> kInputRoles = {"encoder_a", "encoder_b",
+                                                                  "photo_eye"};
+constexpr std::array<const char*, 3> kOutputRoles = {"laser_enable", "camera_trigger",
+                                                     "result_ready"};
+
+// libgpiod reads at most this many events per call: the kernel FIFO depth.
+constexpr unsigned kEventBatch = 16;
+
+// An event stamped this far after the cut cannot be CLOCK_MONOTONIC: kernels before 5.7
+// stamped GPIO events with CLOCK_REALTIME, which would hold every event back forever.
+constexpr std::int64_t kClockMismatchNs = 1'000'000'000;
+
+// "\"ENC_A\"" or "17": how the config named the line.
+struct LineLabel {
+  char text[72] = {};
+  explicit LineLabel(const GpioLineRef& ref) noexcept {
+    if (!ref.name.empty()) {
+      std::snprintf(text, sizeof text, "\"%s\"", ref.name.c_str());
+    } else {
+      std::snprintf(text, sizeof text, "%d", ref.offset);
+    }
+  }
+};
+
+}  // namespace
+
+LibgpiodLines::LibgpiodLines(GpioConfig config)
+    : config_(std::move(config)),
+      decoder_(GpioInputParameters{
+          {config_.encoder_mode, config_.encoder_debounce_ns, config_.encoder_b.configured()},
+          {config_.photo_eye_debounce_ns, config_.photo_eye_min_on_ns,
+           config_.photo_eye_min_off_ns}}) {}
+
+LibgpiodLines::~LibgpiodLines() { stop(); }
+
+const GpioLineRef& LibgpiodLines::input_ref(std::size_t input) const noexcept {
+  const std::array<const GpioLineRef*, kGpioInputCount> refs = {
+      &config_.encoder_a, &config_.encoder_b, &config_.photo_eye};
+  return *refs[input];
+}
+
+const GpioLineRef& LibgpiodLines::output_ref(std::size_t output) const noexcept {
+  const std::array<const GpioLineRef*, kOutputCount> refs = {
+      &config_.laser_enable, &config_.camera_trigger, &config_.result_ready};
+  return *refs[output];
+}
+
+GpioStatus LibgpiodLines::fail(const char* format, ...) noexcept {
+  char reason[ErrorLine::kCapacity];
+  va_list arguments;
+  va_start(arguments, format);
+  std::vsnprintf(reason, sizeof reason, format, arguments);
+  va_end(arguments);
+  error_.set("%s: %s", config_.chip.c_str(), reason);
+  return GpioStatus::kError;
+}
+
+GpioStatus LibgpiodLines::find_line(const GpioLineRef& ref, const char* role,
+                                    gpiod_line*& line) noexcept {
+  const LineLabel label(ref);
+  if (!ref.name.empty()) {
+    line = gpiod_chip_find_line(chip_, ref.name.c_str());
+    if (line == nullptr) {
+      return errno == ENOENT
+                 ? fail("line %s (%s): no line of that name on this chip", label.text, role)
+                 : fail("line %s (%s): %s", label.text, role, errno_text(errno));
+    }
+    return GpioStatus::kOk;
+  }
+  const unsigned line_count = gpiod_chip_num_lines(chip_);
+  if (static_cast<unsigned>(ref.offset) >= line_count) {
+    return fail("line %s (%s): offset out of range, the chip has %u lines", label.text, role,
+                line_count);
+  }
+  line = gpiod_chip_get_line(chip_, static_cast<unsigned>(ref.offset));
+  if (line == nullptr) return fail("line %s (%s): %s", label.text, role, errno_text(errno));
+  return GpioStatus::kOk;
+}
+
+GpioStatus LibgpiodLines::open_lines() noexcept {
+  if (!config_.encoder_a.configured()) return fail("encoder_a: no line configured");
+  if (config_.encoder_mode == EncoderMode::kQuadrature && !config_.encoder_b.configured()) {
+    return fail("encoder_b: no line configured, quadrature decoding needs both A and B");
+  }
+  errno = 0;
+  chip_ = gpiod_chip_open_lookup(config_.chip.c_str());
+  if (chip_ == nullptr) {
+    return fail("cannot open GPIO chip: %s", errno == 0 ? "not found" : errno_text(errno));
+  }
+  const char* consumer = config_.consumer.c_str();
+  std::array<bool, kGpioInputCount> levels{};
+  for (std::size_t i = 0; i < kGpioInputCount; ++i) {
+    const GpioLineRef& ref = input_ref(i);
+    if (!ref.configured()) continue;
+    if (const GpioStatus status = find_line(ref, kInputRoles[i], inputs_[i]);
+        status != GpioStatus::kOk)
+      return status;
+    const LineLabel label(ref);
+    // Edges are requested in electrical terms and active_low applied here, so the meaning
+    // of an event type never depends on how a kernel version treats the ACTIVE_LOW flag.
+    if (gpiod_line_request_both_edges_events(inputs_[i], consumer) < 0) {
+      return fail("line %s (%s): cannot request edge events: %s", label.text, kInputRoles[i],
+                  errno_text(errno));
+    }
+    const int value = gpiod_line_get_value(inputs_[i]);
+    if (value < 0)
+      return fail("line %s (%s): cannot read: %s", label.text, kInputRoles[i], errno_text(errno));
+    levels[i] = (value != 0) != ref.active_low;
+  }
+  for (std::size_t i = 0; i < kOutputCount; ++i) {
+    const GpioLineRef& ref = output_ref(i);
+    if (!ref.configured()) continue;
+    if (const GpioStatus status = find_line(ref, kOutputRoles[i], outputs_[i]);
+        status != GpioStatus::kOk) {
+      return status;
+    }
+    if (gpiod_line_request_output(outputs_[i], consumer, ref.active_low ? 1 : 0) < 0) {
+      return fail("line %s (%s): cannot request as output: %s", LineLabel(ref).text,
+                  kOutputRoles[i], errno_text(errno));
+    }
+  }
+  merger_.clear();
+  decoder_.reset(levels[0], levels[1], levels[2], monotonic_now_ns());
+  return GpioStatus::kOk;
+}
+
+GpioStatus LibgpiodLines::start() noexcept {
+  if (started()) return GpioStatus::kOk;
+  const GpioStatus status = open_lines();
+  if (status != GpioStatus::kOk) stop();
+  return status;
+}
+
+GpioStatus LibgpiodLines::stop() noexcept {
+  if (!started()) return GpioStatus::kOk;
+  // Releasing a line leaves it at its last level on most GPIO drivers: drive every output,
+  // above all the laser enable, inactive before letting go.
+  for (std::size_t i = 0; i < kOutputCount; ++i) {
+    if (outputs_[i] != nullptr && gpiod_line_is_requested(outputs_[i])) {
+      gpiod_line_set_value(outputs_[i], output_ref(i).active_low ? 1 : 0);
+    }
+  }
+  gpiod_chip_close(chip_);  // releases every line requested from it
+  chip_ = nullptr;
+  inputs_ = {};
+  outputs_ = {};
+  return GpioStatus::kOk;
+}
+
+GpioStatus LibgpiodLines::set_output(GpioOutput output, bool active) noexcept {
+  const auto index = static_cast<std::size_t>(output);
+  if (!started()) {
+    fail("%s: lines not started", kOutputRoles[index]);
+    return GpioStatus::kWrongState;
+  }
+  if (outputs_[index] == nullptr) return GpioStatus::kNotConfigured;
+  const GpioLineRef& ref = output_ref(index);
+  if (gpiod_line_set_value(outputs_[index], active != ref.active_low ? 1 : 0) < 0) {
+    return fail("line %s (%s): cannot set: %s", LineLabel(ref).text, kOutputRoles[index],
+                errno_text(errno));
+  }
+  return GpioStatus::kOk;
+}
+
+GpioStatus LibgpiodLines::poll_inputs(std::int64_t timeout_ns) noexcept {
+  if (!started()) {
+    fail("poll_inputs: lines not started");
+    return GpioStatus::kWrongState;
+  }
+  gpiod_line_bulk watched;
+  gpiod_line_bulk_init(&watched);
+  for (gpiod_line* line : inputs_) {
+    if (line != nullptr) gpiod_line_bulk_add(&watched, line);
+  }
+  const timespec timeout = ns_to_timespec(timeout_ns);
+  const int woke = gpiod_line_event_wait_bulk(&watched, &timeout, nullptr);
+  if (woke < 0 && errno != EINTR) return fail("waiting for edge events: %s", errno_text(errno));
+  if (woke <= 0) {
+    decoder_.advance_to(monotonic_now_ns());
+    return GpioStatus::kTimeout;
+  }
+  // The cut is taken before the queues are read: see EdgeEventMerger.
+  const std::int64_t cut_ns = monotonic_now_ns();
+  gpiod_line_bulk ready;
+  gpiod_line_bulk_init(&ready);
+  const timespec no_wait{};
+  if (gpiod_line_event_wait_bulk(&watched, &no_wait, &ready) < 0) {
+    return fail("checking edge events: %s", errno_text(errno));
+  }
+  gpiod_line_event events[kEventBatch];
+  for (unsigned r = 0; r < gpiod_line_bulk_num_lines(&ready); ++r) {
+    gpiod_line* line = gpiod_line_bulk_get_line(&ready, r);
+    std::size_t input = 0;
+    while (input < kGpioInputCount && inputs_[input] != line) ++input;
+    if (input == kGpioInputCount) continue;
+    const int count = gpiod_line_event_read_multiple(line, events, kEventBatch);
+    if (count < 0) {
+      return fail("line %s (%s): reading edge events: %s", LineLabel(input_ref(input)).text,
+                  kInputRoles[input], errno_text(errno));
+    }
+    for (int e = 0; e < count; ++e) {
+      const std::int64_t t_ns = timespec_to_ns(events[e].ts);
+      if (t_ns > cut_ns + kClockMismatchNs) {
+        return fail(
+            "line %s (%s): event time stamps are not CLOCK_MONOTONIC (kernel older than 5.7?)",
+            LineLabel(input_ref(input)).text, kInputRoles[input]);
+      }
+      const bool rising = events[e].event_type == GPIOD_LINE_EVENT_RISING_EDGE;
+      merger_.push({t_ns, static_cast<GpioInput>(input), rising != input_ref(input).active_low});
+    }
+  }
+  merger_.drain(cut_ns, [this](const GpioEdge& edge) { decoder_.on_edge(edge); });
+  decoder_.advance_to(cut_ns);
+  return GpioStatus::kOk;
+}
+
+}  // namespace cosmos

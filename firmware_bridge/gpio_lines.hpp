@@ -1,0 +1,72 @@
+#pragma once
+// The work cell's GPIO lines through libgpiod 1.6 (the character-device API: /dev/gpiochipN).
+//
+// start() opens the chip, finds each configured line by name or offset, requests the inputs
+// (encoder A/B, photo eye) for both-edge events and the outputs (laser enable, camera
+// trigger, result ready) driven inactive, and reads the inputs' levels to start decoding
+// from. A missing chip or line, a busy line, a bad offset: one line naming chip, line, role
+// and reason.
+//
+// poll_inputs() waits for edges, reads every pending event with its kernel time stamp
+// (CLOCK_MONOTONIC on kernels ≥ 5.7), restores their order across lines (EdgeEventMerger) and
+// decodes them (GpioInputDecoder). libgpiod's wait, read and set-value calls use stack
+// arrays and plain syscalls (Debian's 1.6.3 binary calls only ppoll, read and ioctl in them),
+// so this runs on the acquisition thread without allocating. The kernel keeps only
+// 16 events per line: at 20 kHz of encoder edges that is 0.8 ms, which bounds how long the
+// loop may go without polling before edges are lost (and counted as invalid transitions).
+#include <array>
+#include <cstdint>
+
+#include "firmware_bridge/edge_event_merger.hpp"
+#include "firmware_bridge/error_line.hpp"
+#include "firmware_bridge/gpio.hpp"
+#include "firmware_bridge/gpio_config.hpp"
+#include "firmware_bridge/gpio_input_decoder.hpp"
+
+struct gpiod_chip;
+struct gpiod_line;
+
+namespace cosmos {
+
+class LibgpiodLines final : public GpioLines {
+ public:
+  explicit LibgpiodLines(GpioConfig config);
+  ~LibgpiodLines() override;
+  LibgpiodLines(const LibgpiodLines&) = delete;
+  LibgpiodLines& operator=(const LibgpiodLines&) = delete;
+
+  GpioStatus start() noexcept override;
+  GpioStatus stop() noexcept override;
+  GpioStatus poll_inputs(std::int64_t timeout_ns) noexcept override;
+  EncoderReading encoder() const noexcept override { return decoder_.encoder(); }
+  bool part_present() const noexcept override { return decoder_.part_present(); }
+  bool next_photo_eye_event(PhotoEyeEvent& event) noexcept override {
+    return decoder_.next_photo_eye_event(event);
+  }
+  GpioStatus set_output(GpioOutput output, bool active) noexcept override;
+  std::string_view last_error() const noexcept override { return error_.view(); }
+
+  bool started() const noexcept { return chip_ != nullptr; }
+  const GpioInputDecoder& decoder() const noexcept { return decoder_; }
+  // Edges that found the merger full: the loop polled far too rarely.
+  std::uint64_t lost_edges() const noexcept { return merger_.overflowed(); }
+
+ private:
+  static constexpr std::size_t kOutputCount = 3;
+
+  const GpioLineRef& input_ref(std::size_t input) const noexcept;
+  const GpioLineRef& output_ref(std::size_t output) const noexcept;
+  GpioStatus find_line(const GpioLineRef& ref, const char* role, gpiod_line*& line) noexcept;
+  GpioStatus open_lines() noexcept;
+  [[gnu::format(printf, 2, 3)]] GpioStatus fail(const char* format, ...) noexcept;
+
+  GpioConfig config_;
+  gpiod_chip* chip_ = nullptr;
+  std::array<gpiod_line*, kGpioInputCount> inputs_{};
+  std::array<gpiod_line*, kOutputCount> outputs_{};
+  GpioInputDecoder decoder_;
+  EdgeEventMerger merger_;
+  ErrorLine error_;
+};
+
+}  // namespace cosmos
