@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "core/region_merge_queue.hpp"
+#include "core/tiny_patch_folding.hpp"
 
 namespace cosmos {
 namespace {
@@ -31,99 +32,6 @@ void for_each_adjacent_pair(const ShapeIndexField& field, Visit&& visit) {
       }
     }
   }
-}
-
-struct PatchStats {
-  double area_mm2 = 0;
-  double shape_index_area = 0;  // sum of S_I * area, for the mean
-  std::vector<int> neighbors;   // roots, may hold stale or repeated entries
-  double mean() const { return area_mm2 > 0 ? shape_index_area / area_mm2 : 0; }
-};
-
-// Folds every patch smaller than min_area into its adjacent patch of most similar mean shape
-// index (§5.4.3), smallest first; tiny patches left with no neighbour are dropped.
-std::vector<bool> fold_tiny_patches(const ShapeIndexField& field, const std::vector<int>& region_of_pixel,
-                                    RegionMergeQueue& regions, double min_area_mm2) {
-  const std::size_t n = regions.region_count();
-  // Statistics for the current roots only (a union-find root keeps its index when it grows).
-  std::vector<int> compact(n, -1);
-  int root_count = 0;
-  for (std::size_t r = 0; r < n; ++r)
-    if (regions.find(static_cast<int>(r)) == static_cast<int>(r)) compact[r] = root_count++;
-  std::vector<PatchStats> root_stats(root_count);
-  auto stats = [&](int root) -> PatchStats& { return root_stats[compact[root]]; };
-  for (std::size_t i = 0; i < field.label.size(); ++i) {
-    if (region_of_pixel[i] < 0) continue;
-    PatchStats& s = stats(regions.find(region_of_pixel[i]));
-    s.area_mm2 += field.area_mm2[i];
-    s.shape_index_area += static_cast<double>(field.shape_index[i]) * field.area_mm2[i];
-  }
-  for_each_adjacent_pair(field, [&](std::size_t i, std::size_t j) {
-    const int a = regions.find(region_of_pixel[i]), b = regions.find(region_of_pixel[j]);
-    if (a == b) return;
-    stats(a).neighbors.push_back(b);
-    stats(b).neighbors.push_back(a);
-  });
-  std::vector<int> tiny;
-  for (std::size_t r = 0; r < n; ++r) {
-    if (compact[r] < 0) continue;
-    auto& s = stats(static_cast<int>(r));
-    std::sort(s.neighbors.begin(), s.neighbors.end());
-    s.neighbors.erase(std::unique(s.neighbors.begin(), s.neighbors.end()), s.neighbors.end());
-    if (s.area_mm2 < min_area_mm2) tiny.push_back(static_cast<int>(r));
-  }
-  std::stable_sort(tiny.begin(), tiny.end(),
-                   [&](int a, int b) { return stats(a).area_mm2 < stats(b).area_mm2; });
-  // Into significant neighbours first (repeatedly, as folding makes more neighbours
-  // significant), so a ramp of thin strips between two patches splits between them instead
-  // of gluing itself into one more patch; then tiny clusters among themselves.
-  auto fold_pass = [&](bool into_significant_only) {
-    bool changed = false;
-    for (int patch : tiny) {
-      const int root = regions.find(patch);
-      PatchStats& s = stats(root);
-      if (s.area_mm2 >= min_area_mm2) continue;
-      int best = -1;
-      double best_difference = 0;
-      for (int neighbor : s.neighbors) {
-        const int other = regions.find(neighbor);
-        if (other == root || (into_significant_only && stats(other).area_mm2 < min_area_mm2)) continue;
-        const double difference = std::abs(stats(other).mean() - s.mean());
-        if (best < 0 || difference < best_difference || (difference == best_difference && other < best)) {
-          best = other;
-          best_difference = difference;
-        }
-      }
-      if (best < 0) continue;
-      PatchStats merged = std::move(stats(best));
-      merged.area_mm2 += s.area_mm2;
-      merged.shape_index_area += s.shape_index_area;
-      merged.neighbors.insert(merged.neighbors.end(), s.neighbors.begin(), s.neighbors.end());
-      regions.unite(root, best);
-      const int new_root = regions.find(root);
-      std::vector<int> roots;
-      for (int neighbor : merged.neighbors) {
-        const int other = regions.find(neighbor);
-        if (other != new_root) roots.push_back(other);
-      }
-      std::sort(roots.begin(), roots.end());
-      roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
-      merged.neighbors = std::move(roots);
-      stats(new_root) = std::move(merged);
-      changed = true;
-    }
-    return changed;
-  };
-  while (fold_pass(true)) {
-  }
-  while (fold_pass(false)) {
-  }
-  std::vector<bool> dropped(n, false);
-  for (int patch : tiny) {
-    const int root = regions.find(patch);
-    if (stats(root).area_mm2 < min_area_mm2) dropped[root] = true;  // an island of noise
-  }
-  return dropped;
 }
 
 // The post-processing of §3.5.2: a curved boundary pixel moves to the adjacent curved patch
