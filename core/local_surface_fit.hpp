@@ -38,6 +38,8 @@ class LocalSurfaceFitter {
   // Fits row `row` of the image into `out` (needs image rows row +- window size). Fitting
   // rows in increasing order reuses the separable row filters.
   void fit_row(const RangeImage& image, int row, DarbouxFrameField& out);
+  // Before fitting another image with the same fitter.
+  void reset() { separable_.reset(); }
   // Same-side masks of row `row`; needs the fits of rows row-1 .. row+1.
   void link_row(const RangeImage& image, int row, DarbouxFrameField& out) const;
 

@@ -40,6 +40,8 @@ SeparableWindowFit::SeparableWindowFit(int half_window, int degree, int max_widt
   }
 }
 
+void SeparableWindowFit::reset() { std::fill(slot_row_.begin(), slot_row_.end(), -1); }
+
 void SeparableWindowFit::filter_image_row(const RangeImage& image, int image_row, int slot) {
   slot_row_[slot] = image_row;
   const int width = image.width();

@@ -24,6 +24,8 @@ class SeparableWindowFit {
   // window has data spanning at most max_depth_range_mm; only then are its coefficients
   // (relative to nothing: absolute z) and residual meaningful.
   void fit_row(const RangeImage& image, int row, double max_depth_range_mm);
+  // Forgets the cached row filters (a new image reuses the buffers).
+  void reset();
 
   const double* quadric(int term) const { return quadric_[term].data(); }
   const double* residual_sum_of_squares() const { return residual_.data(); }

@@ -42,9 +42,7 @@ float shape_index_sensitivity_mm(float kappa1, float kappa2) {
   return 1.0f / (std::numbers::pi_v<float> * magnitude);
 }
 
-namespace {
-
-ShapeIndexField make_field(int width, int height) {
+ShapeIndexField make_shape_index_field(int width, int height) {
   ShapeIndexField field;
   field.label = PixelGrid<SurfaceLabel>(width, height, SurfaceLabel::kInvalid);
   field.shape_index = PixelGrid<float>(width, height, std::numeric_limits<float>::quiet_NaN());
@@ -53,8 +51,6 @@ ShapeIndexField make_field(int width, int height) {
   field.same_side = PixelGrid<std::uint8_t>(width, height, 0);
   return field;
 }
-
-}  // namespace
 
 void classify_row(const DarbouxFrameField& frames, int row, double pixel_size_x_mm,
                   double pixel_size_y_mm, const ShapeIndexParameters& parameters,
@@ -88,7 +84,7 @@ void classify_row(const DarbouxFrameField& frames, int row, double pixel_size_x_
 
 ShapeIndexField classify_surface(const DarbouxFrameField& frames, double pixel_size_x_mm,
                                  double pixel_size_y_mm, const ShapeIndexParameters& parameters) {
-  ShapeIndexField field = make_field(frames.width(), frames.height());
+  ShapeIndexField field = make_shape_index_field(frames.width(), frames.height());
   for (int row = 0; row < frames.height(); ++row)
     classify_row(frames, row, pixel_size_x_mm, pixel_size_y_mm, parameters, field);
   return field;

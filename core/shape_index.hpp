@@ -33,6 +33,9 @@ struct ShapeIndexField {
   int height() const { return label.height(); }
 };
 
+// A field of the given size with every pixel invalid.
+ShapeIndexField make_shape_index_field(int width, int height);
+
 // Classifies one row of the frame field (the real-time loop calls it row by row).
 void classify_row(const DarbouxFrameField& frames, int row, double pixel_size_x_mm,
                   double pixel_size_y_mm, const ShapeIndexParameters& parameters,

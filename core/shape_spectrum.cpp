@@ -20,6 +20,11 @@ void ShapeSpectrumAccumulator::add(SurfaceLabel label, float shape_index, float 
   }
 }
 
+void ShapeSpectrumAccumulator::clear() {
+  std::fill(area_per_bin_mm2_.begin(), area_per_bin_mm2_.end(), 0.0);
+  planar_area_mm2_ = 0;
+}
+
 void ShapeSpectrumAccumulator::add_row(const ShapeIndexField& field, int row) {
   for (int column = 0; column < field.width(); ++column) {
     const std::size_t i = field.label.index(column, row);

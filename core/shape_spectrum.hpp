@@ -27,6 +27,7 @@ class ShapeSpectrumAccumulator {
   explicit ShapeSpectrumAccumulator(const SpectrumParameters& parameters);
   void add(SurfaceLabel label, float shape_index, float area_mm2);
   void add_row(const ShapeIndexField& field, int row);
+  void clear();
   ShapeSpectrum finish() const;
 
  private:
