@@ -1,0 +1,64 @@
+#pragma once
+// Tracks parts on the belt across conditioned rows: connected components of data pixels,
+// row by row. Each row's runs of data link to the open parts whose previous-row runs they
+// overlap (8-connectivity plus a small column tolerance); runs touching no open part start a
+// part; a run touching two parts merges them (the later into the earlier, reported); a part
+// that no run of a row touches is complete. Several non-touching parts may be under the
+// scanner at once. All storage is sized at construction: adding a row never allocates.
+#include <cstdint>
+#include <vector>
+
+namespace cosmos {
+
+struct PartTrackerParameters {
+  int max_open_parts = 8;      // more at once: the extra runs are dropped and counted
+  int max_runs_per_row = 64;   // more runs in a row: the extra are dropped and counted
+  int link_gap_columns = 1;    // runs this many columns apart still touch (speckle gaps)
+  std::int64_t min_pixels = 50;  // smaller completed components are noise
+};
+
+struct TrackedPart {
+  std::int64_t id = -1;        // increasing, never reused
+  std::int64_t first_row = 0;
+  std::int64_t last_row = 0;
+  int column_min = 0;
+  int column_max = 0;
+  std::int64_t pixels = 0;
+  std::int64_t merged_into = -1;  // completed by merging into this part
+  bool noise = false;             // fewer than min_pixels
+};
+
+class PartTracker {
+ public:
+  PartTracker(const PartTrackerParameters& parameters, int width);
+
+  // Labels the row's data pixels (non-NaN) with their part id; returns the parts completed
+  // by this row (valid until the next call).
+  const std::vector<TrackedPart>& add_row(const float* z_mm, std::int64_t row_index);
+
+  const std::vector<std::int64_t>& row_labels() const { return labels_; }  // -1: background
+  const std::vector<TrackedPart>& open_parts() const { return open_; }
+  std::int64_t dropped_runs() const { return dropped_runs_; }
+
+ private:
+  struct Run {
+    int begin;  // first column
+    int end;    // one past the last column
+    std::int64_t part;
+  };
+  int open_index(std::int64_t part) const;
+  std::int64_t resolve(std::int64_t part) const;
+  void merge(std::int64_t keep, std::int64_t absorbed);
+
+  PartTrackerParameters parameters_;
+  int width_;
+  std::int64_t next_id_ = 0;
+  std::vector<Run> previous_runs_, runs_;
+  std::vector<TrackedPart> open_, completed_;
+  std::vector<std::int64_t> labels_;
+  std::vector<std::pair<std::int64_t, std::int64_t>> merges_;  // absorbed -> kept, this row
+  std::vector<std::uint8_t> touched_;
+  std::int64_t dropped_runs_ = 0;
+};
+
+}  // namespace cosmos
