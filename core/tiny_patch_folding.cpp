@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace cosmos {
 
@@ -37,46 +38,78 @@ std::vector<bool> fold_tiny_patches(const ShapeIndexField& field, const std::vec
   std::stable_sort(tiny.begin(), tiny.end(), [&](int a, int b) { return regions.area_mm2(a) < regions.area_mm2(b); });
   auto mean = [&](int root) { return shape_area[root] / std::max(1e-12, static_cast<double>(regions.area_mm2(root))); };
 
-  auto fold_pass = [&](bool into_significant_only) {
-    bool changed = false;
-    for (int patch : tiny) {
-      const int root = regions.find(patch);
-      if (root != patch || regions.area_mm2(root) >= min_area_mm2) continue;  // handled via its root
-      int best = -1;
-      double best_difference = 0;
-      for (int member = root; member >= 0; member = next_member[member]) {
-        for (int k = offset[member]; k < offset[member + 1]; ++k) {
-          const int i = pixel_order[k];
-          const int column = i % width, row = i / width;
-          for (int direction = 0; direction < 8; ++direction) {
-            if (!((field.same_side[i] >> direction) & 1u)) continue;
-            const std::size_t j = field.label.index(column + kNeighborOffsets[direction].column,
-                                                    row + kNeighborOffsets[direction].row);
-            if (start_root[j] < 0) continue;
-            const int other = regions.find(start_root[j]);
-            if (other == root || (into_significant_only && regions.area_mm2(other) < min_area_mm2)) continue;
-            const double difference = std::abs(mean(other) - mean(root));
-            if (best < 0 || difference < best_difference || (difference == best_difference && other < best)) {
-              best = other;
-              best_difference = difference;
-            }
+  // Scans the pixels of group `root` for its most similar neighbour (significant ones only,
+  // if asked) and, optionally, collects its tiny neighbours.
+  std::vector<int> tiny_neighbors;
+  auto best_neighbor = [&](int root, bool significant_only, bool collect) {
+    int best = -1;
+    double best_difference = 0;
+    if (collect) tiny_neighbors.clear();
+    for (int member = root; member >= 0; member = next_member[member]) {
+      for (int k = offset[member]; k < offset[member + 1]; ++k) {
+        const int i = pixel_order[k];
+        const int column = i % width, row = i / width;
+        for (int direction = 0; direction < 8; ++direction) {
+          if (!((field.same_side[i] >> direction) & 1u)) continue;
+          const std::size_t j = field.label.index(column + kNeighborOffsets[direction].column,
+                                                  row + kNeighborOffsets[direction].row);
+          if (start_root[j] < 0) continue;
+          const int other = regions.find(start_root[j]);
+          if (other == root) continue;
+          const bool significant = regions.area_mm2(other) >= min_area_mm2;
+          if (collect && !significant) tiny_neighbors.push_back(other);
+          if (significant_only && !significant) continue;
+          const double difference = std::abs(mean(other) - mean(root));
+          if (best < 0 || difference < best_difference || (difference == best_difference && other < best)) {
+            best = other;
+            best_difference = difference;
           }
         }
       }
+    }
+    return best;
+  };
+  auto fold = [&](int root, int into) {
+    const double merged_shape_area = shape_area[root] + shape_area[into];
+    regions.unite(root, into);
+    const int merged = regions.find(root), absorbed = merged == root ? into : root;
+    shape_area[merged] = merged_shape_area;
+    next_member[last_member[merged]] = absorbed;
+    last_member[merged] = last_member[absorbed];
+  };
+  // Into significant neighbours: smallest first, then, as folding makes a significant patch
+  // the neighbour of more tiny ones, those (a worklist, so each is rescanned only when a
+  // neighbour of it has folded).
+  std::vector<int> worklist(tiny.begin(), tiny.end());
+  std::vector<std::uint8_t> queued(n, 0);
+  for (int patch : tiny) queued[patch] = 1;
+  for (std::size_t next = 0; next < worklist.size(); ++next) {
+    const int patch = worklist[next];
+    queued[patch] = 0;
+    const int root = regions.find(patch);
+    if (root != patch || regions.area_mm2(root) >= min_area_mm2) continue;
+    const int best = best_neighbor(root, true, true);
+    if (best < 0) continue;
+    fold(root, best);
+    for (int neighbor : tiny_neighbors) {
+      const int other = regions.find(neighbor);
+      if (!queued[other] && regions.area_mm2(other) < min_area_mm2) {
+        queued[other] = 1;
+        worklist.push_back(other);
+      }
+    }
+  }
+  // Then tiny clusters among themselves (islands away from any significant patch).
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (int patch : tiny) {
+      const int root = regions.find(patch);
+      if (root != patch || regions.area_mm2(root) >= min_area_mm2) continue;
+      const int best = best_neighbor(root, false, false);
       if (best < 0) continue;
-      const double merged_shape_area = shape_area[root] + shape_area[best];
-      regions.unite(root, best);
-      const int merged = regions.find(root), absorbed = merged == root ? best : root;
-      shape_area[merged] = merged_shape_area;
-      next_member[last_member[merged]] = absorbed;
-      last_member[merged] = last_member[absorbed];
+      fold(root, best);
       changed = true;
     }
-    return changed;
-  };
-  while (fold_pass(true)) {
-  }
-  while (fold_pass(false)) {
   }
   std::vector<bool> dropped(n, false);
   for (int patch : tiny) {
