@@ -9,7 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libassimp-dev libembree-dev libqhull-dev
   libgpiod-dev
-  liblcm-dev liblcm-bin libglib2.0-dev
+  liblcm-dev liblcm-bin libglib2.0-dev iproute2
   libflatbuffers-dev flatbuffers-compiler
 )
 

@@ -1,0 +1,14 @@
+#pragma once
+// The LCM channels the cell publishes on and the network it publishes to by default. The
+// robot side and every tool (cosmos listen, lcm-logger, lcm-spy) use these exact names.
+namespace cosmos {
+
+inline constexpr char kPoseChannel[] = "COSMOS_POSE";        // part_pose_t, one per part
+inline constexpr char kStatusChannel[] = "COSMOS_STATUS";    // cell_status_t, 1 Hz
+inline constexpr char kProfileChannel[] = "COSMOS_PROFILE";  // range_profile_t, record/replay
+
+// LCM's own default group and port; ttl=0 keeps the traffic on this host until a deployment
+// sets the TTL that reaches the robot's controller.
+inline constexpr char kDefaultLcmUrl[] = "udpm://239.255.76.67:7667?ttl=0";
+
+}  // namespace cosmos

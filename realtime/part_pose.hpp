@@ -1,0 +1,37 @@
+#pragma once
+// The recognizer's answer for one part, as the publisher sends it to the robot. Millimetres
+// like the rest of the pipeline; the LCM message (part_pose_t) carries metres, converted at
+// the publisher (lcm_message_conversion.hpp).
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <string>
+
+namespace cosmos {
+
+// Numbered like part_pose_t's constants (checked where they are converted).
+enum class PoseStatus : std::int8_t { kOk = 0, kRejected = 1, kError = 2 };
+
+// "OK", "REJECTED", "ERROR", or "UNKNOWN" for a value off the wire that is none of them.
+const char* to_string(PoseStatus status);
+
+struct PartPose {
+  std::int64_t utime_us = 0;       // publish time, microseconds since the Unix epoch
+  std::int64_t part_seq = 0;       // running number of parts seen by the cell
+  std::int64_t encoder_ticks = 0;  // encoder count at which T_cell_part holds (conveyor tracking)
+  std::string part_name;           // catalog name, empty when rejected
+  std::int32_t part_index = -1;    // catalog index, -1 when rejected
+  std::int32_t view_index = -1;    // matched model-base view, -1 when none
+  PoseStatus status = PoseStatus::kRejected;
+  std::string reason;  // why rejected or failed, empty when OK
+
+  // T_cell_part: x_cell = rotation_cell_part * x_part + translation_cell_part_mm.
+  Eigen::Quaterniond rotation_cell_part = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d translation_cell_part_mm = Eigen::Vector3d::Zero();
+
+  double score = 0.0;                // match score in [0, 1]
+  double registration_rms_mm = 0.0;  // RMS residual of the final registration
+  double latency_ms = 0.0;           // part's last profile exposed -> pose published
+};
+
+}  // namespace cosmos
