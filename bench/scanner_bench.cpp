@@ -1,0 +1,103 @@
+// Speed of the simulated laser-line scanner on a catalog part (bunny, 90 mm, resting pose):
+//   ProfileMode/W     profiles per second of W points (profile mode, the geometry path), over
+//                     the profiles of one scan of the part (2 mm margin each side)
+//   CameraMode        frames per second of 1280 × 256 ROI frames, drawing + stripe extraction +
+//                     triangulation + resampling included
+//   ModelViewScan     time per model view (scan of one view-sphere pose, profile mode)
+// One thread throughout. Needs the catalog meshes (scripts/fetch_catalog.sh).
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "sim/conveyor_scene.hpp"
+#include "sim/mesh.hpp"
+#include "sim/model_views.hpp"
+#include "sim/part_catalog.hpp"
+#include "sim/part_pose.hpp"
+#include "sim/simulated_scanner.hpp"
+
+namespace cosmos {
+namespace {
+
+constexpr const char* kPart = "bunny";
+
+// The bench part's mesh, or nullopt when the catalog cache is missing.
+const std::optional<TriangleMesh>& bench_mesh() {
+  static const std::optional<TriangleMesh> mesh = []() -> std::optional<TriangleMesh> {
+    try {
+      const PartCatalog catalog = read_part_catalog(find_part_catalog());
+      const PartEntry& part = catalog.at(kPart);
+      return load_mesh(part.mesh_path, part.size_mm);
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+  }();
+  return mesh;
+}
+
+std::unique_ptr<ConveyorScene> bench_scene(const TriangleMesh& mesh) {
+  auto scene = std::make_unique<ConveyorScene>();
+  const int mesh_index = scene->add_mesh(mesh);
+  scene->add_part(kPart, mesh_index, place_on_belt(mesh, resting_rotation(mesh, 1)));
+  scene->commit();
+  return scene;
+}
+
+void scan_profiles(benchmark::State& state, const ScannerParameters& parameters, ScanMode mode,
+                   const char* counter) {
+  if (!bench_mesh()) {
+    state.SkipWithError("catalog meshes missing: run scripts/fetch_catalog.sh");
+    return;
+  }
+  const auto scene = bench_scene(*bench_mesh());
+  SimulatedScanner scanner(*scene, parameters, mode);
+  Profile profile;
+  scanner.reserve(profile);
+  const ProfileRange range = profiles_covering(*scene, parameters, 2.0);
+  std::int64_t k = range.first;
+  double part_samples = 0.0;  // samples above the belt: the work is where the part is
+  for (auto _ : state) {
+    scanner.acquire(k, profile);
+    benchmark::DoNotOptimize(profile.z_mm.data());
+    for (const float z : profile.z_mm) part_samples += z > parameters.background_height_mm;
+    k = k == range.last ? range.first : k + 1;
+  }
+  state.counters[counter] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["profiles_per_scan"] = static_cast<double>(range.count());
+  state.counters["part_samples"] = part_samples / static_cast<double>(state.iterations());
+}
+
+void ProfileMode(benchmark::State& state) {
+  ScannerParameters parameters;
+  parameters.points_per_profile = static_cast<int>(state.range(0));
+  scan_profiles(state, parameters, ScanMode::kProfile, "profiles_per_s");
+}
+BENCHMARK(ProfileMode)->Arg(640)->Arg(1280)->Unit(benchmark::kMicrosecond);
+
+void CameraMode(benchmark::State& state) {
+  ScannerParameters parameters;
+  parameters.sensor_width_px = 1280;
+  parameters.roi_height_px = 256;
+  scan_profiles(state, parameters, ScanMode::kCamera, "frames_per_s");
+}
+BENCHMARK(CameraMode)->Unit(benchmark::kMicrosecond);
+
+void ModelViewScan(benchmark::State& state) {
+  if (!bench_mesh()) {
+    state.SkipWithError("catalog meshes missing: run scripts/fetch_catalog.sh");
+    return;
+  }
+  ModelViewRenderer renderer(*bench_mesh(), kPart, ScannerParameters{});
+  int index = 0;
+  for (auto _ : state) {
+    const ModelView view = renderer.scan_view(index);
+    benchmark::DoNotOptimize(view.image.z_mm.data());
+    index = (index + 37) % renderer.view_count();  // a spread of directions
+  }
+}
+BENCHMARK(ModelViewScan)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace cosmos

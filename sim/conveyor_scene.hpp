@@ -1,0 +1,82 @@
+#pragma once
+// The parts on the conveyor: meshes placed on the belt at known poses, and the belt motion.
+//
+// Parts are placed in the belt frame: the frame that rides with the belt and coincides with
+// the scanner frame at encoder tick 0. At tick e the belt has moved by
+// s = e · encoder_mm_per_tick along +y, so a point p_belt is at p_scanner = p_belt + (0, s, 0):
+// T_scanner_belt(s) is a pure translation. A part's T_belt_part is therefore T_scanner_part
+// at tick 0, exactly: the ground truth of a simulated scan.
+//
+// The scanner traces its rays in the belt frame (the laser sheet y_scanner = 0 is the plane
+// y_belt = −s), so the ray-tracing structure is built once and never moves.
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sim/height_bound_grid.hpp"
+#include "sim/mesh.hpp"
+#include "sim/scanner_model.hpp"
+
+namespace cosmos {
+
+class EmbreeScene;
+
+struct PlacedPart {
+  std::string name;
+  int mesh = 0;
+  Eigen::Isometry3d T_belt_part = Eigen::Isometry3d::Identity();
+  Eigen::AlignedBox3d bounds_mm;  // tight box of the placed vertices, belt frame
+  HeightBoundGrid height_bounds;  // coarse height bounds, to skip rays that cannot hit it
+};
+
+class ConveyorScene {
+ public:
+  // movable_parts: parts are placed as Embree instances, so move_part() is cheap (model
+  // views); otherwise their triangles are built into the scene at their pose, for rays a
+  // quarter faster (embree_scene.hpp).
+  explicit ConveyorScene(bool movable_parts = false);
+  ~ConveyorScene();
+  ConveyorScene(const ConveyorScene&) = delete;
+  ConveyorScene& operator=(const ConveyorScene&) = delete;
+
+  // Uploads a part mesh (its own frame, mm) once; several parts may share it.
+  int add_mesh(const TriangleMesh& mesh);
+  // Places a part. Parts must not touch: std::invalid_argument when its bounding box overlaps
+  // another part's in x and y (a conservative test: boxes, not surfaces).
+  int add_part(std::string name, int mesh, const Eigen::Isometry3d& T_belt_part);
+  // Moves a placed part (model views turn one part through many poses). No touching check.
+  // Cheap for movable parts; otherwise it rebuilds the part's ray-tracing structure.
+  void move_part(int part, const Eigen::Isometry3d& T_belt_part);
+  // Makes added or moved parts visible to the rays; required before scanning.
+  void commit();
+
+  const std::vector<PlacedPart>& parts() const { return parts_; }
+  Eigen::AlignedBox3d bounds_mm() const;  // all parts; empty box without parts
+  const EmbreeScene& embree() const { return *embree_; }
+
+ private:
+  std::unique_ptr<EmbreeScene> embree_;
+  bool movable_parts_ = false;
+  std::vector<TriangleMesh> meshes_;  // for the parts' height bounds
+  std::vector<PlacedPart> parts_;
+};
+
+// The belt's displacement at a tick count, as the transform from belt to scanner frame.
+Eigen::Isometry3d T_scanner_belt(const ScannerParameters& parameters, std::int64_t encoder_ticks);
+
+// The profiles (indices k; encoder tick k · ticks_per_profile) whose laser sheet sweeps the
+// parts' y extent extended by margin_mm on both sides, in exposure order (first < last).
+struct ProfileRange {
+  std::int64_t first = 0;
+  std::int64_t last = -1;
+  std::int64_t count() const { return last - first + 1; }
+};
+ProfileRange profiles_covering(const ConveyorScene& scene, const ScannerParameters& parameters,
+                               double margin_mm);
+
+// y of the laser sheet in the belt frame when profile k is exposed.
+double laser_y_belt_mm(const ScannerParameters& parameters, std::int64_t profile_index);
+
+}  // namespace cosmos

@@ -1,0 +1,274 @@
+#include "sim/laser_line_scanner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+#include "sim/embree_scene.hpp"
+
+namespace cosmos {
+namespace {
+
+constexpr int kPacket = 8;  // Embree's native packet width with AVX2
+constexpr float kNoData = std::numeric_limits<float>::quiet_NaN();
+// Occlusion rays start this far off the surface along its normal: hit points carry float
+// rounding of coordinates up to a few hundred mm (~1e-5 mm), and a ray starting inside its
+// own triangle's rounding would hit that triangle.
+constexpr double kSurfaceOffsetMm = 1e-3;
+// A top point this close to z = 0 is the belt: the probe stops just above it, so a part's
+// lowest face resting on the belt does not count as part surface.
+constexpr double kBeltToleranceMm = 1e-4;
+
+}  // namespace
+
+LaserLineScanner::LaserLineScanner(const ConveyorScene& scene, const ScannerParameters& parameters, int samples)
+    : scene_(scene),
+      parameters_(parameters),
+      geometry_(scanner_triangulation_geometry(parameters)),
+      samples_(samples) {
+  if (samples <= 0) throw std::invalid_argument("LaserLineScanner: samples must be > 0");
+  cos_max_incidence_ = std::cos(parameters.max_incidence_deg * std::numbers::pi / 180.0);
+  const int margin = parameters.roi_margin_rows();
+  min_roi_row_px_ = geometry_.roi_row_offset_px + margin;
+  max_roi_row_px_ = geometry_.roi_row_offset_px + geometry_.roi_height_px - 1 - margin;
+  // The belt's image and incidence are the same in every profile: computed once here, they
+  // spare most samples the camera model and a normalization.
+  belt_u_px_.resize(static_cast<std::size_t>(samples));
+  belt_v_px_.resize(static_cast<std::size_t>(samples));
+  belt_projects_.resize(static_cast<std::size_t>(samples));
+  belt_cos_incidence_.resize(static_cast<std::size_t>(samples));
+  for (int i = 0; i < samples; ++i) {
+    const auto s = static_cast<std::size_t>(i);
+    Eigen::Vector2d uv(0.0, 0.0);
+    const double x_mm = parameters.first_sample_x_mm(samples) + i * parameters.sample_spacing_mm(samples);
+    belt_projects_[s] = geometry_.project_to_image(Eigen::Vector3d(x_mm, 0.0, 0.0), uv) ? 1 : 0;
+    belt_cos_incidence_[s] = parameters.laser_model == LaserModel::kFan
+                                 ? parameters.laser_height_mm / std::hypot(x_mm, parameters.laser_height_mm)
+                                 : 1.0;
+    belt_u_px_[s] = static_cast<float>(uv.x());
+    belt_v_px_[s] = static_cast<float>(uv.y());
+  }
+  normal_x_.resize(static_cast<std::size_t>(samples));
+  normal_y_.resize(static_cast<std::size_t>(samples));
+  normal_z_.resize(static_cast<std::size_t>(samples));
+  occlusion_candidates_.reserve(static_cast<std::size_t>(samples));
+  belt_sights_.reserve(scene.parts().size());
+}
+
+void LaserLineScanner::reserve(LaserLine& line) const {
+  const auto n = static_cast<std::size_t>(samples_);
+  line.x0_mm = parameters_.first_sample_x_mm(samples_);
+  line.dx_mm = parameters_.sample_spacing_mm(samples_);
+  line.z_mm.resize(n);
+  line.intensity.resize(n);
+  line.u_px.resize(n);
+  line.v_px.resize(n);
+  line.state.resize(n);
+}
+
+void LaserLineScanner::trace(double laser_y_belt_mm, LaserLine& line) {
+  reserve(line);
+  std::fill(line.z_mm.begin(), line.z_mm.end(), 0.0f);
+  std::fill(normal_x_.begin(), normal_x_.end(), 0.0f);
+  std::fill(normal_y_.begin(), normal_y_.end(), 0.0f);
+  std::fill(normal_z_.begin(), normal_z_.end(), 1.0f);
+  // Probe only where a part can be: the x span the parts' outlines cover at the sheet.
+  double x_low = std::numeric_limits<double>::infinity();
+  double x_high = -x_low;
+  for (const PlacedPart& part : scene_.parts()) {
+    double part_low = 0.0;
+    double part_high = 0.0;
+    if (!part.height_bounds.x_extent(laser_y_belt_mm, part_low, part_high)) continue;
+    x_low = std::min(x_low, part_low);
+    x_high = std::max(x_high, part_high);
+  }
+  if (x_low <= x_high) {
+    const int first = std::max(0, static_cast<int>(std::floor((x_low - line.x0_mm) / line.dx_mm)));
+    const int end = std::min(samples_, static_cast<int>(std::ceil((x_high - line.x0_mm) / line.dx_mm)) + 1);
+    if (first < end) probe_top_surface(laser_y_belt_mm, first, end, line);
+  }
+  sweep_laser_horizon(line);
+  classify(laser_y_belt_mm, line);
+  trace_camera_occlusion(laser_y_belt_mm, line);
+}
+
+void LaserLineScanner::probe_top_surface(double y_mm, int first, int end, LaserLine& line) {
+  const double top_z_mm = scene_.bounds_mm().max().z() + 1.0;
+  const EmbreeScene& embree = scene_.embree();
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  for (int base = first; base < end; base += kPacket) {
+    alignas(32) int valid[kPacket];
+    RTCRayHit8 packet;
+    for (int k = 0; k < kPacket; ++k) {
+      const int i = base + k;
+      valid[k] = i < end ? -1 : 0;
+      packet.ray.org_x[k] = static_cast<float>(line.x_mm(i));
+      packet.ray.org_y[k] = static_cast<float>(y_mm);
+      packet.ray.org_z[k] = static_cast<float>(top_z_mm);
+      packet.ray.dir_x[k] = 0.0f;
+      packet.ray.dir_y[k] = 0.0f;
+      packet.ray.dir_z[k] = -1.0f;
+      packet.ray.tnear[k] = 0.0f;
+      packet.ray.tfar[k] = static_cast<float>(top_z_mm - kBeltToleranceMm);
+      packet.ray.time[k] = 0.0f;
+      packet.ray.mask[k] = 0xFFFFFFFFu;
+      packet.ray.id[k] = static_cast<unsigned>(k);
+      packet.ray.flags[k] = 0;
+      packet.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+      packet.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect8(valid, embree.handle(), &context, &packet);
+    for (int k = 0; k < kPacket && base + k < end; ++k) {
+      if (packet.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) continue;
+      const auto i = static_cast<std::size_t>(base + k);
+      const float z = static_cast<float>(top_z_mm - static_cast<double>(packet.ray.tfar[k]));
+      line.z_mm[i] = z;
+      Eigen::Vector3d normal = embree.world_normal(EmbreeScene::hit_instance(packet.hit.geomID[k], packet.hit.instID[0][k]),
+                                                   packet.hit.Ng_x[k],
+                                                   packet.hit.Ng_y[k], packet.hit.Ng_z[k]);
+      // The probe comes from above, so the surface it met faces up, whatever the winding.
+      if (normal.z() < 0.0) normal = -normal;
+      normal_x_[i] = static_cast<float>(normal.x());
+      normal_y_[i] = static_cast<float>(normal.y());
+      normal_z_[i] = static_cast<float>(normal.z());
+    }
+  }
+}
+
+void LaserLineScanner::sweep_laser_horizon(LaserLine& line) const {
+  std::fill(line.state.begin(), line.state.end(), LaserSampleState::kMeasured);
+  if (parameters_.laser_model == LaserModel::kParallel) return;
+  const double source_height_mm = parameters_.laser_height_mm;
+  // tan of the fan ray's angle from the vertical; it only grows outward while the ray clears
+  // every top point nearer the source.
+  const auto visit = [&](int i, double distance_from_source_mm, double& horizon) {
+    const double below_source_mm = source_height_mm - line.z_mm[static_cast<std::size_t>(i)];
+    if (!(below_source_mm > 0.0)) {
+      line.state[static_cast<std::size_t>(i)] = LaserSampleState::kOutOfRange;
+      return;
+    }
+    const double tangent = distance_from_source_mm / below_source_mm;
+    if (tangent < horizon) {
+      line.state[static_cast<std::size_t>(i)] = LaserSampleState::kLaserShadow;
+    } else {
+      horizon = tangent;
+    }
+  };
+  // The source hangs over the belt centre, x = 0.
+  const int first_right = std::clamp(static_cast<int>(std::ceil(-line.x0_mm / line.dx_mm)), 0, samples_);
+  double horizon = -std::numeric_limits<double>::infinity();
+  for (int i = first_right; i < samples_; ++i) visit(i, line.x_mm(i), horizon);
+  horizon = -std::numeric_limits<double>::infinity();
+  for (int i = first_right - 1; i >= 0; --i) visit(i, -line.x_mm(i), horizon);
+}
+
+void LaserLineScanner::classify(double y_mm, LaserLine& line) {
+  occlusion_candidates_.clear();
+  const Eigen::Vector3d source_mm(0.0, y_mm, parameters_.laser_height_mm);
+  // The camera rides with the scanner: in the belt frame it is as far upstream of the sheet
+  // as in the scanner frame (the sheet is y_scanner = 0, here y_belt = y_mm).
+  const Eigen::Vector3d camera_mm = geometry_.t_scanner_camera_mm + Eigen::Vector3d(0.0, y_mm, 0.0);
+  const double sensor_last_column = geometry_.camera.width_px - 1;
+  belt_sights_.clear();
+  for (const PlacedPart& part : scene_.parts()) belt_sights_.push_back(part.height_bounds.belt_sight(y_mm, camera_mm));
+  for (int i = 0; i < samples_; ++i) {
+    const auto s = static_cast<std::size_t>(i);
+    line.intensity[s] = 0.0f;
+    line.u_px[s] = kNoData;
+    line.v_px[s] = kNoData;
+    if (line.state[s] != LaserSampleState::kMeasured) continue;
+    const Eigen::Vector3d point_mm(line.x_mm(i), y_mm, line.z_mm[s]);
+    const Eigen::Vector3d normal(normal_x_[s], normal_y_[s], normal_z_[s]);
+    const bool on_belt = line.z_mm[s] == 0.0f;
+    double cos_incidence = belt_cos_incidence_[s];
+    if (!on_belt) {
+      const Eigen::Vector3d laser_direction = parameters_.laser_model == LaserModel::kFan
+                                                  ? Eigen::Vector3d((point_mm - source_mm).normalized())
+                                                  : Eigen::Vector3d(0.0, 0.0, -1.0);
+      cos_incidence = -normal.dot(laser_direction);
+    }
+    if (cos_incidence < cos_max_incidence_) {
+      line.state[s] = LaserSampleState::kGrazing;
+      continue;
+    }
+    line.intensity[s] = static_cast<float>(parameters_.reflectivity * cos_incidence);
+    Eigen::Vector2d uv(belt_u_px_[s], belt_v_px_[s]);
+    const bool projects = on_belt ? belt_projects_[s] != 0
+                                  : geometry_.project_to_image(Eigen::Vector3d(point_mm.x(), 0.0, point_mm.z()), uv);
+    if (!projects) {
+      line.state[s] = LaserSampleState::kOutOfRange;
+      continue;
+    }
+    line.u_px[s] = static_cast<float>(uv.x());
+    line.v_px[s] = static_cast<float>(uv.y());
+    if (!(uv.x() >= 0.0 && uv.x() <= sensor_last_column && uv.y() >= min_roi_row_px_ && uv.y() <= max_roi_row_px_)) {
+      line.state[s] = LaserSampleState::kOutOfRange;
+      continue;
+    }
+    if (normal.dot(camera_mm - point_mm) <= 0.0) {
+      line.state[s] = LaserSampleState::kCameraOccluded;
+      continue;
+    }
+    const auto& parts = scene_.parts();
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+      if (on_belt && !parts[p].height_bounds.may_block(belt_sights_[p], point_mm.x())) continue;
+      if (!parts[p].height_bounds.clears(point_mm, camera_mm)) {
+        occlusion_candidates_.push_back(i);
+        break;
+      }
+    }
+  }
+}
+
+void LaserLineScanner::trace_camera_occlusion(double y_mm, LaserLine& line) {
+  const Eigen::Vector3d camera_mm = geometry_.t_scanner_camera_mm + Eigen::Vector3d(0.0, y_mm, 0.0);
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  const int count = static_cast<int>(occlusion_candidates_.size());
+  for (int base = 0; base < count; base += kPacket) {
+    alignas(32) int valid[kPacket];
+    RTCRay8 packet;
+    for (int k = 0; k < kPacket; ++k) {
+      const bool used = base + k < count;
+      valid[k] = used ? -1 : 0;
+      const auto s = static_cast<std::size_t>(used ? occlusion_candidates_[static_cast<std::size_t>(base + k)] : 0);
+      const Eigen::Vector3d normal(normal_x_[s], normal_y_[s], normal_z_[s]);
+      const Eigen::Vector3d origin =
+          Eigen::Vector3d(line.x_mm(static_cast<int>(s)), y_mm, line.z_mm[s]) + kSurfaceOffsetMm * normal;
+      const Eigen::Vector3d direction = camera_mm - origin;
+      packet.org_x[k] = static_cast<float>(origin.x());
+      packet.org_y[k] = static_cast<float>(origin.y());
+      packet.org_z[k] = static_cast<float>(origin.z());
+      packet.dir_x[k] = static_cast<float>(direction.x());
+      packet.dir_y[k] = static_cast<float>(direction.y());
+      packet.dir_z[k] = static_cast<float>(direction.z());
+      packet.tnear[k] = 0.0f;
+      packet.tfar[k] = 1.0f;
+      packet.time[k] = 0.0f;
+      packet.mask[k] = 0xFFFFFFFFu;
+      packet.id[k] = static_cast<unsigned>(k);
+      packet.flags[k] = 0;
+    }
+    rtcOccluded8(valid, scene_.embree().handle(), &context, &packet);
+    for (int k = 0; k < kPacket && base + k < count; ++k) {
+      // Embree marks an occluded ray by setting its tfar to -inf.
+      if (packet.tfar[k] < 0.0f) {
+        line.state[static_cast<std::size_t>(occlusion_candidates_[static_cast<std::size_t>(base + k)])] =
+            LaserSampleState::kCameraOccluded;
+      }
+    }
+  }
+  const auto min_intensity = static_cast<float>(parameters_.min_reflected_intensity);
+  for (std::size_t s = 0; s < line.state.size(); ++s) {
+    if (line.state[s] == LaserSampleState::kMeasured && line.intensity[s] < min_intensity) {
+      line.state[s] = LaserSampleState::kDark;
+    }
+  }
+}
+
+}  // namespace cosmos

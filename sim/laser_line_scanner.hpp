@@ -1,0 +1,104 @@
+#pragma once
+// The ray-cast laser line: for one position of the belt, the surface points the laser sheet
+// lights, sampled at uniform x across the field of view, and for each whether the scanner
+// can measure it. Both output modes start here: profile mode adds z noise to the measured
+// samples, camera mode draws the lit points into a sensor frame.
+//
+// How a sample is found (Embree rays in the belt frame, see conveyor_scene.hpp):
+//   1. A probe ray straight down the sheet at the sample's x finds the top surface point
+//      (the belt, z = 0, when it meets no part). Sampling at the grid x itself gives every
+//      profile sample its exact height: there is no interpolation error to confuse with
+//      sensor noise. Where a fan ray would light a lower surface under an overhang at the
+//      same x, the probe reports the top surface; the resampling of a real sensor keeps the
+//      higher surface there too (firmware_bridge/profile_resampling.hpp).
+//   2. Laser shadow (fan model): a top point is lit iff no top point between it and the
+//      source's x rises above the fan ray to it — the horizon of the source, swept outward
+//      from the source in the sheet. Any occluder of a fan ray lies in the sheet and under a
+//      top point, so this needs no extra ray; it resolves shadow edges to one sample.
+//   3. Incidence (laser ray vs surface normal) beyond max_incidence_deg: dropout.
+//   4. Camera occlusion: a surface facing away from the camera, or an Embree occlusion ray
+//      from the point to the camera centre that meets a part, hides the point. Rays whose
+//      segment clears every part's coarse height bounds (height_bound_grid.hpp) are not
+//      traced.
+//   5. Measuring range: the camera's projection of the point must fall on the sensor
+//      columns and inside the ROI rows, clear of the stripe half-width at the edges.
+//   6. Reflected intensity reflectivity · cos(incidence) below the minimum: dark.
+// Rays are traced in packets of 8 in sample order, one thread: the result never depends on
+// timing. After construction nothing allocates.
+#include <cstdint>
+#include <vector>
+
+#include "firmware_bridge/triangulation_geometry.hpp"
+#include "sim/conveyor_scene.hpp"
+#include "sim/scanner_model.hpp"
+
+namespace cosmos {
+
+enum class LaserSampleState : std::uint8_t {
+  kMeasured,        // lit, seen by the camera, in range, bright enough
+  kDark,            // as kMeasured but reflects less than min_reflected_intensity
+  kLaserShadow,     // the laser fan does not reach it
+  kGrazing,         // incidence beyond max_incidence_deg
+  kCameraOccluded,  // the camera does not see it
+  kOutOfRange,      // its image falls outside the sensor's ROI
+};
+
+// One laser line, sample i at x = x0_mm + i · dx_mm. Owned by the caller, reused.
+struct LaserLine {
+  double x0_mm = 0.0;
+  double dx_mm = 1.0;
+  std::vector<float> z_mm;       // top surface height (0 on the belt)
+  std::vector<float> intensity;  // reflectivity · cos(incidence); 0 where unlit
+  std::vector<float> u_px;       // camera image of the point, full-sensor pixels
+  std::vector<float> v_px;
+  std::vector<LaserSampleState> state;
+
+  int width() const { return static_cast<int>(z_mm.size()); }
+  double x_mm(int i) const { return x0_mm + i * dx_mm; }
+};
+
+class LaserLineScanner {
+ public:
+  // `samples` points across the field of view. The scene must outlive the scanner and be
+  // committed before tracing.
+  LaserLineScanner(const ConveyorScene& scene, const ScannerParameters& parameters, int samples);
+
+  // Sizes `line` for this scanner once, so that trace() never allocates.
+  void reserve(LaserLine& line) const;
+  // The laser line when the sheet lies at y = laser_y_belt_mm in the belt frame
+  // (laser_y_belt_mm(parameters, k) for profile k).
+  void trace(double laser_y_belt_mm, LaserLine& line);
+
+  int samples() const { return samples_; }
+  const ScannerParameters& parameters() const { return parameters_; }
+  const TriangulationGeometry& geometry() const { return geometry_; }
+
+ private:
+  void probe_top_surface(double y_mm, int first, int end, LaserLine& line);
+  void sweep_laser_horizon(LaserLine& line) const;
+  void classify(double y_mm, LaserLine& line);
+  void trace_camera_occlusion(double y_mm, LaserLine& line);
+
+  const ConveyorScene& scene_;
+  ScannerParameters parameters_;
+  TriangulationGeometry geometry_;
+  int samples_ = 0;
+  double cos_max_incidence_ = 0.0;
+  double min_roi_row_px_ = 0.0;
+  double max_roi_row_px_ = 0.0;
+  // Camera image of each sample's belt point (the sheet at z = 0), whether it exists, and the
+  // laser's incidence there.
+  std::vector<float> belt_u_px_;
+  std::vector<float> belt_v_px_;
+  std::vector<std::uint8_t> belt_projects_;
+  std::vector<double> belt_cos_incidence_;
+  // Scratch, sized at construction: unit normals (belt frame) of the top points, and the
+  // samples whose camera ray must be traced.
+  std::vector<float> normal_x_;
+  std::vector<float> normal_y_;
+  std::vector<float> normal_z_;
+  std::vector<int> occlusion_candidates_;
+  std::vector<HeightBoundGrid::BeltSight> belt_sights_;  // per part, for the current line
+};
+
+}  // namespace cosmos
