@@ -11,36 +11,12 @@
 #include <unistd.h>
 
 #include "core/input_error.hpp"
+#include "sim/yaml_input_errors.hpp"
 
 namespace cosmos {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Reports `file:LINE: key: reason`; yaml-cpp marks are 0-based and -1 when unknown.
-class CatalogErrors {
- public:
-  explicit CatalogErrors(fs::path file) : file_(std::move(file)) {}
-
-  [[noreturn]] void fail(const YAML::Node& at, const std::string& key, const std::string& reason) const {
-    fail_line(at.Mark().line, key, reason);
-  }
-  [[noreturn]] void fail_line(int line0, const std::string& key, const std::string& reason) const {
-    std::string where = file_.string();
-    if (line0 >= 0) where += ":" + std::to_string(line0 + 1);
-    throw InputError(where + ": " + key + ": " + reason);
-  }
-
- private:
-  fs::path file_;
-};
-
-std::string describe(const YAML::Node& node) {
-  if (node.IsNull()) return "nothing";
-  if (node.IsSequence()) return "a list";
-  if (node.IsMap()) return "a map";
-  return "'" + node.Scalar() + "'";
-}
 
 fs::path home_dir() {
   if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0') return home;
@@ -73,15 +49,15 @@ fs::path resolve_mesh(const std::string& text, const fs::path& yaml_dir, const f
   return mesh_dir / path;
 }
 
-std::string scalar_string(const CatalogErrors& errors, const YAML::Node& value, const std::string& key) {
+std::string scalar_string(const YamlInputErrors& errors, const YAML::Node& value, const std::string& key) {
   if (!value.IsScalar() || value.Scalar().empty()) {
-    errors.fail(value, key, "expected a non-empty text, got " + describe(value));
+    errors.fail(value, key, "expected a non-empty text, got " + describe_yaml_node(value));
   }
   return value.Scalar();
 }
 
 // Names become file names and CLI arguments, so they are kept to a portable set.
-std::string part_name(const CatalogErrors& errors, const YAML::Node& value) {
+std::string part_name(const YamlInputErrors& errors, const YAML::Node& value) {
   const std::string name = scalar_string(errors, value, "name");
   for (const char c : name) {
     const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
@@ -91,10 +67,10 @@ std::string part_name(const CatalogErrors& errors, const YAML::Node& value) {
   return name;
 }
 
-double size_mm(const CatalogErrors& errors, const YAML::Node& value) {
+double size_mm(const YamlInputErrors& errors, const YAML::Node& value) {
   double size = 0.0;
   if (!value.IsScalar() || !YAML::convert<double>::decode(value, size)) {
-    errors.fail(value, "size_mm", "expected a number (mm), got " + describe(value));
+    errors.fail(value, "size_mm", "expected a number (mm), got " + describe_yaml_node(value));
   }
   if (!std::isfinite(size) || size <= 0.0) {
     std::ostringstream reason;
@@ -104,31 +80,31 @@ double size_mm(const CatalogErrors& errors, const YAML::Node& value) {
   return size;
 }
 
-bool symmetric_flag(const CatalogErrors& errors, const YAML::Node& value) {
+bool symmetric_flag(const YamlInputErrors& errors, const YAML::Node& value) {
   bool flag = false;
   if (!value.IsScalar() || !YAML::convert<bool>::decode(value, flag)) {
-    errors.fail(value, "symmetric", "expected true or false, got " + describe(value));
+    errors.fail(value, "symmetric", "expected true or false, got " + describe_yaml_node(value));
   }
   return flag;
 }
 
 // Map entries by key, refusing keys outside `allowed` and keys given twice (yaml-cpp would
 // silently keep the first).
-std::map<std::string, YAML::Node> keyed_entries(const CatalogErrors& errors, const YAML::Node& map,
+std::map<std::string, YAML::Node> keyed_entries(const YamlInputErrors& errors, const YAML::Node& map,
                                                 const std::set<std::string>& allowed,
                                                 const std::string& allowed_text) {
   std::map<std::string, YAML::Node> entries;
   for (const auto& item : map) {
-    const std::string key = item.first.IsScalar() ? item.first.Scalar() : describe(item.first);
+    const std::string key = item.first.IsScalar() ? item.first.Scalar() : describe_yaml_node(item.first);
     if (allowed.count(key) == 0) errors.fail(item.first, key, "unknown key (expected " + allowed_text + ")");
     if (!entries.emplace(key, item.second).second) errors.fail(item.first, key, "key given twice");
   }
   return entries;
 }
 
-PartEntry read_part(const CatalogErrors& errors, const YAML::Node& node, const fs::path& yaml_dir,
+PartEntry read_part(const YamlInputErrors& errors, const YAML::Node& node, const fs::path& yaml_dir,
                     const fs::path& mesh_dir) {
-  if (!node.IsMap()) errors.fail(node, "parts", "each part must be a map, got " + describe(node));
+  if (!node.IsMap()) errors.fail(node, "parts", "each part must be a map, got " + describe_yaml_node(node));
   const auto entries =
       keyed_entries(errors, node, {"name", "mesh", "size_mm", "symmetric"}, "name, mesh, size_mm, symmetric");
   for (const char* required : {"name", "mesh", "size_mm"}) {
@@ -145,7 +121,7 @@ PartEntry read_part(const CatalogErrors& errors, const YAML::Node& node, const f
   return part;
 }
 
-YAML::Node load_yaml(const fs::path& path, const CatalogErrors& errors) {
+YAML::Node load_yaml(const fs::path& path, const YamlInputErrors& errors) {
   std::error_code error;
   if (!fs::is_regular_file(path, error)) throw InputError(path.string() + ": part catalog not found");
   try {
@@ -174,7 +150,7 @@ const PartEntry& PartCatalog::at(std::string_view name) const {
 }
 
 PartCatalog read_part_catalog(const fs::path& yaml_path, const fs::path& mesh_cache_dir) {
-  const CatalogErrors errors(yaml_path);
+  const YamlInputErrors errors(yaml_path);
   const YAML::Node root = load_yaml(yaml_path, errors);
   if (!root.IsMap()) errors.fail_line(root.Mark().line, "parts", "the catalog must be a map with a 'parts' list");
   const auto entries = keyed_entries(errors, root, {"mesh_dir", "parts"}, "mesh_dir, parts");
@@ -188,7 +164,7 @@ PartCatalog read_part_catalog(const fs::path& yaml_path, const fs::path& mesh_ca
   const auto parts = entries.find("parts");
   if (parts == entries.end()) errors.fail_line(root.Mark().line, "parts", "missing key");
   if (!parts->second.IsSequence() || parts->second.size() == 0) {
-    errors.fail(parts->second, "parts", "expected a non-empty list of parts, got " + describe(parts->second));
+    errors.fail(parts->second, "parts", "expected a non-empty list of parts, got " + describe_yaml_node(parts->second));
   }
 
   PartCatalog catalog;

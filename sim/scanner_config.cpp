@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/input_error.hpp"
+#include "sim/yaml_input_errors.hpp"
 
 namespace cosmos {
 namespace {
@@ -96,29 +97,6 @@ std::string range_problem(const NumericKey& key, double value, const ScannerPara
   return {};
 }
 
-class ConfigErrors {
- public:
-  explicit ConfigErrors(fs::path file) : file_(std::move(file)) {}
-  [[noreturn]] void fail(const YAML::Node& at, const std::string& key, const std::string& reason) const {
-    fail_line(at.IsDefined() ? at.Mark().line : -1, key, reason);
-  }
-  [[noreturn]] void fail_line(int line0, const std::string& key, const std::string& reason) const {
-    std::string where = file_.string();
-    if (line0 >= 0) where += ":" + std::to_string(line0 + 1);  // yaml-cpp lines are 0-based
-    throw InputError(where + ": " + key + ": " + reason);
-  }
-
- private:
-  fs::path file_;
-};
-
-std::string describe(const YAML::Node& node) {
-  if (node.IsNull()) return "nothing";
-  if (node.IsSequence()) return "a list";
-  if (node.IsMap()) return "a map";
-  return "'" + node.Scalar() + "'";
-}
-
 const NumericKey* find_key(const std::string& name) {
   for (const NumericKey& key : numeric_keys()) {
     if (name == key.name) return &key;
@@ -126,7 +104,7 @@ const NumericKey* find_key(const std::string& name) {
   return nullptr;
 }
 
-void read_value(const ConfigErrors& errors, const std::string& name, const YAML::Node& value,
+void read_value(const YamlInputErrors& errors, const std::string& name, const YAML::Node& value,
                 ScannerParameters& parameters, std::vector<std::pair<const NumericKey*, YAML::Node>>& numbers) {
   const std::string key = "scanner." + name;
   if (name == "laser_model") {
@@ -136,14 +114,14 @@ void read_value(const ConfigErrors& errors, const std::string& name, const YAML:
     } else if (text == "parallel") {
       parameters.laser_model = LaserModel::kParallel;
     } else {
-      errors.fail(value, key, "expected fan or parallel, got " + describe(value));
+      errors.fail(value, key, "expected fan or parallel, got " + describe_yaml_node(value));
     }
     return;
   }
   if (name == "seed") {
     std::uint64_t seed = 0;
     if (!value.IsScalar() || !YAML::convert<std::uint64_t>::decode(value, seed)) {
-      errors.fail(value, key, "expected a non-negative integer, got " + describe(value));
+      errors.fail(value, key, "expected a non-negative integer, got " + describe_yaml_node(value));
     }
     parameters.seed = seed;
     return;
@@ -159,27 +137,27 @@ void read_value(const ConfigErrors& errors, const std::string& name, const YAML:
   if (numeric->integer != nullptr) {
     int number = 0;
     if (!value.IsScalar() || !YAML::convert<int>::decode(value, number)) {
-      errors.fail(value, key, "expected an integer, got " + describe(value));
+      errors.fail(value, key, "expected an integer, got " + describe_yaml_node(value));
     }
     numeric->integer(parameters) = number;
   } else {
     double number = 0.0;
     if (!value.IsScalar() || !YAML::convert<double>::decode(value, number)) {
-      errors.fail(value, key, "expected a number, got " + describe(value));
+      errors.fail(value, key, "expected a number, got " + describe_yaml_node(value));
     }
     numeric->real(parameters) = number;
   }
   numbers.emplace_back(numeric, value);
 }
 
-void read_map(const ConfigErrors& errors, const YAML::Node& map, const std::string& prefix,
+void read_map(const YamlInputErrors& errors, const YAML::Node& map, const std::string& prefix,
               ScannerParameters& parameters, std::vector<std::pair<const NumericKey*, YAML::Node>>& numbers) {
   std::set<std::string> seen;
   for (const auto& item : map) {
-    const std::string name = prefix + (item.first.IsScalar() ? item.first.Scalar() : describe(item.first));
+    const std::string name = prefix + (item.first.IsScalar() ? item.first.Scalar() : describe_yaml_node(item.first));
     if (!seen.insert(name).second) errors.fail(item.first, "scanner." + name, "key given twice");
     if (prefix.empty() && name == "camera") {
-      if (!item.second.IsMap()) errors.fail(item.second, "scanner.camera", "expected a map, got " + describe(item.second));
+      if (!item.second.IsMap()) errors.fail(item.second, "scanner.camera", "expected a map, got " + describe_yaml_node(item.second));
       read_map(errors, item.second, "camera.", parameters, numbers);
       continue;
     }
@@ -190,7 +168,7 @@ void read_map(const ConfigErrors& errors, const YAML::Node& map, const std::stri
 }  // namespace
 
 ScannerParameters read_scanner_config(const fs::path& yaml_path, const ScannerParameters& defaults) {
-  const ConfigErrors errors(yaml_path);
+  const YamlInputErrors errors(yaml_path);
   std::error_code error;
   if (!fs::is_regular_file(yaml_path, error)) throw InputError(yaml_path.string() + ": config file not found");
   YAML::Node root;
@@ -206,7 +184,7 @@ ScannerParameters read_scanner_config(const fs::path& yaml_path, const ScannerPa
   if (!root.IsMap()) errors.fail_line(root.Mark().line, "scanner", "the config must be a map of sections");
   const YAML::Node section = root["scanner"];
   if (!section.IsDefined() || section.IsNull()) return parameters;
-  if (!section.IsMap()) errors.fail(section, "scanner", "expected a map of settings, got " + describe(section));
+  if (!section.IsMap()) errors.fail(section, "scanner", "expected a map of settings, got " + describe_yaml_node(section));
   std::vector<std::pair<const NumericKey*, YAML::Node>> numbers;
   read_map(errors, section, "", parameters, numbers);
   // Ranges are checked once every key is read: cross-field rules see the final values.
