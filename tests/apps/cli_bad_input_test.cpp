@@ -15,6 +15,7 @@
 #include <string>
 
 #include "core/io/range_image_file.hpp"
+#include "tests/apps/cosmos_cli.hpp"
 #include "sim/analytic_surface.hpp"
 #include "tests/sim/handmade_image_files.hpp"
 
@@ -22,19 +23,10 @@ namespace cosmos {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::CliRun;
+using testing::read_text;
+using testing::run_cosmos;
 using testing::TiffSampleFormat;
-
-struct RunResult {
-  bool exited = false;  // false: killed by a signal (a crash)
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string read_text(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
 
 class CliBadInput : public ::testing::Test {
  protected:
@@ -49,31 +41,11 @@ class CliBadInput : public ::testing::Test {
 
   fs::path file(const std::string& name) const { return dir_ / name; }
 
-  // Runs `cosmos ARGS`; `exec` makes the shell become the binary, so a crash shows as a signal.
-  RunResult run(const std::string& args) const {
-    const fs::path out = dir_ / "stdout.txt";
-    const fs::path err = dir_ / "stderr.txt";
-    const std::string command = std::string("exec '") + COSMOS_BINARY + "' " + args + " >'" +
-                                out.string() + "' 2>'" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    RunResult result;
-    result.exited = WIFEXITED(status);
-    result.exit_code = result.exited ? WEXITSTATUS(status) : -1;
-    result.out = read_text(out);
-    result.err = read_text(err);
-    return result;
-  }
+  CliRun run(const std::string& args) const { return run_cosmos(args, dir_); }
 
   void expect_one_line_failure(const std::string& args, const std::string& needle) const {
     SCOPED_TRACE("cosmos " + args);
-    const RunResult result = run(args);
-    EXPECT_TRUE(result.exited) << "killed by a signal";
-    EXPECT_NE(result.exit_code, 0);
-    EXPECT_LT(result.exit_code, 128);
-    ASSERT_FALSE(result.err.empty());
-    EXPECT_EQ(result.err.back(), '\n') << result.err;
-    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
-    EXPECT_NE(result.err.find(needle), std::string::npos) << "'" << needle << "' not in: " << result.err;
+    testing::expect_one_line_failure(run(args), needle);
   }
 
   void expect_inspect_rejects(const fs::path& range, const std::string& needle) const {
@@ -165,7 +137,7 @@ TEST_F(CliBadInput, SynthRejectsBadNumbers) {
 }
 
 TEST_F(CliBadInput, SynthSphereLoadsBack) {
-  const RunResult result = run("synth sphere --out '" + file("sphere.tiff").string() + "'");
+  const CliRun result = run("synth sphere --out '" + file("sphere.tiff").string() + "'");
   ASSERT_TRUE(result.exited);
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_TRUE(result.err.empty()) << result.err;
@@ -181,7 +153,7 @@ TEST_F(CliBadInput, SynthSphereLoadsBack) {
 }
 
 TEST_F(CliBadInput, SynthOptionsReachTheSurface) {
-  const RunResult result =
+  const CliRun result =
       run("synth box-corner --out '" + file("corner.pfm").string() +
           "' --radius-mm 10 --pixel-mm 0.25 --noise-mm 0.1 --seed 5 --rotate-deg -30");
   ASSERT_TRUE(result.exited);

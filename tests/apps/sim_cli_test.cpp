@@ -13,23 +13,15 @@
 #include <string>
 
 #include "core/io/range_image_file.hpp"
+#include "tests/apps/cosmos_cli.hpp"
 
 namespace cosmos {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct RunResult {
-  bool exited = false;
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string read_text(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
+using testing::CliRun;
+using testing::read_text;
+using testing::run_cosmos;
 
 // A 40 x 30 x 20 box as OFF quads.
 constexpr const char* kBoxOff =
@@ -52,27 +44,11 @@ class SimCli : public ::testing::Test {
   std::string file(const std::string& name) const { return (dir_ / name).string(); }
   void write(const std::string& name, const std::string& text) const { std::ofstream(dir_ / name) << text; }
 
-  RunResult run(const std::string& args) const {
-    const std::string command = std::string("exec '") + COSMOS_BINARY + "' " + args + " >'" + file("stdout.txt") +
-                                "' 2>'" + file("stderr.txt") + "'";
-    const int status = std::system(command.c_str());
-    RunResult result;
-    result.exited = WIFEXITED(status);
-    result.exit_code = result.exited ? WEXITSTATUS(status) : -1;
-    result.out = read_text(file("stdout.txt"));
-    result.err = read_text(file("stderr.txt"));
-    return result;
-  }
+  CliRun run(const std::string& args) const { return run_cosmos(args, dir_); }
 
   void expect_one_line_failure(const std::string& args, const std::string& needle) const {
     SCOPED_TRACE("cosmos " + args);
-    const RunResult result = run(args);
-    EXPECT_TRUE(result.exited) << "killed by a signal";
-    EXPECT_NE(result.exit_code, 0);
-    EXPECT_LT(result.exit_code, 128);
-    ASSERT_FALSE(result.err.empty());
-    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
-    EXPECT_NE(result.err.find(needle), std::string::npos) << "'" << needle << "' not in: " << result.err;
+    testing::expect_one_line_failure(run(args), needle);
   }
 
   std::string scan_mesh(const std::string& mesh, const std::string& size = "40") const {
@@ -124,7 +100,7 @@ TEST_F(SimCli, BadPartsConfigsAndOptionsAreOneLine) {
 TEST_F(SimCli, ScanWritesGroundTruthAndRepeatsByteForByte) {
   const std::string args = "sim scan --part box --catalog '" + file("catalog.yaml") + "' --random-pose --seed 4";
   for (const char* name : {"a.tiff", "b.tiff"}) {
-    const RunResult result = run(args + " --out '" + file(name) + "'");
+    const CliRun result = run(args + " --out '" + file(name) + "'");
     ASSERT_TRUE(result.exited);
     ASSERT_EQ(result.exit_code, 0) << result.err;
   }
@@ -142,13 +118,13 @@ TEST_F(SimCli, CameraModeDumpsFramesAndViewsWriteTheirPoses) {
   const std::string catalog = " --catalog '" + file("catalog.yaml") + "'";
   // A smaller sensor keeps the PNG writing short.
   write("small.yaml", "scanner:\n  sensor_width_px: 640\n  roi_height_px: 256\n");
-  const RunResult scan = run("sim scan --part box" + catalog + " --resting --mode camera --frames '" +
+  const CliRun scan = run("sim scan --part box" + catalog + " --resting --mode camera --frames '" +
                              file("frames") + "' --config '" + file("small.yaml") + "' --out '" + file("camera.pfm") + "'");
   ASSERT_EQ(scan.exit_code, 0) << scan.err;
   EXPECT_GT(read_range_image(file("camera.pfm")).count_valid(), 1000u);
   EXPECT_TRUE(fs::exists(dir_ / "frames" / "frame_000010.png"));
 
-  const RunResult views = run("sim views --part box" + catalog + " --count 3 --out '" + file("views") + "'");
+  const CliRun views = run("sim views --part box" + catalog + " --count 3 --out '" + file("views") + "'");
   ASSERT_EQ(views.exit_code, 0) << views.err;
   for (const char* stem : {"view_000", "view_001", "view_002"}) {
     EXPECT_TRUE(fs::exists(dir_ / "views" / (std::string(stem) + ".tiff"))) << stem;
