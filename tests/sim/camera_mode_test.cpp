@@ -77,7 +77,7 @@ TEST(CameraMode, AgreesWithProfileModeOnACatalogPart) {
   const std::filesystem::path catalog_path = std::filesystem::path(COSMOS_SOURCE_DIR) / "config" / "parts.yaml";
   const PartCatalog catalog = read_part_catalog(catalog_path);
   const PartEntry& part = catalog.at("fandisk");
-  if (!std::filesystem::exists(part.mesh_path)) GTEST_SKIP() << part.mesh_path << " missing: run scripts/fetch_catalog.sh";
+  ASSERT_TRUE(std::filesystem::exists(part.mesh_path)) << part.mesh_path << " missing: run scripts/fetch_catalog.sh";
   const TriangleMesh mesh = load_mesh(part.mesh_path, part.size_mm);
   const auto scene = single_part_scene(mesh, resting_rotation(mesh, 7), 0.0, 0.0, part.name);
   expect_modes_agree(*scene, ScannerParameters{}, part.name);

@@ -42,7 +42,7 @@ TEST(CatalogScan, EveryDefaultPartScansAndRepeatsByteForByte) {
   const PartCatalog catalog = read_part_catalog(fs::path(COSMOS_SOURCE_DIR) / "config" / "parts.yaml");
   ASSERT_EQ(catalog.parts.size(), 25u);
   for (const PartEntry& part : catalog.parts) {
-    if (!fs::exists(part.mesh_path)) GTEST_SKIP() << part.mesh_path << " missing: run scripts/fetch_catalog.sh";
+    ASSERT_TRUE(fs::exists(part.mesh_path)) << part.mesh_path << " missing: run scripts/fetch_catalog.sh";
   }
   const fs::path dir = fs::temp_directory_path() / ("cosmos_catalog_scan_" + std::to_string(::getpid()));
   fs::create_directories(dir);
