@@ -85,28 +85,31 @@ bool LcmLogReader::next_status(CellStatus& status) {
   return true;
 }
 
-std::vector<Profile> read_logged_profiles(const std::filesystem::path& log_file) {
+namespace {
+
+// Every message of one kind in a log, through the reader's next_* for that kind.
+template <class Message>
+std::vector<Message> read_all(const std::filesystem::path& log_file,
+                              bool (LcmLogReader::*next)(Message&)) {
   LcmLogReader reader(log_file);
-  std::vector<Profile> profiles;
-  Profile profile;
-  while (reader.next_profile(profile)) profiles.push_back(profile);
-  return profiles;
+  std::vector<Message> messages;
+  Message message;
+  while ((reader.*next)(message)) messages.push_back(message);
+  return messages;
+}
+
+}  // namespace
+
+std::vector<Profile> read_logged_profiles(const std::filesystem::path& log_file) {
+  return read_all(log_file, &LcmLogReader::next_profile);
 }
 
 std::vector<PartPose> read_logged_poses(const std::filesystem::path& log_file) {
-  LcmLogReader reader(log_file);
-  std::vector<PartPose> poses;
-  PartPose pose;
-  while (reader.next_pose(pose)) poses.push_back(pose);
-  return poses;
+  return read_all(log_file, &LcmLogReader::next_pose);
 }
 
 std::vector<CellStatus> read_logged_statuses(const std::filesystem::path& log_file) {
-  LcmLogReader reader(log_file);
-  std::vector<CellStatus> statuses;
-  CellStatus status;
-  while (reader.next_status(status)) statuses.push_back(status);
-  return statuses;
+  return read_all(log_file, &LcmLogReader::next_status);
 }
 
 }  // namespace cosmos

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "firmware_bridge/camera_config.hpp"
 #include "firmware_bridge/video_device_io.hpp"
 
 namespace cosmos::test {
@@ -234,5 +235,16 @@ class FakeVideoDevice final : public VideoDeviceIo {
   Delivery pending_{};
   bool ready_ = false;
 };
+
+// The camera the fake device serves: 64 x 32 pixels, four buffers.
+inline CameraConfig small_config(PixelFormat format = PixelFormat::kGrey8) {
+  CameraConfig config;
+  config.device = "/dev/video0";
+  config.pixel_format = format;
+  config.width_px = 64;
+  config.height_px = 32;
+  config.buffer_count = 4;
+  return config;
+}
 
 }  // namespace cosmos::test

@@ -17,16 +17,7 @@ namespace cosmos {
 namespace {
 
 using test::FakeVideoDevice;
-
-CameraConfig small_config(PixelFormat format = PixelFormat::kGrey8) {
-  CameraConfig config;
-  config.device = "/dev/video0";
-  config.pixel_format = format;
-  config.width_px = 64;
-  config.height_px = 32;
-  config.buffer_count = 4;
-  return config;
-}
+using test::small_config;
 
 bool one_line(std::string_view text) {
   return !text.empty() && text.find('\n') == std::string_view::npos;

@@ -13,16 +13,7 @@ namespace cosmos {
 namespace {
 
 using test::FakeVideoDevice;
-
-CameraConfig small_config(PixelFormat format = PixelFormat::kGrey8) {
-  CameraConfig config;
-  config.device = "/dev/video0";
-  config.pixel_format = format;
-  config.width_px = 64;
-  config.height_px = 32;
-  config.buffer_count = 4;
-  return config;
-}
+using test::small_config;
 
 TEST(V4l2Camera, StreamOnBeforeBuffersIsRefusedWithTheStepToCall) {
   FakeVideoDevice device;
