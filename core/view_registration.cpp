@@ -3,6 +3,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -18,6 +19,7 @@ namespace {
 // by noise (a plane, a cylinder, a sphere, §6.8). 1e-3 is the constraint that normals varying
 // by ~2 degrees about that direction would give.
 constexpr double kMinMeanConstraint = 1e-3;
+constexpr int kMaxWeakDirections = 3;
 // Median absolute deviation to standard deviation for Gaussian residuals.
 constexpr double kMadToSigma = 1.4826;
 
@@ -125,9 +127,26 @@ SolveStatus solve_increment(const std::vector<Correspondence>& inliers, Incremen
   Eigen::Matrix<double, 6, 1> scale = Eigen::Matrix<double, 6, 1>::Ones();
   scale.head<3>().setConstant(1.0 / std::sqrt(std::max(lever2 / total_weight, 1e-300)));
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eigen(
-      scale.asDiagonal() * H_full * scale.asDiagonal(), Eigen::EigenvaluesOnly);
-  if (!(eigen.eigenvalues()(0) > kMinMeanConstraint * total_weight)) return SolveStatus::degenerate;
-  const Eigen::Matrix<double, 6, 1> x = H_full.ldlt().solve(-g);
+      scale.asDiagonal() * H_full * scale.asDiagonal());
+  const double min_constraint = kMinMeanConstraint * total_weight;
+  int weak_directions = 0;
+  for (int k = 0; k < 6; ++k) weak_directions += eigen.eigenvalues()(k) > min_constraint ? 0 : 1;
+  // A plane leaves three directions free (§6.8): nothing sensible to solve.
+  if (weak_directions >= kMaxWeakDirections) return SolveStatus::degenerate;
+  Eigen::Matrix<double, 6, 1> x;
+  if (weak_directions == 0) {
+    x = H_full.ldlt().solve(-g);
+  } else {
+    // A surface of revolution or a cylinder leaves one or two directions to noise: step only
+    // in the constrained ones (truncated eigen-solve in the scaled parameters) and keep the
+    // rest of the current estimate, which the initial pose supplied.
+    const Eigen::Matrix<double, 6, 6>& V = eigen.eigenvectors();
+    const Eigen::Matrix<double, 6, 1> scaled_g = scale.asDiagonal() * g;
+    Eigen::Matrix<double, 6, 1> scaled_x = Eigen::Matrix<double, 6, 1>::Zero();
+    for (int k = weak_directions; k < 6; ++k)
+      scaled_x -= V.col(k) * (V.col(k).dot(scaled_g) / eigen.eigenvalues()(k));
+    x = scale.asDiagonal() * scaled_x;
+  }
   const Eigen::Matrix3d rotation = rotation_from_vector(x.head<3>());
   increment.T_new_old = {rotation, centroid - rotation * centroid + x.tail<3>()};
   increment.rotation_rad = x.head<3>().norm();
@@ -233,6 +252,21 @@ AlignmentScore score_alignment(const RegistrationPoints& scene, const Registrati
   score.truncated_mean_square_mm2 = sum / scene.size();
   score.matched_fraction = static_cast<double>(matched) / scene.size();
   return score;
+}
+
+void correspondence_distances(const RegistrationPoints& scene, const RegistrationPoints& model,
+                              const RigidTransform& T_model_scene,
+                              const RegistrationParameters& parameters,
+                              std::vector<double>& abs_distance_mm) {
+  abs_distance_mm.assign(static_cast<std::size_t>(scene.size()),
+                         std::numeric_limits<double>::infinity());
+  if (!valid_input(scene, model, parameters)) return;
+  RegistrationParameters unweighted = parameters;
+  unweighted.estimator = RegistrationEstimator::chen_medioni;
+  std::vector<Correspondence> candidates;
+  find_correspondences(scene, model, T_model_scene, unweighted, candidates);
+  for (const Correspondence& c : candidates)
+    abs_distance_mm[static_cast<std::size_t>(c.scene_index)] = std::abs(c.distance_mm);
 }
 
 }  // namespace cosmos

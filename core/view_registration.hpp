@@ -24,6 +24,8 @@
 // set changes; a period-2 oscillation below the tolerances (a point at the model's edge
 // matched every other pass) also counts as converged. Budgets are iterations and
 // intersection steps, never time.
+#include <vector>
+
 #include "core/registration_points.hpp"
 #include "core/rigid_transform.hpp"
 
@@ -56,7 +58,8 @@ enum class RegistrationStatus {
   converged,
   iteration_budget_exhausted,  // T is the last iterate
   too_few_correspondences,     // T is the last iterate with enough inliers (or the initial one)
-  degenerate,                  // the inliers do not constrain all 6 parameters
+  degenerate,  // the inliers leave 3 or more of the 6 parameters free (a plane); 1 or 2
+               // free ones (a cylinder, a surface of revolution) keep their current value
   invalid_input,
 };
 
@@ -86,5 +89,13 @@ struct AlignmentScore {
 AlignmentScore score_alignment(const RegistrationPoints& scene, const RegistrationPoints& model,
                                const RigidTransform& T_model_scene,
                                const RegistrationParameters& parameters);
+
+// Per scene control point, |d_s| of its correspondence under T_model_scene (the geometric
+// tests of one registration pass), +infinity where it has none: for measuring how much of a
+// scene several model views explain together.
+void correspondence_distances(const RegistrationPoints& scene, const RegistrationPoints& model,
+                              const RigidTransform& T_model_scene,
+                              const RegistrationParameters& parameters,
+                              std::vector<double>& abs_distance_mm);
 
 }  // namespace cosmos

@@ -1,0 +1,62 @@
+#include "core/part_pose_search.hpp"
+
+#include <algorithm>
+
+#include "core/packed_registration_points.hpp"
+#include "core/pose_hypotheses.hpp"
+
+namespace cosmos {
+
+RegistrationPoints spread_subset(const RegistrationPoints& points, int count) {
+  const int step = std::max(1, points.size() / std::max(count, 1));
+  RegistrationPoints subset;
+  subset.fit_cofactor = points.fit_cofactor;
+  subset.z_noise_sigma_mm = points.z_noise_sigma_mm;
+  const int kept = (points.size() + step - 1) / step;
+  subset.position_mm.resize(3, kept);
+  subset.normal.resize(3, kept);
+  subset.surface.resize(kSurfaceCoefficients, kept);
+  subset.residual_rms_mm.resize(kept);
+  for (int k = 0; k < kept; ++k) {
+    const int i = k * step;
+    subset.position_mm.col(k) = points.position_mm.col(i);
+    subset.normal.col(k) = points.normal.col(i);
+    subset.surface.col(k) = points.surface.col(i);
+    subset.residual_rms_mm(k) = points.residual_rms_mm(i);
+  }
+  return subset;
+}
+
+std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene,
+                                                 const ModelBase& base, int part,
+                                                 const RegistrationParameters& registration,
+                                                 const PartPoseSearchParameters& parameters) {
+  std::vector<ViewPoseHypothesis> best;
+  const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
+  if (scoring.size() == 0) return best;
+  const PoseFromPatches no_patch_pose;  // status too_few_pairs: not used
+  for (std::size_t v = 0; v < base.views.size(); ++v) {
+    const ModelBaseView& view = base.views[v];
+    if (view.part_index != part) continue;
+    RegistrationPoints unpacked;
+    if (view.registration.size() == 0)
+      unpacked = unpack_registration_points(view.registration_packed);
+    const RegistrationPoints& model = view.registration.size() > 0 ? view.registration : unpacked;
+    for (const PoseHypothesis& hypothesis :
+         rank_pose_hypotheses(scoring, model, no_patch_pose, registration,
+                              {.in_plane_turns = parameters.in_plane_turns})) {
+      best.push_back({static_cast<int>(v), hypothesis.T_model_scene,
+                      hypothesis.score.truncated_mean_square_mm2});
+    }
+    // Keep only the best few so far: ties by view, then generation order (stable).
+    std::stable_sort(best.begin(), best.end(),
+                     [](const ViewPoseHypothesis& a, const ViewPoseHypothesis& b) {
+                       return a.truncated_mean_square_mm2 < b.truncated_mean_square_mm2;
+                     });
+    if (best.size() > static_cast<std::size_t>(parameters.best_hypotheses))
+      best.resize(static_cast<std::size_t>(parameters.best_hypotheses));
+  }
+  return best;
+}
+
+}  // namespace cosmos

@@ -1,0 +1,40 @@
+#pragma once
+// Pose search over all views of one part: the fallback when the views that spectral selection
+// proposed (§5.2) do not register. Shape-spectrum moments are invariant to the view's
+// orientation but not very selective among the views of one part: views with similar spectra
+// lie all over the view sphere, so the few selected views may all be 40 degrees or more from
+// the scene's true viewing direction, beyond what registration (ch. 6) converges from. Here
+// every view of the part proposes initial poses (principal axes, §6.7.2, and turns about the
+// viewing axis, pose_hypotheses.hpp), scored by one correspondence pass on a small, evenly
+// spread subset of the scene's control points; the best few over all views are returned for
+// full registration. A budget of scored hypotheses (views x turns) bounds the work.
+#include <vector>
+
+#include "core/model_base.hpp"
+#include "core/registration_points.hpp"
+#include "core/rigid_transform.hpp"
+#include "core/view_registration.hpp"
+
+namespace cosmos {
+
+struct PartPoseSearchParameters {
+  int scoring_points = 200;  // scene control points used to score a hypothesis
+  int in_plane_turns = 12;
+  int best_hypotheses = 4;  // returned, best first
+};
+
+struct ViewPoseHypothesis {
+  int view = -1;  // index into ModelBase::views
+  RigidTransform T_model_scene;
+  double truncated_mean_square_mm2 = 0;
+};
+
+// Every `step`-th control point, so that about `count` remain (all of them when fewer).
+RegistrationPoints spread_subset(const RegistrationPoints& points, int count);
+
+std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene,
+                                                 const ModelBase& base, int part,
+                                                 const RegistrationParameters& registration,
+                                                 const PartPoseSearchParameters& parameters);
+
+}  // namespace cosmos

@@ -1,0 +1,55 @@
+#include "core/part_support.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/packed_registration_points.hpp"
+
+namespace cosmos {
+
+PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBase& base,
+                                 int matched, const RegistrationPoints& matched_points,
+                                 const RigidTransform& T_model_scene,
+                                 const RegistrationParameters& registration,
+                                 const PartSupportParameters& parameters) {
+  PartSupport support;
+  if (scene.size() == 0) return support;
+  RegistrationParameters strict = registration;
+  strict.max_correspondence_distance_mm = parameters.inlier_distance_mm;
+  const ModelBaseView& view = base.views[static_cast<std::size_t>(matched)];
+  std::vector<double> nearest_mm, distance_mm;
+  correspondence_distances(scene, matched_points, T_model_scene, strict, nearest_mm);
+  support.views_used = 1;
+
+  const RigidTransform T_part_scene = view.T_scanner_part.inverse() * T_model_scene;
+  const double min_cosine = std::cos(parameters.neighbour_view_angle_deg * std::numbers::pi / 180);
+  for (std::size_t v = 0; v < base.views.size(); ++v) {
+    const ModelBaseView& other = base.views[v];
+    if (static_cast<int>(v) == matched || other.part_index != view.part_index) continue;
+    if (other.direction_part.dot(view.direction_part) < min_cosine) continue;
+    RegistrationPoints unpacked;
+    if (other.registration.size() == 0)
+      unpacked = unpack_registration_points(other.registration_packed);
+    const RegistrationPoints& other_points =
+        other.registration.size() > 0 ? other.registration : unpacked;
+    correspondence_distances(scene, other_points, other.T_scanner_part * T_part_scene, strict,
+                             distance_mm);
+    for (std::size_t i = 0; i < nearest_mm.size(); ++i)
+      nearest_mm[i] = std::min(nearest_mm[i], distance_mm[i]);
+    ++support.views_used;
+  }
+
+  int inliers = 0;
+  double sum_squares = 0;
+  for (double d : nearest_mm) {
+    if (!(d <= parameters.inlier_distance_mm)) continue;
+    ++inliers;
+    sum_squares += d * d;
+  }
+  support.inlier_fraction = static_cast<double>(inliers) / scene.size();
+  support.rms_mm = inliers > 0 ? std::sqrt(sum_squares / inliers) : 0.0;
+  return support;
+}
+
+}  // namespace cosmos

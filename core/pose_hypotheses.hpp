@@ -1,0 +1,38 @@
+#pragma once
+// Initial-pose hypotheses for registering a scene view onto a model view (ch. 6 needs a
+// start within its basin of convergence): the pose implied by the COSMOS correspondence
+// (§5.3.5), the principal-axes estimate (§6.7.2), and turns about the viewing axis (+z) that
+// align the two views' centroids — both views are seen from the scanner, so what is unknown
+// is mostly that turn plus a small tilt. Each is scored by one correspondence pass
+// (score_alignment), and they are returned best first, so registration refines only the few
+// most promising.
+#include <vector>
+
+#include "core/pose_from_patches.hpp"
+#include "core/registration_points.hpp"
+#include "core/rigid_transform.hpp"
+#include "core/view_registration.hpp"
+
+namespace cosmos {
+
+enum class PoseHypothesisSource { kPatchGroups, kPrincipalAxes, kInPlaneTurn };
+
+struct PoseHypothesis {
+  PoseHypothesisSource source = PoseHypothesisSource::kInPlaneTurn;
+  RigidTransform T_model_scene;
+  AlignmentScore score;
+};
+
+struct PoseHypothesisParameters {
+  int in_plane_turns = 12;  // evenly spaced turns about +z, 0 = none
+};
+
+// Hypotheses sorted by truncated mean square (ascending), ties in generation order (patch
+// groups, principal axes, turns by angle). `from_patches` is used when its status is ok.
+std::vector<PoseHypothesis> rank_pose_hypotheses(const RegistrationPoints& scene,
+                                                 const RegistrationPoints& model,
+                                                 const PoseFromPatches& from_patches,
+                                                 const RegistrationParameters& registration,
+                                                 const PoseHypothesisParameters& parameters);
+
+}  // namespace cosmos

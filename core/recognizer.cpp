@@ -1,0 +1,264 @@
+#include "core/recognizer.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "core/packed_registration_points.hpp"
+#include "core/part_pose_search.hpp"
+#include "core/part_support.hpp"
+#include "core/pose_hypotheses.hpp"
+
+namespace cosmos {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double elapsed_ms(Clock::time_point since) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
+}
+
+// Support and residual of a registered pose, from one correspondence pass with the inlier
+// distance as the limit: the fraction of scene points the model surface explains, and the
+// RMS distance over those.
+struct Support {
+  double inlier_fraction = 0;
+  double rms_mm = 0;
+};
+
+Support measure_support(const RegistrationPoints& scene, const RegistrationPoints& model,
+                        const RigidTransform& T_model_scene,
+                        const RecognitionParameters& parameters) {
+  RegistrationParameters strict = parameters.registration;
+  strict.max_correspondence_distance_mm = parameters.support.inlier_distance_mm;
+  const AlignmentScore score = score_alignment(scene, model, T_model_scene, strict);
+  Support support;
+  support.inlier_fraction = score.matched_fraction;
+  // The truncated mean square counts unmatched points at the limit; take them out again.
+  const double limit2 =
+      parameters.support.inlier_distance_mm * parameters.support.inlier_distance_mm;
+  const double unmatched = 1.0 - score.matched_fraction;
+  if (score.matched_fraction > 0)
+    support.rms_mm = std::sqrt(std::max(
+        0.0, (score.truncated_mean_square_mm2 - unmatched * limit2) / score.matched_fraction));
+  return support;
+}
+
+// The decision's figure of merit (§5.3.3 goodness and the ch. 6 residual together): support
+// dominates, a residual near the limit and a poor COSMOS match lower it.
+double candidate_score(double inlier_fraction, double rms_mm, double goodness,
+                       const RecognitionParameters& parameters) {
+  const double residual_factor = std::max(0.0, 1.0 - rms_mm / (2.0 * parameters.max_rms_mm));
+  return inlier_fraction * residual_factor * (0.8 + 0.2 * std::clamp(goodness, 0.0, 1.0));
+}
+
+// A model view's registration surface: the view's own when it has one, else unpacked from
+// the base's compact form (model bases read from a file keep only that).
+class ModelSurface {
+ public:
+  explicit ModelSurface(const ModelBaseView& view) : view_(view) {
+    if (view.registration.size() == 0)
+      unpacked_ = unpack_registration_points(view.registration_packed);
+  }
+  const RegistrationPoints& points() const {
+    return view_.registration.size() > 0 ? view_.registration : unpacked_;
+  }
+
+ private:
+  const ModelBaseView& view_;
+  RegistrationPoints unpacked_;
+};
+
+const RecognitionCandidate* best_candidate(const std::vector<RecognitionCandidate>& candidates) {
+  const RecognitionCandidate* best = nullptr;
+  for (const RecognitionCandidate& candidate : candidates)
+    if (candidate.registered && (!best || candidate.score > best->score)) best = &candidate;
+  return best;
+}
+
+}  // namespace
+
+const char* to_string(RecognitionStatus status) {
+  return status == RecognitionStatus::kOk ? "ok" : "rejected";
+}
+
+Recognizer::Recognizer(const ModelBase& model_base, const CosmosParameters& cosmos,
+                       const RecognitionParameters& parameters)
+    : model_base_(model_base),
+      cosmos_(cosmos),
+      parameters_(parameters),
+      selector_(model_base, parameters.selection) {}
+
+RecognitionResult Recognizer::recognize(const RangeImage& scene) const {
+  const Clock::time_point start = Clock::now();
+  if (scene.width() == 0 || scene.count_valid() == 0) {
+    RecognitionResult empty;
+    empty.reason = "empty scan: no range data";
+    empty.timings.total_ms = elapsed_ms(start);
+    return empty;
+  }
+  const ViewAnalysis analysis = analyze_view(scene, cosmos_);
+  return recognize_analyzed(scene, analysis, elapsed_ms(start));
+}
+
+RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
+                                                 const ViewAnalysis& analysis,
+                                                 double features_ms) const {
+  const Clock::time_point start = Clock::now();
+  RecognitionResult result;
+  result.moments = analysis.moments;
+  result.scene_patches = static_cast<int>(analysis.view.patches.size());
+  result.timings.features_ms = features_ms;
+  const auto finish = [&](std::string reason) {
+    result.reason = std::move(reason);
+    result.timings.total_ms = features_ms + elapsed_ms(start);
+    return result;
+  };
+  if (analysis.valid_pixels == 0) return finish("no object: no surface could be fitted");
+
+  Clock::time_point stage = Clock::now();
+  const RegistrationPointsResult scene_points =
+      build_registration_points(scene, parameters_.scene_points, &analysis.frames);
+  result.scene_points = scene_points.points.size();
+  result.timings.features_ms += elapsed_ms(stage);
+  if (scene_points.status != RegistrationPointsStatus::ok ||
+      result.scene_points < parameters_.min_scene_points)
+    return finish("too little smooth surface to register (" + std::to_string(result.scene_points) +
+                  " control points)");
+  if (model_base_.views.empty()) return finish("the model base has no views");
+
+  stage = Clock::now();
+  const std::vector<SpectralCandidate> selected = selector_.select(analysis.moments);
+  result.timings.selection_ms = elapsed_ms(stage);
+
+  for (const SpectralCandidate& candidate : selected)
+    result.candidates.push_back(verify(analysis, scene_points.points, candidate,
+                                       result.timings.matching_ms, result.timings.registration_ms));
+  result.views_examined = static_cast<int>(selected.size());
+  const RecognitionCandidate* best = best_candidate(result.candidates);
+  if (!best || best->inlier_fraction < parameters_.min_inlier_fraction) {
+    search_candidate_parts(analysis, scene_points.points, result);
+    best = best_candidate(result.candidates);
+  }
+  if (!best) return finish("no candidate view could be registered");
+
+  result.part = best->part;
+  result.view = best->view;
+  result.score = best->score;
+  result.spectral_distance = best->spectral_distance;
+  result.registration_rms_mm = best->rms_mm;
+  result.inlier_fraction = best->inlier_fraction;
+  const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(best->view)];
+  result.T_scanner_part = (best->T_model_scene.inverse() * view.T_scanner_part).normalized();
+  if (best->inlier_fraction < parameters_.min_inlier_fraction) {
+    result.part = -1;
+    return finish("best candidate explains only " +
+                  std::to_string(static_cast<int>(100 * best->inlier_fraction)) +
+                  " % of the surface");
+  }
+  if (best->rms_mm > parameters_.max_rms_mm) {
+    result.part = -1;
+    return finish("best candidate's registration residual is too large");
+  }
+  result.status = RecognitionStatus::kOk;
+  return finish("");
+}
+
+RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene,
+                                        const RegistrationPoints& scene_points,
+                                        const SpectralCandidate& selected, double& matching_ms,
+                                        double& registration_ms) const {
+  const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(selected.view)];
+  RecognitionCandidate candidate;
+  candidate.view = selected.view;
+  candidate.part = view.part_index;
+  candidate.spectral_distance = selected.distance;
+
+  Clock::time_point stage = Clock::now();
+  const PatchGroupMatch match = match_patch_groups(scene.view, view.cosmos, parameters_.matching);
+  candidate.goodness = match.score;
+  const PoseFromPatches from_patches =
+      estimate_pose_from_patches(scene.view, view.cosmos, match.pairs, parameters_.pose);
+  matching_ms += elapsed_ms(stage);
+
+  stage = Clock::now();
+  const ModelSurface model(view);
+  std::vector<RigidTransform> starts;
+  for (const PoseHypothesis& hypothesis :
+       rank_pose_hypotheses(scene_points, model.points(), from_patches, parameters_.registration,
+                            {.in_plane_turns = parameters_.in_plane_hypotheses})) {
+    if (starts.size() >= static_cast<std::size_t>(parameters_.registered_hypotheses)) break;
+    starts.push_back(hypothesis.T_model_scene);
+  }
+  register_candidate(scene_points, model.points(), starts, candidate);
+  registration_ms += elapsed_ms(stage);
+  return candidate;
+}
+
+void Recognizer::search_candidate_parts(const ViewAnalysis& scene,
+                                        const RegistrationPoints& scene_points,
+                                        RecognitionResult& result) const {
+  // Parts in the order of their closest view cluster (§5.2's first tier).
+  std::vector<int> parts;
+  for (int cluster : selector_.rank_clusters(scene.moments)) {
+    const int part = model_base_.clusters[static_cast<std::size_t>(cluster)].part_index;
+    if (parts.size() >= static_cast<std::size_t>(parameters_.searched_parts)) break;
+    if (std::find(parts.begin(), parts.end(), part) == parts.end()) parts.push_back(part);
+  }
+  for (int part : parts) {
+    for (const ModelBaseView& view : model_base_.views)
+      result.views_examined += view.part_index == part;
+    Clock::time_point stage = Clock::now();
+    const std::vector<ViewPoseHypothesis> hypotheses = search_part_pose(
+        scene_points, model_base_, part, parameters_.registration, parameters_.search);
+    result.timings.registration_ms += elapsed_ms(stage);
+    for (const ViewPoseHypothesis& hypothesis : hypotheses) {
+      const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(hypothesis.view)];
+      RecognitionCandidate candidate;
+      candidate.view = hypothesis.view;
+      candidate.part = part;
+      candidate.from_pose_search = true;
+      candidate.spectral_distance = selector_.distance(scene.moments, view.moments);
+      stage = Clock::now();
+      candidate.goodness = match_patch_groups(scene.view, view.cosmos, parameters_.matching).score;
+      result.timings.matching_ms += elapsed_ms(stage);
+      stage = Clock::now();
+      register_candidate(scene_points, ModelSurface(view).points(), {hypothesis.T_model_scene},
+                         candidate);
+      result.timings.registration_ms += elapsed_ms(stage);
+      result.candidates.push_back(candidate);
+    }
+  }
+}
+
+void Recognizer::register_candidate(const RegistrationPoints& scene_points,
+                                    const RegistrationPoints& model,
+                                    const std::vector<RigidTransform>& starts,
+                                    RecognitionCandidate& candidate) const {
+  RegistrationResult best;
+  Support best_support;
+  for (const RigidTransform& start : starts) {
+    const RegistrationResult registration =
+        register_views(scene_points, model, start, parameters_.registration);
+    if (registration.status == RegistrationStatus::invalid_input ||
+        registration.status == RegistrationStatus::degenerate)
+      continue;
+    const Support support =
+        measure_support(scene_points, model, registration.T_model_scene, parameters_);
+    if (candidate.registered && support.inlier_fraction <= best_support.inlier_fraction) continue;
+    candidate.registered = true;
+    best = registration;
+    best_support = support;
+  }
+  if (!candidate.registered) return;
+  const PartSupport support =
+      measure_part_support(scene_points, model_base_, candidate.view, model, best.T_model_scene,
+                           parameters_.registration, parameters_.support);
+  candidate.registration_status = best.status;
+  candidate.T_model_scene = best.T_model_scene;
+  candidate.rms_mm = support.rms_mm;
+  candidate.inlier_fraction = support.inlier_fraction;
+  candidate.score =
+      candidate_score(support.inlier_fraction, support.rms_mm, candidate.goodness, parameters_);
+}
+
+}  // namespace cosmos

@@ -1,0 +1,140 @@
+#pragma once
+// The recognizer (thesis ch. 5 and 6): from one part's range image to "which model-base part,
+// in which pose", or a rejection.
+//
+//   features      the chapter-3 pipeline (analyze_view) and the scene's registration control
+//                 points (§6.7.1);
+//   selection     spectral model-view selection (§5.2): K best clusters, m best views;
+//   matching      for each selected view, COSMOS verification by patch-group graph matching
+//                 (§5.3) and the initial pose it implies (§5.3.5);
+//   registration  initial-pose hypotheses per candidate — the patch-group pose, the principal
+//                 axes (§6.7.2) and turns about the viewing axis (scene and model views are
+//                 both seen from the scanner, so the unknown is mostly that turn) — scored by
+//                 one correspondence pass each; the best are refined by the minimum-variance
+//                 estimator (§6.6) or Chen-Medioni;
+//   decision      each registered candidate is judged by its support (the fraction of scene
+//                 control points within inlier_distance_mm of the model surface), its RMS
+//                 residual and its COSMOS goodness; the best wins, and below the thresholds
+//                 the part is rejected as unknown rather than forced onto a catalog part.
+//
+// Everything is counted in operations (views, hypotheses, iterations), so the result depends
+// only on the input; only the timings vary between runs.
+#include <string>
+#include <vector>
+
+#include "core/cosmos_parameters.hpp"
+#include "core/cosmos_pipeline.hpp"
+#include "core/model_base.hpp"
+#include "core/part_pose_search.hpp"
+#include "core/part_support.hpp"
+#include "core/patch_group_matching.hpp"
+#include "core/pose_from_patches.hpp"
+#include "core/range_image.hpp"
+#include "core/registration_points.hpp"
+#include "core/rigid_transform.hpp"
+#include "core/spectral_view_selection.hpp"
+#include "core/view_registration.hpp"
+
+namespace cosmos {
+
+struct RecognitionParameters {
+  SpectralSelectionParameters selection;
+  PatchGroupMatchParameters matching;
+  PoseFromPatchesParameters pose;
+  RegistrationParameters registration;
+  // Scene control points every 4th pixel (1.6 mm on the 0.4 mm grid): a few thousand points
+  // on a catalog part, enough to fix 6 parameters many times over.
+  RegistrationPointParameters scene_points{.stride_px = 4};
+  int in_plane_hypotheses = 12;   // turns about the viewing axis tried per candidate view
+  int registered_hypotheses = 2;  // best-scoring initial poses refined per candidate view
+  PartSupportParameters support;  // what counts as explained scene surface
+  // When no selected view registers with enough support: the pose search over every view of
+  // the `searched_parts` parts whose closest view clusters rank first.
+  int searched_parts = 3;
+  PartPoseSearchParameters search;
+  // Decision thresholds (rejection as unknown part).
+  double min_inlier_fraction = 0.6;
+  double max_rms_mm = 0.12;
+  int min_scene_points = 30;
+};
+
+enum class RecognitionStatus { kOk, kRejected };
+
+struct RecognitionCandidate {
+  int view = -1;  // index into ModelBase::views
+  int part = -1;  // index into ModelBase::parts
+  double spectral_distance = 0;
+  double goodness = 0;  // COSMOS match score (§5.3.3)
+  bool registered = false;
+  RegistrationStatus registration_status = RegistrationStatus::invalid_input;
+  double rms_mm = 0;
+  double inlier_fraction = 0;
+  double score = 0;  // the decision's figure of merit, in [0, 1]
+  RigidTransform T_model_scene;
+  bool from_pose_search = false;  // proposed by the fallback search, not by §5.2 selection
+};
+
+struct RecognitionTimings {
+  double features_ms = 0;
+  double selection_ms = 0;
+  double matching_ms = 0;
+  double registration_ms = 0;
+  double total_ms = 0;
+};
+
+struct RecognitionResult {
+  RecognitionStatus status = RecognitionStatus::kRejected;
+  std::string reason;  // why rejected; empty when ok
+  int part = -1;       // ModelBase::parts index of the winner, -1 when rejected
+  int view = -1;       // ModelBase::views index of the winner
+  double score = 0;
+  double spectral_distance = 0;
+  double registration_rms_mm = 0;
+  double inlier_fraction = 0;
+  // The scene's pose in its own image frame: T_scene_model (registration) composed with the
+  // model view's T_scanner_part.
+  RigidTransform T_scanner_part;
+  MomentVector moments{};
+  int scene_patches = 0;
+  int scene_points = 0;
+  int views_examined = 0;  // model views compared with the scene (selected + searched)
+  std::vector<RecognitionCandidate> candidates;  // spectral order
+  RecognitionTimings timings;
+};
+
+class Recognizer {
+ public:
+  // The base must outlive the recognizer. `cosmos` must be what the base was built with.
+  Recognizer(const ModelBase& model_base, const CosmosParameters& cosmos,
+             const RecognitionParameters& parameters);
+
+  RecognitionResult recognize(const RangeImage& scene) const;
+  // For a scene whose chapter-3 analysis already exists (the incremental builder's).
+  RecognitionResult recognize_analyzed(const RangeImage& scene, const ViewAnalysis& analysis,
+                                       double features_ms = 0) const;
+
+  const SpectralViewSelector& selector() const { return selector_; }
+  const RecognitionParameters& parameters() const { return parameters_; }
+
+ private:
+  RecognitionCandidate verify(const ViewAnalysis& scene, const RegistrationPoints& scene_points,
+                              const SpectralCandidate& selected, double& matching_ms,
+                              double& registration_ms) const;
+  // The fallback: every view of the candidates' parts (part_pose_search.hpp).
+  void search_candidate_parts(const ViewAnalysis& scene, const RegistrationPoints& scene_points,
+                              RecognitionResult& result) const;
+  // Registers from each start, keeps the pose the view supports best, then judges it against
+  // the part's views around it (part_support.hpp).
+  void register_candidate(const RegistrationPoints& scene_points, const RegistrationPoints& model,
+                          const std::vector<RigidTransform>& starts,
+                          RecognitionCandidate& candidate) const;
+
+  const ModelBase& model_base_;
+  CosmosParameters cosmos_;
+  RecognitionParameters parameters_;
+  SpectralViewSelector selector_;
+};
+
+const char* to_string(RecognitionStatus status);
+
+}  // namespace cosmos
