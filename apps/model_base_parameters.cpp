@@ -1,6 +1,10 @@
 #include "apps/model_base_parameters.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "apps/view_direction_subset.hpp"
+#include "core/input_error.hpp"
+#include "core/io/model_base_file.hpp"
 #include "core/io/parameters_text.hpp"
 
 namespace cosmos {
@@ -80,6 +84,21 @@ std::string model_base_parameters_text(const CosmosParameters& cosmos, const Sca
   }
   text.set_text("grouping.method", "complete-link, Eq. 4.3 on moments m1..m10");
   return text.text();
+}
+
+ModelBase read_model_base_for(const std::filesystem::path& path, const CosmosParameters& cosmos) {
+  ModelBase base = read_model_base(path);
+  ParameterText expected;
+  add_cosmos(expected, cosmos);
+  const nlohmann::json recorded = nlohmann::json::parse(base.parameters_text, nullptr, false);
+  const std::string recorded_cosmos =
+      recorded.is_object() && recorded.contains("cosmos")
+          ? nlohmann::json{{"cosmos", recorded["cosmos"]}}.dump(2)
+          : std::string("{}");
+  if (const auto difference = first_parameter_difference(expected.text(), recorded_cosmos))
+    throw InputError(path.string() + ": built with other parameters: " + difference->key + " is " +
+                     difference->actual + ", this recognizer uses " + difference->expected);
+  return base;
 }
 
 }  // namespace cosmos

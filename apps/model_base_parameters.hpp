@@ -9,7 +9,10 @@
 // drawing (model views are scanned in profile mode, which never draws frames) and its line
 // rate (it paces the belt in time, not in space). A field added to one of these structs must
 // be added here, or bases built with different values would pass as equal.
+#include <filesystem>
 #include <string>
+
+#include "core/model_base.hpp"
 
 #include "core/cosmos_parameters.hpp"
 #include "core/registration_points.hpp"
@@ -21,5 +24,10 @@ namespace cosmos {
 std::string model_base_parameters_text(const CosmosParameters& cosmos, const ScannerParameters& scanner,
                                        const RegistrationPointParameters& registration, int view_count,
                                        const ViewGroupingParameters& grouping);
+
+// Reads a model base for recognition with `cosmos`: live scans must be analyzed exactly as
+// the model views were, so a base whose cosmos.* parameters differ is refused with one line
+// naming the file and the first differing key (InputError), like any unreadable base.
+ModelBase read_model_base_for(const std::filesystem::path& path, const CosmosParameters& cosmos);
 
 }  // namespace cosmos
