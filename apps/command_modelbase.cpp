@@ -15,6 +15,7 @@
 
 #include "apps/command_registry.hpp"
 #include "apps/model_base_builder.hpp"
+#include "apps/model_base_progress.hpp"
 #include "core/input_error.hpp"
 #include "core/io/model_base_file.hpp"
 #include "sim/part_catalog.hpp"
@@ -72,31 +73,6 @@ ModelBaseBuildSettings build_settings(const BuildOptions& options) {
     if (settings.grouping.cluster_count < 1) fail("build", "--clusters '" + options.clusters + "': expected a positive integer");
   }
   return settings;
-}
-
-// A bar redrawn in place on a terminal; in a log, one line per finished part.
-ModelBaseProgress progress_printer(const PartCatalog& catalog) {
-  const bool terminal = ::isatty(::fileno(stderr)) != 0;
-  auto printed_parts = std::make_shared<int>(0);
-  const auto start = std::chrono::steady_clock::now();
-  return [&catalog, terminal, printed_parts, start](const ModelBaseBuildProgress& p) {
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (terminal) {
-      constexpr int kWidth = 30;
-      const int filled = p.views_total > 0 ? kWidth * p.views_done / p.views_total : kWidth;
-      const std::string bar = std::string(static_cast<std::size_t>(filled), '#') + std::string(static_cast<std::size_t>(kWidth - filled), '.');
-      const int current = std::min(p.parts_done, p.parts_total - 1);
-      std::fprintf(stderr, "\rmodelbase: [%s] %d/%d views, part %d/%d %-20s %6.0f s", bar.c_str(), p.views_done,
-                   p.views_total, current + 1, p.parts_total,
-                   current >= 0 ? catalog.parts[static_cast<std::size_t>(current)].name.c_str() : "", seconds);
-      if (p.views_done == p.views_total) std::fputc('\n', stderr);
-    } else {
-      for (; *printed_parts < p.parts_done; ++*printed_parts)
-        std::fprintf(stderr, "modelbase: part %d/%d %s scanned (%.0f s)\n", *printed_parts + 1, p.parts_total,
-                     catalog.parts[static_cast<std::size_t>(*printed_parts)].name.c_str(), seconds);
-    }
-    std::fflush(stderr);
-  };
 }
 
 void run_build(const BuildOptions& options) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <numbers>
 #include <numeric>
 
@@ -51,28 +52,36 @@ void refine_boundaries(const ShapeIndexField& field, CsmpSegmentation& segmentat
   for (int p = 0; p < segmentation.patch_count; ++p)
     if (area[p] > 0) mean[p] = shape_area[p] / area[p];
   const int width = patch.width();
-  std::vector<std::size_t> candidates;
-  for (std::size_t i = 0; i < patch.size(); ++i)
-    if (patch[i] != kNoPatch && field.label[i] == SurfaceLabel::kCurved) candidates.push_back(i);
+  // Same-side bits are only set for neighbours inside the image, so plain index offsets do.
+  std::ptrdiff_t step[8];
+  for (int k = 0; k < 8; ++k)
+    step[k] = kNeighborOffsets[k].row * width + kNeighborOffsets[k].column;
   std::vector<std::pair<std::size_t, std::int32_t>> moves;
+  auto consider = [&](std::size_t i) {
+    if (patch[i] == kNoPatch || field.label[i] != SurfaceLabel::kCurved) return;
+    const double s = field.shape_index[i];
+    double best_distance = std::abs(s - mean[patch[i]]);
+    std::int32_t best = patch[i];
+    for (int k = 0; k < 8; ++k) {
+      if (!((field.same_side[i] >> k) & 1u)) continue;
+      const std::size_t j = i + step[k];
+      const int other = patch[j];
+      if (other == kNoPatch || other == patch[i] || field.label[j] != SurfaceLabel::kCurved)
+        continue;
+      const double distance = std::abs(s - mean[other]);
+      if (distance < best_distance) best_distance = distance, best = other;
+    }
+    if (best != patch[i]) moves.emplace_back(i, best);
+  };
+  std::vector<std::size_t> candidates;
   std::vector<int> stamp(patch.size(), -1);
-  for (int pass = 0; pass < passes && !candidates.empty(); ++pass) {
+  for (int pass = 0; pass < passes; ++pass) {
     moves.clear();
-    for (std::size_t i : candidates) {
-      if (patch[i] == kNoPatch || field.label[i] != SurfaceLabel::kCurved) continue;
-      const double s = field.shape_index[i];
-      double best_distance = std::abs(s - mean[patch[i]]);
-      std::int32_t best = patch[i];
-      const int column = static_cast<int>(i % width), row = static_cast<int>(i / width);
-      for (int k = 0; k < 8; ++k) {
-        if (!((field.same_side[i] >> k) & 1u)) continue;
-        const std::size_t j = patch.index(column + kNeighborOffsets[k].column, row + kNeighborOffsets[k].row);
-        const int other = patch[j];
-        if (other == kNoPatch || other == patch[i] || field.label[j] != SurfaceLabel::kCurved) continue;
-        const double distance = std::abs(s - mean[other]);
-        if (distance < best_distance) best_distance = distance, best = other;
-      }
-      if (best != patch[i]) moves.emplace_back(i, best);
+    if (pass == 0) {
+      for (std::size_t i = 0; i < patch.size(); ++i) consider(i);  // every pixel at first
+    } else {
+      if (candidates.empty()) break;
+      for (std::size_t i : candidates) consider(i);
     }
     candidates.clear();
     for (const auto& [i, to] : moves) {
@@ -96,7 +105,7 @@ CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndex
   const std::size_t pixels = field.label.size();
   std::vector<int> region_of_pixel(pixels, -1);
   RegionMergeQueue regions;
-  regions.reserve(pixels, 4 * pixels);
+  regions.reserve(pixels);
   double visible_area_mm2 = 0;
   for (std::size_t i = 0; i < pixels; ++i) {
     if (!is_region_pixel(field.label[i])) continue;
@@ -111,7 +120,8 @@ CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndex
     if (field.label[i] != field.label[j]) return;
     if (field.label[i] == SurfaceLabel::kPlanar) {
       double cosine = 0;
-      for (int axis = kNx; axis <= kNz; ++axis) cosine += frames.frame[axis][i] * frames.frame[axis][j];
+      for (int axis = kNx; axis <= kNz; ++axis)
+        cosine += frames.frame[axis][i] * frames.frame[axis][j];
       if (cosine < crease_cos) return;
     }
     regions.add_edge(region_of_pixel[i], region_of_pixel[j]);

@@ -13,7 +13,7 @@ namespace cosmos {
 class RegionMergeQueue {
  public:
   // Regions are created with add_region() in index order, edges with add_edge().
-  void reserve(std::size_t regions, std::size_t edges);
+  void reserve(std::size_t regions);
   int add_region(float shape_index_min, float shape_index_max, float area_mm2);
   void add_edge(int a, int b);
 
@@ -25,14 +25,30 @@ class RegionMergeQueue {
   void count_regions_of_area_at_least(float area_mm2);
   int significant_region_count() const { return significant_regions_; }
 
-  int find(int region);
+  int find(int region) {
+    while (regions_[region].parent != region) {
+      Region& r = regions_[region];
+      r.parent = regions_[r.parent].parent;  // path halving
+      region = r.parent;
+    }
+    return region;
+  }
+  bool is_root(int region) const { return regions_[region].parent == region; }
   void unite(int a, int b);  // unconditional merge (used to fold tiny patches)
-  float area_mm2(int root) const { return area_mm2_[root]; }
-  float shape_index_min(int root) const { return min_[root]; }
-  float shape_index_max(int root) const { return max_[root]; }
-  std::size_t region_count() const { return parent_.size(); }
+  float area_mm2(int root) const { return regions_[root].area_mm2; }
+  float shape_index_min(int root) const { return regions_[root].min; }
+  float shape_index_max(int root) const { return regions_[root].max; }
+  std::size_t region_count() const { return regions_.size(); }
 
  private:
+  // One cache line holds a region's parent and, at a root, everything a merge test reads.
+  struct Region {
+    std::int32_t parent;
+    float min;
+    float max;
+    float area_mm2;
+  };
+  // The last known roots of the two sides; find() of them gives the current roots.
   struct Edge {
     std::int32_t a;
     std::int32_t b;
@@ -40,13 +56,13 @@ class RegionMergeQueue {
   static constexpr int kBuckets = 256;  // over shape diameters [0, 1]: 0.0039 wide
   float merged_diameter(int root_a, int root_b) const;
   static int bucket_of(float diameter);
+  void merge_roots(int a, int b);
 
-  std::vector<std::int32_t> parent_;
-  std::vector<float> min_, max_, area_mm2_;
+  std::vector<Region> regions_;
   std::vector<std::vector<Edge>> buckets_ = std::vector<std::vector<Edge>>(kBuckets + 1);
-  std::vector<Edge> deferred_;
+  std::vector<Edge> deferred_;  // popped edges above the current limit, kept for a resume
   float significant_area_mm2_ = 0;
-  int significant_regions_ = 0;  // popped edges above the current limit, kept for a resume
+  int significant_regions_ = 0;
 };
 
 }  // namespace cosmos

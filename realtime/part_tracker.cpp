@@ -73,6 +73,14 @@ const std::vector<TrackedPart>& PartTracker::add_row(const float* z_mm, std::int
         run.part = std::min(a, part);
       }
     }
+    // Shadows and dropouts split one part's surface: a run near a part seen in the last
+    // link_gap_rows rows (within its column extent and link_gap_columns) belongs to it.
+    for (std::size_t k = 0; run.part < 0 && k < open_.size(); ++k) {
+      const TrackedPart& part = open_[k];
+      if (row_index - part.last_row > parameters_.link_gap_rows + 1) continue;
+      if (part.column_max + gap < run.begin || run.end - 1 + gap < part.column_min) continue;
+      run.part = part.id;
+    }
     if (run.part < 0) {
       if (static_cast<int>(open_.size()) >= parameters_.max_open_parts) {
         ++dropped_runs_;
@@ -103,7 +111,7 @@ const std::vector<TrackedPart>& PartTracker::add_row(const float* z_mm, std::int
     std::fill(labels_.begin() + run.begin, labels_.begin() + run.end, run.part);
   }
   for (std::size_t k = open_.size(); k-- > 0;) {
-    if (touched_[k]) continue;
+    if (touched_[k] || row_index - open_[k].last_row <= parameters_.link_gap_rows) continue;
     TrackedPart done = open_[k];
     done.noise = done.pixels < parameters_.min_pixels;
     completed_.push_back(done);

@@ -14,6 +14,10 @@ struct PartTrackerParameters {
   int max_open_parts = 8;      // more at once: the extra runs are dropped and counted
   int max_runs_per_row = 64;   // more runs in a row: the extra are dropped and counted
   int link_gap_columns = 1;    // runs this many columns apart still touch (speckle gaps)
+  // A part stays open this many rows without data, and a run within its column extent
+  // (± link_gap_columns) in that time joins it: laser shadows and dropouts split a part's
+  // surface into pieces a few millimetres apart. 0: only touching runs continue a part.
+  int link_gap_rows = 0;
   std::int64_t min_pixels = 50;  // smaller completed components are noise
 };
 
@@ -27,6 +31,16 @@ struct TrackedPart {
   std::int64_t merged_into = -1;  // completed by merging into this part
   bool noise = false;             // fewer than min_pixels
 };
+
+// The cell's tracking: pieces of one part up to 25 columns and 25 rows (10 mm) apart are
+// one part — the simulated catalog's shadows and grazing-angle dropouts split parts by up to
+// a few millimetres, while parts on the belt lie tens of millimetres apart.
+inline PartTrackerParameters cell_part_tracking() {
+  PartTrackerParameters parameters;
+  parameters.link_gap_columns = 25;
+  parameters.link_gap_rows = 25;
+  return parameters;
+}
 
 class PartTracker {
  public:

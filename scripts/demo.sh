@@ -1,15 +1,12 @@
 #!/usr/bin/env bash
-# The README's main job (until the simulated cell exists): synthesize analytic surfaces,
-# run `cosmos inspect` on each, and say where the pictures are.
+# The README's main job: the simulated work cell with the default configuration. Catalog parts
+# at random poses ride the simulated conveyor past the laser-line scanner at the configured
+# line rate; each part is recognized and its pose published over LCM (COSMOS_POSE) while a
+# live table shows it; a summary ends the run. The first run builds the model base of the
+# default catalog (every part from 320 directions: ~15-20 minutes on 2 cores) and caches it.
+# Extra arguments go to `cosmos cell` (e.g. --parts 5, --unpaced).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/build.sh"
 build_dir=${COSMOS_BUILD_DIR:-$root/build}
-cosmos="$build_dir/apps/cosmos"
-out=${COSMOS_DEMO_DIR:-$root/demo-output}
-mkdir -p "$out"
-for shape in sphere cylinder saddle torus capsule box-corner ellipsoid; do
-  "$cosmos" synth "$shape" --out "$out/$shape.tiff" --noise-mm 0.02 --seed 7 --rotate-deg 20
-  "$cosmos" inspect "$out/$shape.tiff" --out "$out/$shape"
-  echo "$shape: pictures in $out/$shape/ (range.png shape_index.png csmps.png gauss_map.png spectrum.png), features in $out/$shape/cosmos.json"
-done
+exec "$build_dir/apps/cosmos" cell --config "$root/config/cell.yaml" "$@"

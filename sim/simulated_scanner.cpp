@@ -2,8 +2,7 @@
 
 #include <stdexcept>
 
-#include "firmware_bridge/laser_triangulation.hpp"
-#include "firmware_bridge/profile_resampling.hpp"
+#include "firmware_bridge/stripe_profiler.hpp"
 #include "sim/camera_frame_renderer.hpp"
 #include "sim/seeded_random.hpp"
 
@@ -24,20 +23,12 @@ int laser_samples(const ScannerParameters& parameters, ScanMode mode) {
 struct SimulatedScanner::CameraPath {
   CameraPath(const ScannerParameters& parameters, const TriangulationGeometry& geometry)
       : renderer(parameters, geometry),
-        extractor(renderer.extraction_parameters()),
-        triangulator(geometry),
-        frame(renderer.make_frame()) {
-    extractor.reserve(frame.cols, peaks);
-    triangulator.reserve(frame.cols, stripe);
-  }
+        frame(renderer.make_frame()),
+        profiler(geometry, renderer.extraction_parameters(), frame.cols) {}
 
   CameraFrameRenderer renderer;
-  LaserStripeExtractor extractor;
-  LaserTriangulator triangulator;
   cv::Mat frame;
-  StripePeaks peaks;
-  TriangulatedStripe stripe;
-  ProfileResamplingParameters resampling;
+  StripeProfiler profiler;  // the hardware's frame → profile path
 };
 
 SimulatedScanner::SimulatedScanner(const ConveyorScene& scene, const ScannerParameters& parameters, ScanMode mode)
@@ -60,7 +51,7 @@ const cv::Mat& SimulatedScanner::last_frame() const {
 
 const StripePeaks& SimulatedScanner::last_peaks() const {
   if (!camera_) throw std::logic_error("SimulatedScanner: stripe peaks exist in camera mode only");
-  return camera_->peaks;
+  return camera_->profiler.peaks();
 }
 
 void SimulatedScanner::acquire(std::int64_t profile_index, Profile& profile) noexcept {
@@ -92,9 +83,7 @@ void SimulatedScanner::acquire_camera_mode(std::int64_t encoder_ticks, Profile& 
   CameraPath& path = *camera_;
   path.renderer.render(line_, mix_seed(parameters_.seed ^ kFrameStream, static_cast<std::uint64_t>(encoder_ticks)),
                        path.frame);
-  path.extractor.extract(path.frame, path.renderer.roi(), path.peaks);
-  path.triangulator.triangulate(path.peaks, path.stripe);
-  resample_to_profile(path.stripe.x_mm, path.stripe.z_mm, path.resampling, profile);
+  path.profiler.profile_frame(path.frame, path.renderer.roi(), profile);
 }
 
 }  // namespace cosmos

@@ -9,7 +9,7 @@
 #include "firmware_bridge/edge_event_merger.hpp"
 #include "firmware_bridge/gpio_input_decoder.hpp"
 #include "firmware_bridge/v4l2_camera.hpp"
-#include "tests/firmware_bridge/allocation_counter.hpp"
+#include "tests/common/allocation_counter.hpp"
 #include "tests/firmware_bridge/fake_video_device.hpp"
 
 namespace cosmos {

@@ -1,4 +1,4 @@
-#include "tests/firmware_bridge/allocation_counter.hpp"
+#include "tests/common/allocation_counter.hpp"
 
 #include <cstdlib>
 #include <new>

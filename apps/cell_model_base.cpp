@@ -1,0 +1,53 @@
+#include "apps/cell_model_base.hpp"
+
+#include <cstdio>
+
+#include "apps/catalog_content_hash.hpp"
+#include "apps/model_base_builder.hpp"
+#include "apps/model_base_parameters.hpp"
+#include "apps/model_base_progress.hpp"
+#include "core/input_error.hpp"
+#include "core/io/model_base_file.hpp"
+#include "core/io/xxh64.hpp"
+
+namespace cosmos {
+namespace {
+
+ModelBaseBuildSettings build_settings(const CellConfig& config) {
+  ModelBaseBuildSettings settings;
+  settings.view_count = config.cell.model_views;
+  return settings;
+}
+
+}  // namespace
+
+std::filesystem::path cached_model_base_path(const CellConfig& config, const PartCatalog& catalog) {
+  const ModelBaseBuildSettings settings = build_settings(config);
+  const std::string key =
+      catalog_content_hash(catalog) +
+      model_base_parameters_text(settings.cosmos, config.scanner, settings.registration,
+                                 settings.view_count, settings.grouping);
+  char name[64];
+  std::snprintf(name, sizeof name, "cell-%d-views-%016llx.cmb", settings.view_count,
+                static_cast<unsigned long long>(xxh64(key)));
+  return default_mesh_cache_dir().parent_path() / "modelbases" / name;
+}
+
+ModelBase load_cell_model_base(const CellConfig& config, const PartCatalog& catalog) {
+  const CosmosParameters cosmos;
+  if (!config.cell.model_base.empty()) return read_model_base_for(config.cell.model_base, cosmos);
+  const std::filesystem::path path = cached_model_base_path(config, catalog);
+  if (std::filesystem::exists(path)) return read_model_base_for(path, cosmos);
+  std::fprintf(stderr, "cell: building the model base (first run; cached as %s)\n",
+               path.string().c_str());
+  std::error_code error;
+  std::filesystem::create_directories(path.parent_path(), error);
+  if (error)
+    throw InputError(path.parent_path().string() + ": cannot create (" + error.message() + ")");
+  const ModelBase base =
+      build_model_base(catalog, config.scanner, build_settings(config), progress_printer(catalog));
+  write_model_base(base, path);
+  return read_model_base_for(path, cosmos);
+}
+
+}  // namespace cosmos

@@ -1,0 +1,20 @@
+#pragma once
+// The model base a cell runs with: the file the config names, or one built on first run and
+// cached beside the mesh cache (~/.cache/cosmos-cell/modelbases/), named after the hash of the
+// catalog's content and every parameter the base depends on, so a changed catalog or scanner
+// builds a new base instead of loading a stale one.
+#include <filesystem>
+
+#include "core/model_base.hpp"
+#include "realtime/cell_config.hpp"
+#include "sim/part_catalog.hpp"
+
+namespace cosmos {
+
+std::filesystem::path cached_model_base_path(const CellConfig& config, const PartCatalog& catalog);
+
+// Loads the configured or cached base; builds and caches it (with a progress bar) when the
+// cache has none. InputError naming the file when a configured base is missing or refused.
+ModelBase load_cell_model_base(const CellConfig& config, const PartCatalog& catalog);
+
+}  // namespace cosmos

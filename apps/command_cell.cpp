@@ -1,0 +1,180 @@
+// `cosmos cell --config config/cell.yaml [--source sim|hardware] [--hardware FILE] [--parts N]
+// [--duration-s S] [--unpaced] [--replay FILE]`: the work cell. Profiles from the scanner
+// source run through the real-time loop (realtime/cell_runner.hpp); each part's pose goes out
+// on COSMOS_POSE while a live table shows it; a summary ends the run.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "apps/cell_model_base.hpp"
+#include "apps/command_registry.hpp"
+#include "core/input_error.hpp"
+#include "core/recognizer.hpp"
+#include "realtime/cell_config.hpp"
+#include "realtime/cell_runner.hpp"
+#include "realtime/hardware_config.hpp"
+#include "realtime/hardware_source.hpp"
+#include "realtime/replay_source.hpp"
+#include "realtime/simulated_source.hpp"
+
+namespace cosmos::cli {
+namespace {
+
+struct CellOptions {
+  std::string config = "config/cell.yaml";
+  std::string source = "sim";
+  std::string hardware;
+  int parts = -1;
+  double duration_s = 0;
+  bool unpaced = false;
+  std::string replay;
+};
+
+std::unique_ptr<ScannerSource> make_source(const CellOptions& options, const CellConfig& config,
+                                           const PartCatalog& catalog) {
+  if (!options.replay.empty()) {
+    ReplaySourceSettings settings;
+    settings.max_profile_width = static_cast<std::size_t>(config.scanner.points_per_profile);
+    settings.mm_per_profile = config.scanner.profile_step_mm();
+    return std::make_unique<ReplaySource>(options.replay, settings);
+  }
+  if (options.source == "hardware") {
+    if (options.hardware.empty())
+      throw InputError(
+          "cell: --source hardware needs --hardware FILE (see config/hardware-example.yaml)");
+    return std::make_unique<HardwareSource>(read_hardware_config(options.hardware), config.scanner);
+  }
+  SimulatedSourceSettings settings;
+  settings.parts = options.parts > 0 ? options.parts : config.sim_source.parts;
+  settings.seed = config.sim_source.seed;
+  settings.part_gap_mm = config.sim_source.part_gap_mm;
+  settings.pose =
+      config.sim_source.pose == SimPoseMode::kResting ? PoseMode::kResting : PoseMode::kRandom;
+  settings.part_names = config.sim_source.part_names;
+  return std::make_unique<SimulatedSource>(catalog, config.scanner, settings);
+}
+
+double percentile(std::vector<double> values, double q) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(values.size())));
+  return values[std::min(values.size() - 1, rank > 0 ? rank - 1 : 0)];
+}
+
+void run(const CellOptions& options) {
+  const CellConfig config = load_cell_config(options.config);
+  const PartCatalog catalog = read_part_catalog(config.cell.catalog);
+  std::unique_ptr<ScannerSource> source = make_source(options, config, catalog);
+  if (source->start() != SourceStatus::kOk) throw InputError(std::string(source->last_error()));
+  if (std::abs(source->mm_per_profile() - config.conditioning.grid_mm) > 1e-9)
+    throw InputError(options.config +
+                     ": conditioning.grid_mm must equal the belt travel per profile (" +
+                     std::to_string(source->mm_per_profile()) + " mm)");
+  const ModelBase base = load_cell_model_base(config, catalog);
+  const Recognizer recognizer(base, CosmosParameters{}, RecognitionParameters{});
+  LcmPublisher publisher(config.lcm.url);
+
+  const bool unpaced = options.unpaced || !options.replay.empty();
+  ScanLoopSettings loop_settings;
+  loop_settings.conditioning = config.conditioning;
+  loop_settings.tracking = config.tracking.tracker;
+  loop_settings.max_part_rows = config.max_part_rows();
+  loop_settings.part_queue_slots = config.realtime.part_queue_slots;
+  loop_settings.wait_for_recognizer = unpaced;
+  ScanLoop loop(loop_settings);
+
+  PartRecognitionContext context;
+  context.recognizer = &recognizer;
+  context.model_base = &base;
+  for (const ModelPart& part : base.parts) {
+    const PartEntry* entry = catalog.find(part.name);
+    context.catalog_index_of_base_part.push_back(
+        entry ? static_cast<int>(entry - catalog.parts.data()) : -1);
+  }
+  context.T_cell_scanner = config.cell.T_cell_scanner;
+  context.mm_per_tick = config.scanner.encoder_mm_per_tick;
+  context.grid_mm = config.conditioning.grid_mm;
+  context.x0_loop_mm = loop.x0_loop_mm();
+
+  CellRunSettings settings;
+  settings.line_rate_hz = config.scanner.line_rate_hz;
+  settings.paced = !unpaced;
+  settings.deterministic_output = !options.replay.empty();
+  settings.realtime = config.realtime.thread;
+  settings.status_period_s = config.lcm.status_period_s;
+  settings.pose_queue_slots = config.realtime.pose_queue_slots;
+  settings.profile_ring_slots = config.realtime.profile_ring_slots;
+  settings.publish_profiles = config.lcm.publish_profiles;
+  settings.duration_s = options.duration_s;
+
+  const auto* simulated = dynamic_cast<const SimulatedSource*>(source.get());
+  std::vector<double> latencies_ms;
+  int correct = 0;
+  std::printf("%5s  %-18s %-9s %9s %9s %9s  %6s %8s %10s\n", "part", "name", "status", "x_mm",
+              "y_mm", "z_mm", "score", "rms_mm", "latency_ms");
+  const CellRunSummary summary = run_cell(
+      *source, loop, context, publisher, settings, [&](const PartRecognition& recognition) {
+        const PartPose& pose = recognition.pose;
+        latencies_ms.push_back(pose.latency_ms);
+        std::string truth;
+        if (simulated &&
+            pose.part_seq < static_cast<std::int64_t>(simulated->placed_parts().size())) {
+          truth = simulated->placed_parts()[static_cast<std::size_t>(pose.part_seq)].name;
+          correct += pose.status == PoseStatus::kOk && pose.part_name == truth;
+        }
+        const Eigen::Vector3d& t = pose.translation_cell_part_mm;
+        std::printf("%5lld  %-18s %-9s %9.2f %9.2f %9.2f  %6.3f %8.4f %10.1f%s%s\n",
+                    static_cast<long long>(pose.part_seq),
+                    pose.status == PoseStatus::kOk ? pose.part_name.c_str() : "-",
+                    to_string(pose.status), t.x(), t.y(), t.z(), pose.score,
+                    pose.registration_rms_mm, pose.latency_ms,
+                    truth.empty() ? "" : "  truth: ", truth.c_str());
+        std::fflush(stdout);
+      });
+  if (!summary.source_error.empty()) throw InputError(summary.source_error);
+  std::printf(
+      "\ncell: %lld profiles (%lld dropped, %lld deadline overruns), %lld parts seen "
+      "(%lld dropped), %lld poses published\n",
+      static_cast<long long>(summary.profiles), static_cast<long long>(summary.profiles_dropped),
+      static_cast<long long>(summary.deadline_overruns), static_cast<long long>(summary.parts_seen),
+      static_cast<long long>(summary.parts_dropped),
+      static_cast<long long>(summary.poses_published));
+  if (simulated)
+    std::printf("cell: %d of %zu parts identified correctly (simulated ground truth)\n", correct,
+                latencies_ms.size());
+  std::printf("cell: latency end of part -> pose published: median %.1f ms, p99 %.1f ms\n",
+              percentile(latencies_ms, 0.5), percentile(latencies_ms, 0.99));
+  std::printf(
+      "cell: per-profile processing p50 %.0f us, p99 %.0f us, max %.0f us; start jitter "
+      "p50 %.0f us, p99 %.0f us\n",
+      summary.profile_time_p50_us, summary.profile_time_p99_us, summary.profile_time_max_us,
+      summary.start_jitter_p50_us, summary.start_jitter_p99_us);
+  std::printf("cell: %s\n", summary.realtime_report.c_str());
+}
+
+void install(CLI::App& root) {
+  auto options = std::make_shared<CellOptions>();
+  CLI::App* command =
+      root.add_subcommand("cell", "Run the work cell: scan, recognize, publish poses over LCM");
+  command->add_option("--config", options->config, "cell configuration")->capture_default_str();
+  command->add_option("--source", options->source, "scanner source")
+      ->check(CLI::IsMember({"sim", "hardware"}))
+      ->capture_default_str();
+  command->add_option("--hardware", options->hardware, "hardware YAML for --source hardware")
+      ->type_name("FILE");
+  command->add_option("--parts", options->parts, "simulated parts (default: sim_source.parts)");
+  command->add_option("--duration-s", options->duration_s, "stop after this much scanning time")
+      ->check(CLI::NonNegativeNumber);
+  command->add_flag("--unpaced", options->unpaced, "do not pace the loop at the line rate");
+  command->add_option("--replay", options->replay, "replay an lcm-logger log of COSMOS_PROFILE")
+      ->type_name("FILE");
+  command->callback([options] { run(*options); });
+}
+
+const CommandRegistration registration("cell", install);
+
+}  // namespace
+}  // namespace cosmos::cli

@@ -1,0 +1,46 @@
+#pragma once
+// Where profiles come from, as the acquisition loop sees it. Three implementations: the
+// simulated conveyor (simulated_source.hpp), a recorded log (replay_source.hpp) and the real
+// camera + GPIO (hardware_source.hpp). The loop and everything after it cannot tell them
+// apart: each hands out the same Profile (core/profile.hpp) with the same field meanings.
+//
+// Lifecycle: construct (may throw InputError on bad settings) → start() → reserve() each ring
+// slot → next() until kEndOfStream or the loop stops → stop(). start() is set-up and may
+// allocate; next() runs on the acquisition thread: no allocation once the Profile was
+// reserved, no exceptions, no locks; failures come back as status values.
+#include <cstdint>
+#include <string_view>
+
+#include "core/profile.hpp"
+
+namespace cosmos {
+
+enum class SourceStatus : std::uint8_t {
+  kOk,           // `out` holds the next profile
+  kEndOfStream,  // a finite source is exhausted; every later call says so too
+  kTimeout,      // no profile this call (watchdog expired, frame discarded): call again
+  kError,        // see last_error(); the source must be stopped and started again
+};
+
+class ScannerSource {
+ public:
+  virtual ~ScannerSource() = default;
+
+  // Opens devices / files and builds every buffer. kError with last_error() on failure.
+  virtual SourceStatus start() = 0;
+  // Sizes a ring slot once for the widest profile this source emits, so next() never
+  // allocates into it.
+  virtual void reserve(Profile& profile) const = 0;
+  // Fills seq, encoder_ticks, t_us, x0_mm, dx_mm and z_mm of `out`.
+  virtual SourceStatus next(Profile& out) noexcept = 0;
+  virtual void stop() noexcept = 0;
+
+  // Nominal belt travel between consecutive profiles (the conveyor model's Δy).
+  virtual double mm_per_profile() const = 0;
+  // One line naming the device or file and the reason of the last failure; empty if none.
+  virtual std::string_view last_error() const noexcept = 0;
+  // Profiles lost so far (camera frame gaps, replayed profiles too wide for the ring slots).
+  virtual std::uint64_t dropped_profiles() const noexcept = 0;
+};
+
+}  // namespace cosmos

@@ -1,0 +1,173 @@
+// The simulated cell's loop in process: catalog parts on the simulated conveyor → the
+// real-time loop (conditioning, tracking, incremental COSMOS) → the recognizer worker →
+// poses. The stream replayed from an LCM log with the worker slowed down gives byte-identical
+// poses, equal to those of the live run; and the acquisition thread's per-profile work
+// allocates nothing after warm-up.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <lcm/lcm-cpp.hpp>
+#include <memory>
+
+#include "core/io/model_base_file.hpp"
+#include "core/recognizer.hpp"
+#include "realtime/cell_runner.hpp"
+#include "realtime/lcm_channels.hpp"
+#include "realtime/lcm_codec.hpp"
+#include "realtime/lcm_message_conversion.hpp"
+#include "realtime/memory_publisher.hpp"
+#include "realtime/replay_source.hpp"
+#include "realtime/simulated_source.hpp"
+#include "sim/part_catalog.hpp"
+#include "tests/common/allocation_counter.hpp"
+#include "tests/regression_model_base.hpp"
+
+namespace cosmos {
+namespace {
+
+namespace fs = std::filesystem;
+
+class CellLoop : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    base_ = std::make_unique<ModelBase>(read_model_base(testing::regression_model_base()));
+    catalog_ = std::make_unique<PartCatalog>(
+        read_part_catalog(fs::path(COSMOS_SOURCE_DIR) / "config/parts-regression.yaml"));
+    recognizer_ = std::make_unique<Recognizer>(*base_, CosmosParameters{}, RecognitionParameters{});
+  }
+  static void TearDownTestSuite() {
+    recognizer_.reset();
+    catalog_.reset();
+    base_.reset();
+  }
+
+  static SimulatedSourceSettings sim_settings(int parts, std::uint64_t seed) {
+    SimulatedSourceSettings settings;
+    settings.parts = parts;
+    settings.seed = seed;
+    return settings;
+  }
+
+  static ScanLoopSettings loop_settings() {
+    ScanLoopSettings settings;
+    settings.wait_for_recognizer = true;  // unpaced: every part is recognized
+    return settings;
+  }
+
+  static PartRecognitionContext context(const ScanLoop& loop) {
+    PartRecognitionContext context;
+    context.recognizer = recognizer_.get();
+    context.model_base = base_.get();
+    for (const ModelPart& part : base_->parts) {
+      int index = -1;
+      for (std::size_t c = 0; c < catalog_->parts.size(); ++c)
+        if (catalog_->parts[c].name == part.name) index = static_cast<int>(c);
+      context.catalog_index_of_base_part.push_back(index);
+    }
+    context.mm_per_tick = ScannerParameters{}.encoder_mm_per_tick;
+    context.x0_loop_mm = loop.x0_loop_mm();
+    return context;
+  }
+
+  static CellRunSettings unpaced(bool deterministic) {
+    CellRunSettings settings;
+    settings.paced = false;
+    settings.deterministic_output = deterministic;
+    return settings;
+  }
+
+  static std::vector<std::uint8_t> pose_bytes(const PartPose& pose) {
+    cosmos_lcm::part_pose_t message{};
+    to_message(pose, message);
+    std::vector<std::uint8_t> bytes;
+    EXPECT_TRUE(encode_message(message, bytes));
+    return bytes;
+  }
+
+  static inline std::unique_ptr<ModelBase> base_;
+  static inline std::unique_ptr<PartCatalog> catalog_;
+  static inline std::unique_ptr<Recognizer> recognizer_;
+};
+
+TEST_F(CellLoop, ReplayedStreamGivesByteIdenticalPosesWithASlowWorker) {
+  const fs::path log_path =
+      fs::temp_directory_path() / ("cosmos-cell-replay-" + std::to_string(::getpid()) + ".lcmlog");
+  MemoryPublisher live;
+  {
+    SimulatedSource source(*catalog_, ScannerParameters{}, sim_settings(4, 21));
+    ASSERT_EQ(source.start(), SourceStatus::kOk);
+    ScanLoop loop(loop_settings());
+    CellRunSettings settings = unpaced(true);
+    settings.publish_profiles = true;
+    run_cell(source, loop, context(loop), live, settings);
+    lcm::LogFile log(log_path.string(), "w");
+    ASSERT_TRUE(log.good());
+    std::int64_t event_number = 0;
+    for (const Profile& profile : live.profiles) {
+      cosmos_lcm::range_profile_t message{};
+      to_message(profile, message);
+      std::vector<std::uint8_t> bytes;
+      ASSERT_TRUE(encode_message(message, bytes));
+      lcm::LogEvent event;
+      event.eventnum = event_number++;
+      event.timestamp = profile.t_us;
+      event.channel = kProfileChannel;
+      event.datalen = static_cast<std::int32_t>(bytes.size());
+      event.data = bytes.data();
+      ASSERT_EQ(log.writeEvent(&event), 0);
+    }
+  }
+  ASSERT_EQ(live.poses.size(), 4u);
+
+  std::vector<std::vector<std::uint8_t>> runs[2];
+  for (int run = 0; run < 2; ++run) {
+    ReplaySource source(log_path);
+    ASSERT_EQ(source.start(), SourceStatus::kOk) << source.last_error();
+    ScanLoop loop(loop_settings());
+    MemoryPublisher replayed;
+    CellRunSettings settings = unpaced(true);
+    settings.recognizer_delay_ms = run == 1 ? 250 : 0;
+    run_cell(source, loop, context(loop), replayed, settings);
+    for (const PartPose& pose : replayed.poses) runs[run].push_back(pose_bytes(pose));
+  }
+  fs::remove(log_path);
+  ASSERT_EQ(runs[0].size(), 4u);
+  EXPECT_EQ(runs[0], runs[1]);
+  for (std::size_t i = 0; i < live.poses.size(); ++i)
+    EXPECT_EQ(runs[0][i], pose_bytes(live.poses[i])) << "pose " << i;
+}
+
+TEST_F(CellLoop, ProcessingAProfileAllocatesNothingAfterWarmUp) {
+  SimulatedSource source(*catalog_, ScannerParameters{}, sim_settings(2, 3));
+  ASSERT_EQ(source.start(), SourceStatus::kOk);
+  ScanLoopSettings settings = loop_settings();
+  settings.wait_for_recognizer = false;
+  settings.builders = 2;
+  ScanLoop loop(settings);
+  Profile profile;
+  source.reserve(profile);
+  // Warm-up: the first part passes, so every buffer has seen a part.
+  const std::int64_t warm_up = source.placed_parts()[0].last_profile + 10;
+  for (std::int64_t k = 0; k <= warm_up; ++k) {
+    ASSERT_EQ(source.next(profile), SourceStatus::kOk);
+    loop.process(profile);
+  }
+  int returned = -1;
+  while (loop.completed().try_pop(returned)) loop.returned().try_push(returned);
+  std::uint64_t allocations = 0;
+  std::int64_t processed = 0;
+  while (source.next(profile) == SourceStatus::kOk) {
+    const std::uint64_t before = test::allocations_on_this_thread();
+    loop.process(profile);
+    allocations += test::allocations_on_this_thread() - before;
+    ++processed;
+  }
+  EXPECT_GT(processed, 100);
+  EXPECT_EQ(loop.counters().parts_seen, 2);
+  EXPECT_EQ(allocations, 0u);
+}
+
+}  // namespace
+}  // namespace cosmos
