@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/packed_registration_points.hpp"
+#include "core/model_surface.hpp"
 #include "core/pose_hypotheses.hpp"
 
 namespace cosmos {
@@ -38,12 +38,9 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
   for (std::size_t v = 0; v < base.views.size(); ++v) {
     const ModelBaseView& view = base.views[v];
     if (view.part_index != part) continue;
-    RegistrationPoints unpacked;
-    if (view.registration.size() == 0)
-      unpacked = unpack_registration_points(view.registration_packed);
-    const RegistrationPoints& model = view.registration.size() > 0 ? view.registration : unpacked;
+    const ModelSurface model(view);
     for (const PoseHypothesis& hypothesis :
-         rank_pose_hypotheses(scoring, model, no_patch_pose, registration,
+         rank_pose_hypotheses(scoring, model.points(), no_patch_pose, registration,
                               {.in_plane_turns = parameters.in_plane_turns})) {
       best.push_back({static_cast<int>(v), hypothesis.T_model_scene,
                       hypothesis.score.truncated_mean_square_mm2});

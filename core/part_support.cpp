@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/packed_registration_points.hpp"
+#include "core/model_surface.hpp"
 
 namespace cosmos {
 
@@ -28,13 +28,9 @@ PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBas
     const ModelBaseView& other = base.views[v];
     if (static_cast<int>(v) == matched || other.part_index != view.part_index) continue;
     if (other.direction_part.dot(view.direction_part) < min_cosine) continue;
-    RegistrationPoints unpacked;
-    if (other.registration.size() == 0)
-      unpacked = unpack_registration_points(other.registration_packed);
-    const RegistrationPoints& other_points =
-        other.registration.size() > 0 ? other.registration : unpacked;
-    correspondence_distances(scene, other_points, other.T_scanner_part * T_part_scene, strict,
-                             distance_mm);
+    const ModelSurface other_surface(other);
+    correspondence_distances(scene, other_surface.points(), other.T_scanner_part * T_part_scene,
+                             strict, distance_mm);
     for (std::size_t i = 0; i < nearest_mm.size(); ++i)
       nearest_mm[i] = std::min(nearest_mm[i], distance_mm[i]);
     ++support.views_used;

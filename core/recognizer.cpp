@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
-#include "core/packed_registration_points.hpp"
+#include "core/model_surface.hpp"
 #include "core/part_pose_search.hpp"
 #include "core/part_support.hpp"
 #include "core/pose_hypotheses.hpp"
@@ -50,23 +50,6 @@ double candidate_score(double inlier_fraction, double rms_mm, double goodness,
   const double residual_factor = std::max(0.0, 1.0 - rms_mm / (2.0 * parameters.max_rms_mm));
   return inlier_fraction * residual_factor * (0.8 + 0.2 * std::clamp(goodness, 0.0, 1.0));
 }
-
-// A model view's registration surface: the view's own when it has one, else unpacked from
-// the base's compact form (model bases read from a file keep only that).
-class ModelSurface {
- public:
-  explicit ModelSurface(const ModelBaseView& view) : view_(view) {
-    if (view.registration.size() == 0)
-      unpacked_ = unpack_registration_points(view.registration_packed);
-  }
-  const RegistrationPoints& points() const {
-    return view_.registration.size() > 0 ? view_.registration : unpacked_;
-  }
-
- private:
-  const ModelBaseView& view_;
-  RegistrationPoints unpacked_;
-};
 
 const RecognitionCandidate* best_candidate(const std::vector<RecognitionCandidate>& candidates) {
   const RecognitionCandidate* best = nullptr;
