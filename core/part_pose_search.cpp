@@ -35,6 +35,16 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
   const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
   if (scoring.size() == 0) return best;
   const PoseFromPatches no_patch_pose;  // status too_few_pairs: not used
+  const auto keep_best = [&best](std::size_t count) {
+    // Ties by view, then generation order (stable).
+    std::stable_sort(best.begin(), best.end(),
+                     [](const ViewPoseHypothesis& a, const ViewPoseHypothesis& b) {
+                       return a.truncated_mean_square_mm2 < b.truncated_mean_square_mm2;
+                     });
+    if (best.size() > count) best.resize(count);
+  };
+  const auto refined_count = static_cast<std::size_t>(
+      std::max(parameters.refined_hypotheses, parameters.best_hypotheses));
   for (std::size_t v = 0; v < base.views.size(); ++v) {
     const ModelBaseView& view = base.views[v];
     if (view.part_index != part) continue;
@@ -45,14 +55,23 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
       best.push_back({static_cast<int>(v), hypothesis.T_model_scene,
                       hypothesis.score.truncated_mean_square_mm2});
     }
-    // Keep only the best few so far: ties by view, then generation order (stable).
-    std::stable_sort(best.begin(), best.end(),
-                     [](const ViewPoseHypothesis& a, const ViewPoseHypothesis& b) {
-                       return a.truncated_mean_square_mm2 < b.truncated_mean_square_mm2;
-                     });
-    if (best.size() > static_cast<std::size_t>(parameters.best_hypotheses))
-      best.resize(static_cast<std::size_t>(parameters.best_hypotheses));
+    keep_best(refined_count);
   }
+  RegistrationParameters short_registration = registration;
+  short_registration.max_iterations = parameters.refinement_iterations;
+  for (ViewPoseHypothesis& hypothesis : best) {
+    const ModelSurface model(base.views[static_cast<std::size_t>(hypothesis.view)]);
+    const RegistrationResult refined =
+        register_views(scoring, model.points(), hypothesis.T_model_scene, short_registration);
+    if (refined.status == RegistrationStatus::invalid_input) continue;
+    const AlignmentScore score =
+        score_alignment(scoring, model.points(), refined.T_model_scene, registration);
+    if (score.truncated_mean_square_mm2 < hypothesis.truncated_mean_square_mm2) {
+      hypothesis.T_model_scene = refined.T_model_scene;
+      hypothesis.truncated_mean_square_mm2 = score.truncated_mean_square_mm2;
+    }
+  }
+  keep_best(static_cast<std::size_t>(parameters.best_hypotheses));
   return best;
 }
 

@@ -6,8 +6,11 @@
 // the scene's true viewing direction, beyond what registration (ch. 6) converges from. Here
 // every view of the part proposes initial poses (principal axes, §6.7.2, and turns about the
 // viewing axis, pose_hypotheses.hpp), scored by one correspondence pass on a small, evenly
-// spread subset of the scene's control points; the best few over all views are returned for
-// full registration. A budget of scored hypotheses (views x turns) bounds the work.
+// spread subset of the scene's control points. A single pass ranks a start 15 degrees off the
+// truth no better than a wrong view's: the best `refined_hypotheses` therefore take a few
+// registration iterations on the subset first and are ranked again, and only the best few of
+// those are returned for full registration. Budgets of scored hypotheses (views x turns) and
+// of subset iterations bound the work.
 #include <vector>
 
 #include "core/model_base.hpp"
@@ -20,6 +23,8 @@ namespace cosmos {
 struct PartPoseSearchParameters {
   int scoring_points = 200;  // scene control points used to score a hypothesis
   int in_plane_turns = 12;
+  int refined_hypotheses = 32;  // registered on the subset before the final ranking
+  int refinement_iterations = 8;
   int best_hypotheses = 4;  // returned, best first
 };
 

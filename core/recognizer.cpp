@@ -222,9 +222,8 @@ void Recognizer::register_candidate(const RegistrationPoints& scene_points,
   for (const RigidTransform& start : starts) {
     const RegistrationResult registration =
         register_views(scene_points, model, start, parameters_.registration);
-    if (registration.status == RegistrationStatus::invalid_input ||
-        registration.status == RegistrationStatus::degenerate)
-      continue;
+    // A degenerate (still planar) result is kept: its support decides.
+    if (registration.status == RegistrationStatus::invalid_input) continue;
     const Support support =
         measure_support(scene_points, model, registration.T_model_scene, parameters_);
     if (candidate.registered && support.inlier_fraction <= best_support.inlier_fraction) continue;

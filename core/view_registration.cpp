@@ -88,7 +88,8 @@ double rejection_distance_mm(const std::vector<Correspondence>& candidates,
                     p.max_correspondence_distance_mm);
 }
 
-enum class SolveStatus { ok, degenerate };
+// ok: every direction constrained or only 1-2 weak (a cylinder); planar: 3 or more weak.
+enum class SolveStatus { ok, planar, unconstrained };
 
 struct Increment {
   RigidTransform T_new_old;
@@ -131,15 +132,16 @@ SolveStatus solve_increment(const std::vector<Correspondence>& inliers, Incremen
   const double min_constraint = kMinMeanConstraint * total_weight;
   int weak_directions = 0;
   for (int k = 0; k < 6; ++k) weak_directions += eigen.eigenvalues()(k) > min_constraint ? 0 : 1;
-  // A plane leaves three directions free (§6.8): nothing sensible to solve.
-  if (weak_directions >= kMaxWeakDirections) return SolveStatus::degenerate;
+  if (weak_directions == 6) return SolveStatus::unconstrained;
   Eigen::Matrix<double, 6, 1> x;
   if (weak_directions == 0) {
     x = H_full.ldlt().solve(-g);
   } else {
-    // A surface of revolution or a cylinder leaves one or two directions to noise: step only
-    // in the constrained ones (truncated eigen-solve in the scaled parameters) and keep the
-    // rest of the current estimate, which the initial pose supplied.
+    // A surface of revolution or a cylinder leaves one or two directions to noise, a plane
+    // three (§6.8): step only in the constrained ones (truncated eigen-solve in the scaled
+    // parameters) and keep the rest of the current estimate, which the initial pose supplied.
+    // From a rough start the inliers may be one flat face at first; the constrained step
+    // brings in more of the surface, and the next pass constrains everything.
     const Eigen::Matrix<double, 6, 6>& V = eigen.eigenvectors();
     const Eigen::Matrix<double, 6, 1> scaled_g = scale.asDiagonal() * g;
     Eigen::Matrix<double, 6, 1> scaled_x = Eigen::Matrix<double, 6, 1>::Zero();
@@ -151,7 +153,7 @@ SolveStatus solve_increment(const std::vector<Correspondence>& inliers, Incremen
   increment.T_new_old = {rotation, centroid - rotation * centroid + x.tail<3>()};
   increment.rotation_rad = x.head<3>().norm();
   increment.centroid_shift_mm = x.tail<3>().norm();
-  return SolveStatus::ok;
+  return weak_directions >= kMaxWeakDirections ? SolveStatus::planar : SolveStatus::ok;
 }
 
 }  // namespace
@@ -170,6 +172,7 @@ RegistrationResult register_views(const RegistrationPoints& scene, const Registr
   inliers.reserve(static_cast<std::size_t>(scene.size()));
   const Eigen::Vector3d scene_centroid_mm = scene.position_mm.rowwise().mean();
   RigidTransform T_last = result.T_model_scene;
+  bool planar = false;  // the last pass left 3 or more directions free
   result.status = RegistrationStatus::iteration_budget_exhausted;
   for (int iteration = 1; iteration <= parameters.max_iterations; ++iteration) {
     result.intersection_steps +=
@@ -201,7 +204,9 @@ RegistrationResult register_views(const RegistrationPoints& scene, const Registr
     result.rms_residual_mm = std::sqrt(sum_squares / static_cast<double>(inliers.size()));
 
     Increment increment;
-    if (solve_increment(inliers, increment) == SolveStatus::degenerate) {
+    const SolveStatus solved = solve_increment(inliers, increment);
+    planar = solved == SolveStatus::planar;
+    if (solved == SolveStatus::unconstrained) {
       result.status = RegistrationStatus::degenerate;
       break;
     }
@@ -227,6 +232,10 @@ RegistrationResult register_views(const RegistrationPoints& scene, const Registr
       break;
     }
   }
+  // Still planar at the end: the pose is the last iterate, but three of its parameters are
+  // whatever the start made them.
+  if (planar && result.status != RegistrationStatus::too_few_correspondences)
+    result.status = RegistrationStatus::degenerate;
   result.converged = result.status == RegistrationStatus::converged;
   return result;
 }

@@ -58,8 +58,10 @@ enum class RegistrationStatus {
   converged,
   iteration_budget_exhausted,  // T is the last iterate
   too_few_correspondences,     // T is the last iterate with enough inliers (or the initial one)
-  degenerate,  // the inliers leave 3 or more of the 6 parameters free (a plane); 1 or 2
+  degenerate,  // the last pass's inliers left 3 or more of the 6 parameters free (a plane):
+               // T is the last iterate, stepped only in the constrained directions. 1 or 2
                // free ones (a cylinder, a surface of revolution) keep their current value
+               // without this status.
   invalid_input,
 };
 

@@ -12,7 +12,6 @@ PartTracker::PartTracker(const PartTrackerParameters& parameters, int width)
   open_.reserve(parameters.max_open_parts);
   completed_.reserve(parameters.max_open_parts);
   merges_.reserve(parameters.max_runs_per_row);
-  touched_.reserve(parameters.max_open_parts);
 }
 
 int PartTracker::open_index(std::int64_t part) const {
@@ -34,11 +33,23 @@ void PartTracker::merge(std::int64_t keep, std::int64_t absorbed) {
   kept.first_row = std::min(kept.first_row, gone.first_row);
   kept.column_min = std::min(kept.column_min, gone.column_min);
   kept.column_max = std::max(kept.column_max, gone.column_max);
+  kept.last_row = std::max(kept.last_row, gone.last_row);
   kept.pixels += gone.pixels;
   gone.merged_into = keep;
   completed_.push_back(gone);
   open_.erase(open_.begin() + index);  // no allocation: erase within capacity
   merges_.emplace_back(absorbed, keep);
+}
+
+bool PartTracker::idle(const TrackedPart& part, std::int64_t row_index) const {
+  return row_index - part.last_row > parameters_.link_gap_rows;
+}
+
+bool PartTracker::footprints_overlap(const TrackedPart& a, const TrackedPart& b) const {
+  const int columns = parameters_.link_gap_columns + 1;
+  const std::int64_t rows = parameters_.link_gap_rows + 1;
+  return a.column_min <= b.column_max + columns && b.column_min <= a.column_max + columns &&
+         a.first_row <= b.last_row + rows && b.first_row <= a.last_row + rows;
 }
 
 const std::vector<TrackedPart>& PartTracker::add_row(const float* z_mm, std::int64_t row_index) {
@@ -95,23 +106,34 @@ const std::vector<TrackedPart>& PartTracker::add_row(const float* z_mm, std::int
       run.part = part.id;
     }
   }
-  // Account the row; a part no run touched is complete.
+  // Account the row.
   std::fill(labels_.begin(), labels_.end(), -1);
-  touched_.assign(open_.size(), 0);
   for (Run& run : runs_) {
     if (run.part < 0) continue;
     run.part = resolve(run.part);
-    const int index = open_index(run.part);
-    TrackedPart& part = open_[index];
-    touched_[index] = 1;
+    TrackedPart& part = open_[open_index(run.part)];
     part.last_row = row_index;
     part.column_min = std::min(part.column_min, run.begin);
     part.column_max = std::max(part.column_max, run.end - 1);
     part.pixels += run.end - run.begin;
     std::fill(labels_.begin() + run.begin, labels_.begin() + run.end, run.part);
   }
+  // A part no row has touched for link_gap_rows is complete, unless its footprint overlaps
+  // an open part's: then it is a piece of that part (a horn or leg cut off by the shadows
+  // over its whole length), and joins it.
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (std::size_t k = 0; k < open_.size() && !merged; ++k) {
+      if (!idle(open_[k], row_index)) continue;
+      for (std::size_t j = 0; j < open_.size() && !merged; ++j) {
+        if (j == k || !footprints_overlap(open_[k], open_[j])) continue;
+        merge(std::min(open_[k].id, open_[j].id), std::max(open_[k].id, open_[j].id));
+        merged = true;
+      }
+    }
+  }
   for (std::size_t k = open_.size(); k-- > 0;) {
-    if (touched_[k] || row_index - open_[k].last_row <= parameters_.link_gap_rows) continue;
+    if (!idle(open_[k], row_index)) continue;
     TrackedPart done = open_[k];
     done.noise = done.pixels < parameters_.min_pixels;
     completed_.push_back(done);

@@ -3,17 +3,19 @@
 // row by row. Each row's runs of data link to the open parts whose previous-row runs they
 // overlap (8-connectivity plus a small column tolerance); runs touching no open part start a
 // part; a run touching two parts merges them (the later into the earlier, reported); a part
-// that no run of a row touches is complete. Several non-touching parts may be under the
-// scanner at once. All storage is sized at construction: adding a row never allocates.
+// that no run has touched for link_gap_rows rows is complete, unless its footprint (bounding
+// box, grown by the link gaps) overlaps an open part's: then it merges into it. Several
+// non-touching parts may be under the scanner at once, as long as their footprints do not
+// overlap. All storage is sized at construction: adding a row never allocates.
 #include <cstdint>
 #include <vector>
 
 namespace cosmos {
 
 struct PartTrackerParameters {
-  int max_open_parts = 8;      // more at once: the extra runs are dropped and counted
-  int max_runs_per_row = 64;   // more runs in a row: the extra are dropped and counted
-  int link_gap_columns = 1;    // runs this many columns apart still touch (speckle gaps)
+  int max_open_parts = 8;     // more at once: the extra runs are dropped and counted
+  int max_runs_per_row = 64;  // more runs in a row: the extra are dropped and counted
+  int link_gap_columns = 1;   // runs this many columns apart still touch (speckle gaps)
   // A part stays open this many rows without data, and a run within its column extent
   // (± link_gap_columns) in that time joins it: laser shadows and dropouts split a part's
   // surface into pieces a few millimetres apart. 0: only touching runs continue a part.
@@ -22,7 +24,7 @@ struct PartTrackerParameters {
 };
 
 struct TrackedPart {
-  std::int64_t id = -1;        // increasing, never reused
+  std::int64_t id = -1;  // increasing, never reused
   std::int64_t first_row = 0;
   std::int64_t last_row = 0;
   int column_min = 0;
@@ -32,13 +34,16 @@ struct TrackedPart {
   bool noise = false;             // fewer than min_pixels
 };
 
-// The cell's tracking: pieces of one part up to 25 columns and 25 rows (10 mm) apart are
-// one part — the simulated catalog's shadows and grazing-angle dropouts split parts by up to
-// a few millimetres, while parts on the belt lie tens of millimetres apart.
+// The cell's tracking: pieces of one part up to 25 columns (10 mm) and 75 rows (30 mm) apart
+// are one part. Along the belt the camera's occlusion shadow behind a raised feature is up to
+// its height x tan(triangulation angle): an elephant's trunk 50 mm up at 30 degrees is cut off
+// from the body by ~29 mm of no data. Parts on the belt must therefore lie further apart than
+// that (the simulated conveyor's default part gap is 40 mm); the price is that a part
+// completes 30 mm of belt after its last row.
 inline PartTrackerParameters cell_part_tracking() {
   PartTrackerParameters parameters;
   parameters.link_gap_columns = 25;
-  parameters.link_gap_rows = 25;
+  parameters.link_gap_rows = 75;
   return parameters;
 }
 
@@ -63,6 +68,8 @@ class PartTracker {
   int open_index(std::int64_t part) const;
   std::int64_t resolve(std::int64_t part) const;
   void merge(std::int64_t keep, std::int64_t absorbed);
+  bool idle(const TrackedPart& part, std::int64_t row_index) const;
+  bool footprints_overlap(const TrackedPart& a, const TrackedPart& b) const;
 
   PartTrackerParameters parameters_;
   int width_;
@@ -71,7 +78,6 @@ class PartTracker {
   std::vector<TrackedPart> open_, completed_;
   std::vector<std::int64_t> labels_;
   std::vector<std::pair<std::int64_t, std::int64_t>> merges_;  // absorbed -> kept, this row
-  std::vector<std::uint8_t> touched_;
   std::int64_t dropped_runs_ = 0;
 };
 

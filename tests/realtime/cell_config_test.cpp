@@ -76,7 +76,7 @@ TEST_F(CellConfigFile, ShippedConfigHoldsTheDocumentedDefaults) {
   EXPECT_EQ(t.tracker.max_open_parts, 8);
   EXPECT_EQ(t.tracker.max_runs_per_row, 64);
   EXPECT_EQ(t.tracker.link_gap_columns, 25);
-  EXPECT_EQ(t.tracker.link_gap_rows, 25);
+  EXPECT_EQ(t.tracker.link_gap_rows, 75);
   EXPECT_EQ(t.tracker.min_pixels, 50);
   EXPECT_EQ(t.max_part_length_mm, 300.0);
   EXPECT_EQ(config.max_part_rows(), 750);  // 300 mm of 0.4 mm profiles

@@ -1,16 +1,19 @@
 // The simulated cell's loop in process: catalog parts on the simulated conveyor → the
 // real-time loop (conditioning, tracking, incremental COSMOS) → the recognizer worker →
-// poses. The stream replayed from an LCM log with the worker slowed down gives byte-identical
-// poses, equal to those of the live run; and the acquisition thread's per-profile work
-// allocates nothing after warm-up.
+// poses over LCM (memq://), checked against the simulator's ground truth. The stream replayed from
+// an LCM log with the worker slowed down gives byte-identical poses, equal to those of the live
+// run; and the acquisition thread's per-profile work allocates nothing after warm-up.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <lcm/lcm-cpp.hpp>
+#include <map>
 #include <memory>
+#include <sstream>
 
+#include "apps/add_s_distance.hpp"
 #include "core/io/model_base_file.hpp"
 #include "core/recognizer.hpp"
 #include "realtime/cell_runner.hpp"
@@ -18,8 +21,10 @@
 #include "realtime/lcm_codec.hpp"
 #include "realtime/lcm_message_conversion.hpp"
 #include "realtime/memory_publisher.hpp"
+#include "realtime/pose_publisher.hpp"
 #include "realtime/replay_source.hpp"
 #include "realtime/simulated_source.hpp"
+#include "sim/mesh.hpp"
 #include "sim/part_catalog.hpp"
 #include "tests/common/allocation_counter.hpp"
 #include "tests/regression_model_base.hpp"
@@ -137,6 +142,79 @@ TEST_F(CellLoop, ReplayedStreamGivesByteIdenticalPosesWithASlowWorker) {
   EXPECT_EQ(runs[0], runs[1]);
   for (std::size_t i = 0; i < live.poses.size(); ++i)
     EXPECT_EQ(runs[0][i], pose_bytes(live.poses[i])) << "pose " << i;
+}
+
+// Collects what arrives on the cell's channels of an in-process memq:// LCM.
+struct MemqSubscriber {
+  std::vector<PartPose> poses;
+  std::vector<CellStatus> statuses;
+  void on_pose(const lcm::ReceiveBuffer* buffer, const std::string&,
+               const cosmos_lcm::part_pose_t* message) {
+    (void)buffer;
+    poses.emplace_back();
+    from_message(*message, poses.back());
+  }
+  void on_status(const lcm::ReceiveBuffer* buffer, const std::string&,
+                 const cosmos_lcm::cell_status_t* message) {
+    (void)buffer;
+    statuses.emplace_back();
+    from_message(*message, statuses.back());
+  }
+};
+
+RigidPose rigid(const RigidTransform& T) { return {T.rotation, T.translation_mm}; }
+
+TEST_F(CellLoop, TwentySimulatedPartsArrivePublishedOverLcmWithTheirTruePoses) {
+  SimulatedSource source(*catalog_, ScannerParameters{}, sim_settings(20, 7));
+  ASSERT_EQ(source.start(), SourceStatus::kOk);
+  LcmPublisher publisher("memq://");
+  MemqSubscriber received;
+  publisher.lcm().subscribe(kPoseChannel, &MemqSubscriber::on_pose, &received);
+  publisher.lcm().subscribe(kStatusChannel, &MemqSubscriber::on_status, &received);
+  ScanLoop loop(loop_settings());
+  const CellRunSummary summary = run_cell(source, loop, context(loop), publisher, unpaced(false));
+  while (publisher.lcm().handleTimeout(0) > 0) {
+  }
+  EXPECT_EQ(summary.parts_seen, 20);
+  EXPECT_EQ(summary.parts_dropped, 0);
+  ASSERT_EQ(received.poses.size(), 20u);
+  ASSERT_FALSE(received.statuses.empty());
+  EXPECT_EQ(received.statuses.back().parts_seen, 20);
+
+  std::map<std::string, std::unique_ptr<AddSDistance>> add_s;
+  std::map<std::string, double> diameter_mm;
+  for (const ModelPart& part : base_->parts) {
+    const PartEntry& entry = catalog_->at(part.name);
+    const TriangleMesh mesh = load_mesh(entry.mesh_path, entry.size_mm);
+    std::vector<Eigen::Vector3d> points_mm;
+    for (const auto& vertex : mesh.vertices) points_mm.push_back(vertex.cast<double>());
+    add_s[part.name] = std::make_unique<AddSDistance>(points_mm);
+    diameter_mm[part.name] = part.diameter_mm;
+  }
+  int right = 0;
+  std::ostringstream wrong;  // a miss is allowed: say which
+  for (const PartPose& pose : received.poses) {
+    ASSERT_GE(pose.part_seq, 0);
+    ASSERT_LT(pose.part_seq, 20);
+    const PlacedSimPart& truth = source.placed_parts()[static_cast<std::size_t>(pose.part_seq)];
+    if (pose.status != PoseStatus::kOk || pose.part_name != truth.name) {
+      wrong << "; part " << pose.part_seq << " (" << truth.name << "): " << to_string(pose.status)
+            << " " << pose.part_name << " " << pose.reason;
+      continue;
+    }
+    const RigidTransform T_belt_part =
+        belt_pose_of(pose, RigidTransform::identity(), ScannerParameters{}.encoder_mm_per_tick);
+    const RigidTransform T_true{truth.T_belt_part.rotation(), truth.T_belt_part.translation()};
+    const double error_mm = add_s.at(truth.name)->add_s_mm(rigid(T_true), rigid(T_belt_part));
+    if (error_mm < 0.1 * diameter_mm.at(truth.name)) {
+      ++right;
+    } else {
+      wrong << "; part " << pose.part_seq << " (" << truth.name << "): ADD-S " << error_mm
+            << " mm of diameter " << diameter_mm.at(truth.name) << " mm";
+    }
+  }
+  EXPECT_GE(right, 19) << wrong.str();
+  if (right < 20) std::cout << "the part missed" << wrong.str() << "\n";
 }
 
 TEST_F(CellLoop, ProcessingAProfileAllocatesNothingAfterWarmUp) {
