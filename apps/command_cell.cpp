@@ -39,6 +39,7 @@ std::unique_ptr<ScannerSource> make_source(const CellOptions& options, const Cel
     ReplaySourceSettings settings;
     settings.max_profile_width = static_cast<std::size_t>(config.scanner.points_per_profile);
     settings.mm_per_profile = config.scanner.profile_step_mm();
+    settings.channel = config.lcm.profile_channel;
     return std::make_unique<ReplaySource>(options.replay, settings);
   }
   if (options.source == "hardware") {
@@ -75,7 +76,7 @@ void run(const CellOptions& options) {
                      std::to_string(source->mm_per_profile()) + " mm)");
   const ModelBase base = load_cell_model_base(config, catalog);
   const Recognizer recognizer(base, CosmosParameters{}, RecognitionParameters{});
-  LcmPublisher publisher(config.lcm.url);
+  LcmPublisher publisher(config.lcm.url, config.lcm.channels());
 
   const bool unpaced = options.unpaced || !options.replay.empty();
   ScanLoopSettings loop_settings;

@@ -53,6 +53,8 @@ struct LcmSettings {
   std::string profile_channel = kProfileChannel;
   bool publish_profiles = false;  // every profile on profile_channel, for record/replay
   double status_period_s = 1.0;   // cell_status_t period
+
+  LcmChannelNames channels() const { return {pose_channel, status_channel, profile_channel}; }
 };
 
 struct RealtimeQueueSettings {

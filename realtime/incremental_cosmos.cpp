@@ -78,7 +78,8 @@ bool IncrementalCosmos::fit_next() {
 
 bool IncrementalCosmos::link_next() {
   const int row = linked_rows_;
-  if (row >= fitted_rows_ || !(row + 1 < fitted_rows_ || (finished_ && fitted_rows_ == rows_))) return false;
+  if (row >= fitted_rows_ || !(row + 1 < fitted_rows_ || (finished_ && fitted_rows_ == rows_)))
+    return false;
   fitter_.link_row(image_, row, fitted_);
   ++linked_rows_;
   return true;
@@ -88,7 +89,8 @@ const float* IncrementalCosmos::frame_row(int level, int component, int row) con
   const int last = static_cast<int>(smoothed_rows_.size());
   if (level == 0) return fitted_.frame[component].row(row);
   if (level == last) return frames_.frame[component].row(row);
-  return rings_[level - 1].data() + (static_cast<std::size_t>(row % 3) * kFrameComponents + component) * width_;
+  return rings_[level - 1].data() +
+         (static_cast<std::size_t>(row % 3) * kFrameComponents + component) * width_;
 }
 
 float* IncrementalCosmos::writable_frame_row(int level, int component, int row) {
@@ -99,8 +101,10 @@ bool IncrementalCosmos::smooth_next(int level) {
   const int last = static_cast<int>(smoothed_rows_.size());
   const int row = smoothed_rows_[level - 1];
   // Rows available at the level below: links gate level 1 (its same-side masks).
-  const int below = level == 1 ? std::min(fitted_rows_, linked_rows_ + 1) : smoothed_rows_[level - 2];
-  const bool below_complete = level == 1 ? (finished_ && linked_rows_ == rows_) : (finished_ && below == rows_);
+  const int below =
+      level == 1 ? std::min(fitted_rows_, linked_rows_ + 1) : smoothed_rows_[level - 2];
+  const bool below_complete =
+      level == 1 ? (finished_ && linked_rows_ == rows_) : (finished_ && below == rows_);
   if (row >= rows_ || (level == 1 && row >= linked_rows_)) return false;
   if (!(row + 1 < below || below_complete)) return false;
   // A ring row may be overwritten only once the level above has used it.
@@ -111,7 +115,8 @@ bool IncrementalCosmos::smooth_next(int level) {
   in.same_side = fitted_.same_side.row(row);
   const int rows[3] = {std::max(row - 1, 0), row, std::min(row + 1, rows_ - 1)};
   for (int r = 0; r < 3; ++r) {
-    for (int axis = 0; axis < 3; ++axis) in.position[r][axis] = fitted_.position_mm[axis].row(rows[r]);
+    for (int axis = 0; axis < 3; ++axis)
+      in.position[r][axis] = fitted_.position_mm[axis].row(rows[r]);
     for (int c = 0; c < kFrameComponents; ++c) in.frame[r][c] = frame_row(level - 1, c, rows[r]);
   }
   float* out[kFrameComponents];
@@ -119,7 +124,8 @@ bool IncrementalCosmos::smooth_next(int level) {
   smooth_frame_row(in, out, parameters_.smoothing);
   if (level == last) {
     std::copy(fitted_.valid.row(row), fitted_.valid.row(row) + width_, frames_.valid.row(row));
-    std::copy(fitted_.same_side.row(row), fitted_.same_side.row(row) + width_, frames_.same_side.row(row));
+    std::copy(fitted_.same_side.row(row), fitted_.same_side.row(row) + width_,
+              frames_.same_side.row(row));
     for (int axis = 0; axis < 3; ++axis)
       std::copy(fitted_.position_mm[axis].row(row), fitted_.position_mm[axis].row(row) + width_,
                 frames_.position_mm[axis].row(row));

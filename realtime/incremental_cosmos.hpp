@@ -35,8 +35,8 @@ class IncrementalCosmos {
   void finish();
 
   int rows() const { return rows_; }
-  const RangeImage& image() const { return image_; }               // max_rows tall
-  const DarbouxFrameField& frames() const { return frames_; }      // smoothed frames
+  const RangeImage& image() const { return image_; }           // max_rows tall
+  const DarbouxFrameField& frames() const { return frames_; }  // smoothed frames
   const ShapeIndexField& field() const { return field_; }
   const ShapeSpectrumAccumulator& spectrum() const { return spectrum_; }
 

@@ -18,8 +18,8 @@ struct LcmLogReader::Messages {
   cosmos_lcm::range_profile_t profile{};
 };
 
-LcmLogReader::LcmLogReader(const std::filesystem::path& log_file)
-    : file_(log_file), messages_(std::make_unique<Messages>()) {
+LcmLogReader::LcmLogReader(const std::filesystem::path& log_file, const LcmChannelNames& channels)
+    : file_(log_file), channels_(channels), messages_(std::make_unique<Messages>()) {
   errno = 0;
   log_ = std::make_unique<lcm::LogFile>(log_file.string(), "r");
   if (!log_->good()) {
@@ -31,7 +31,7 @@ LcmLogReader::LcmLogReader(const std::filesystem::path& log_file)
 
 LcmLogReader::~LcmLogReader() = default;
 
-const lcm::LogEvent* LcmLogReader::next_on(const char* channel) {
+const lcm::LogEvent* LcmLogReader::next_on(const std::string& channel) {
   while (const lcm::LogEvent* event = log_->readNextEvent()) {
     ++events_read_;
     if (event->channel == channel) {
@@ -53,7 +53,7 @@ void LcmLogReader::throw_undecodable(const lcm::LogEvent& event, const char* typ
 }
 
 bool LcmLogReader::next_profile(Profile& profile) {
-  const lcm::LogEvent* event = next_on(kProfileChannel);
+  const lcm::LogEvent* event = next_on(channels_.profile);
   if (event == nullptr) return false;
   cosmos_lcm::range_profile_t& message = messages_->profile;
   // Generated decode() keeps the old array when width is 0; an empty one keeps its capacity.
@@ -66,7 +66,7 @@ bool LcmLogReader::next_profile(Profile& profile) {
 }
 
 bool LcmLogReader::next_pose(PartPose& pose) {
-  const lcm::LogEvent* event = next_on(kPoseChannel);
+  const lcm::LogEvent* event = next_on(channels_.pose);
   if (event == nullptr) return false;
   if (!decode_message(event->data, static_cast<std::size_t>(event->datalen), messages_->pose)) {
     throw_undecodable(*event, "part_pose_t");
@@ -76,7 +76,7 @@ bool LcmLogReader::next_pose(PartPose& pose) {
 }
 
 bool LcmLogReader::next_status(CellStatus& status) {
-  const lcm::LogEvent* event = next_on(kStatusChannel);
+  const lcm::LogEvent* event = next_on(channels_.status);
   if (event == nullptr) return false;
   if (!decode_message(event->data, static_cast<std::size_t>(event->datalen), messages_->status)) {
     throw_undecodable(*event, "cell_status_t");
@@ -90,8 +90,9 @@ namespace {
 // Every message of one kind in a log, through the reader's next_* for that kind.
 template <class Message>
 std::vector<Message> read_all(const std::filesystem::path& log_file,
-                              bool (LcmLogReader::*next)(Message&)) {
-  LcmLogReader reader(log_file);
+                              bool (LcmLogReader::*next)(Message&),
+                              const LcmChannelNames& channels = {}) {
+  LcmLogReader reader(log_file, channels);
   std::vector<Message> messages;
   Message message;
   while ((reader.*next)(message)) messages.push_back(message);
@@ -100,8 +101,11 @@ std::vector<Message> read_all(const std::filesystem::path& log_file,
 
 }  // namespace
 
-std::vector<Profile> read_logged_profiles(const std::filesystem::path& log_file) {
-  return read_all(log_file, &LcmLogReader::next_profile);
+std::vector<Profile> read_logged_profiles(const std::filesystem::path& log_file,
+                                          const std::string& channel) {
+  LcmChannelNames channels;
+  channels.profile = channel;
+  return read_all(log_file, &LcmLogReader::next_profile, channels);
 }
 
 std::vector<PartPose> read_logged_poses(const std::filesystem::path& log_file) {

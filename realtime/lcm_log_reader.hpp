@@ -9,6 +9,7 @@
 
 #include "core/profile.hpp"
 #include "realtime/cell_status.hpp"
+#include "realtime/lcm_channels.hpp"
 #include "realtime/part_pose.hpp"
 
 namespace lcm {
@@ -21,7 +22,8 @@ namespace cosmos {
 class LcmLogReader {
  public:
   // Throws InputError naming the file when it cannot be opened.
-  explicit LcmLogReader(const std::filesystem::path& log_file);
+  explicit LcmLogReader(const std::filesystem::path& log_file,
+                        const LcmChannelNames& channels = {});
   ~LcmLogReader();
   LcmLogReader(const LcmLogReader&) = delete;
   LcmLogReader& operator=(const LcmLogReader&) = delete;
@@ -40,10 +42,11 @@ class LcmLogReader {
  private:
   struct Messages;  // generated message types, reused
 
-  const lcm::LogEvent* next_on(const char* channel);
+  const lcm::LogEvent* next_on(const std::string& channel);
   [[noreturn]] void throw_undecodable(const lcm::LogEvent& event, const char* type_name) const;
 
   std::filesystem::path file_;
+  LcmChannelNames channels_;
   std::unique_ptr<lcm::LogFile> log_;
   std::unique_ptr<Messages> messages_;
   std::int64_t events_read_ = 0;
@@ -51,7 +54,8 @@ class LcmLogReader {
 };
 
 // Whole-log conveniences.
-std::vector<Profile> read_logged_profiles(const std::filesystem::path& log_file);
+std::vector<Profile> read_logged_profiles(const std::filesystem::path& log_file,
+                                          const std::string& channel = kProfileChannel);
 std::vector<PartPose> read_logged_poses(const std::filesystem::path& log_file);
 std::vector<CellStatus> read_logged_statuses(const std::filesystem::path& log_file);
 

@@ -14,30 +14,33 @@ struct LcmPublisher::Messages {
   cosmos_lcm::range_profile_t profile{};
 };
 
-LcmPublisher::LcmPublisher(const std::string& url)
-    : url_(url), lcm_(open_lcm(url)), messages_(std::make_unique<Messages>()) {}
+LcmPublisher::LcmPublisher(const std::string& url, const LcmChannelNames& channels)
+    : url_(url),
+      channels_(channels),
+      lcm_(open_lcm(url)),
+      messages_(std::make_unique<Messages>()) {}
 
 LcmPublisher::~LcmPublisher() = default;
 
 template <class Message>
-bool LcmPublisher::send(const char* channel, const Message& message) {
+bool LcmPublisher::send(const std::string& channel, const Message& message) {
   if (!encode_message(message, bytes_)) return false;
   return lcm_->publish(channel, bytes_.data(), static_cast<unsigned>(bytes_.size())) == 0;
 }
 
 bool LcmPublisher::publish(const PartPose& pose) {
   to_message(pose, messages_->pose);
-  return send(kPoseChannel, messages_->pose);
+  return send(channels_.pose, messages_->pose);
 }
 
 bool LcmPublisher::publish(const CellStatus& status) {
   to_message(status, messages_->status);
-  return send(kStatusChannel, messages_->status);
+  return send(channels_.status, messages_->status);
 }
 
 bool LcmPublisher::publish(const Profile& profile) {
   to_message(profile, messages_->profile);
-  return send(kProfileChannel, messages_->profile);
+  return send(channels_.profile, messages_->profile);
 }
 
 }  // namespace cosmos

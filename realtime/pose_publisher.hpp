@@ -35,7 +35,8 @@ class Publisher {
 class LcmPublisher final : public Publisher {
  public:
   // Throws InputError naming the URL and the reason when LCM cannot open it.
-  explicit LcmPublisher(const std::string& url = kDefaultLcmUrl);
+  explicit LcmPublisher(const std::string& url = kDefaultLcmUrl,
+                        const LcmChannelNames& channels = {});
   ~LcmPublisher() override;
   LcmPublisher(const LcmPublisher&) = delete;
   LcmPublisher& operator=(const LcmPublisher&) = delete;
@@ -55,9 +56,10 @@ class LcmPublisher final : public Publisher {
   struct Messages;
 
   template <class Message>
-  bool send(const char* channel, const Message& message);
+  bool send(const std::string& channel, const Message& message);
 
   std::string url_;
+  LcmChannelNames channels_;
   std::unique_ptr<lcm::LCM> lcm_;
   std::unique_ptr<Messages> messages_;
   std::vector<std::uint8_t> bytes_;  // encoding buffer, reused

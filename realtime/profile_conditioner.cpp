@@ -9,7 +9,7 @@ namespace cosmos {
 ProfileConditioner::ProfileConditioner(const ConditioningParameters& parameters)
     : parameters_(parameters),
       width_(std::max(1, static_cast<int>(std::floor((parameters.x_max_mm - parameters.x_min_mm) /
-                                                        parameters.grid_mm)))) {}
+                                                     parameters.grid_mm)))) {}
 
 void ProfileConditioner::condition(const Profile& profile, float* out_z_mm) const {
   if (profile.dx_mm < parameters_.grid_mm) {
@@ -21,7 +21,8 @@ void ProfileConditioner::condition(const Profile& profile, float* out_z_mm) cons
   const float threshold = static_cast<float>(parameters_.height_threshold_mm);
   for (int k = 0; k < width_; ++k) {
     const double x = parameters_.x_min_mm + k * parameters_.grid_mm;
-    const float height = out_z_mm[k] - static_cast<float>(parameters_.belt_height_mm + parameters_.belt_slope_x * x);
+    const float height =
+        out_z_mm[k] - static_cast<float>(parameters_.belt_height_mm + parameters_.belt_slope_x * x);
     out_z_mm[k] = height >= threshold ? height : nan;  // NaN compares false: stays NaN
   }
 }
@@ -34,8 +35,11 @@ void ProfileConditioner::box_average(const Profile& profile, float* out_z_mm) co
   const float jump = static_cast<float>(parameters_.depth_jump_mm);
   for (int k = 0; k < width_; ++k) {
     const double x_center = parameters_.x_min_mm + k * g;
-    const int first = std::max(0, static_cast<int>(std::ceil((x_center - 0.5 * g - profile.x0_mm) / profile.dx_mm)));
-    const int last = std::min(samples - 1, static_cast<int>(std::ceil((x_center + 0.5 * g - profile.x0_mm) / profile.dx_mm)) - 1);
+    const int first = std::max(
+        0, static_cast<int>(std::ceil((x_center - 0.5 * g - profile.x0_mm) / profile.dx_mm)));
+    const int last = std::min(
+        samples - 1,
+        static_cast<int>(std::ceil((x_center + 0.5 * g - profile.x0_mm) / profile.dx_mm)) - 1);
     float top = -std::numeric_limits<float>::infinity();
     for (int i = first; i <= last; ++i)
       if (!std::isnan(profile.z_mm[i])) top = std::max(top, profile.z_mm[i]);
@@ -68,7 +72,8 @@ void ProfileConditioner::interpolate(const Profile& profile, float* out_z_mm) co
   const int samples = static_cast<int>(profile.width());
   const float jump = static_cast<float>(parameters_.depth_jump_mm);
   for (int k = 0; k < width_; ++k) {
-    const double u = (parameters_.x_min_mm + k * parameters_.grid_mm - profile.x0_mm) / profile.dx_mm;
+    const double u =
+        (parameters_.x_min_mm + k * parameters_.grid_mm - profile.x0_mm) / profile.dx_mm;
     const int i = static_cast<int>(std::floor(u));
     const float t = static_cast<float>(u - i);
     float z = std::numeric_limits<float>::quiet_NaN();

@@ -19,7 +19,7 @@ SourceStatus ReplaySource::start() {
   next_ = 0;
   dropped_ = 0;
   try {
-    profiles_ = read_logged_profiles(file_);
+    profiles_ = read_logged_profiles(file_, settings_.channel);
   } catch (const InputError& error) {
     error_.set("%s", error.what());  // already names the file
     return SourceStatus::kError;
@@ -29,7 +29,7 @@ SourceStatus ReplaySource::start() {
   }
   if (profiles_.empty()) {
     // An empty replay is a wrong file or channel, never a useful run.
-    error_.set("%s: no %s events to replay", file_.c_str(), kProfileChannel);
+    error_.set("%s: no %s events to replay", file_.c_str(), settings_.channel.c_str());
     return SourceStatus::kError;
   }
   started_ = true;

@@ -1,8 +1,8 @@
 #pragma once
 // A recorded scan as a ScannerSource (`--replay FILE`): the range_profile_t events on
-// COSMOS_PROFILE of an lcm-logger log, played in log order with their recorded seq,
-// encoder_ticks and t_us, so a recorded run goes through the same downstream code as a live
-// one and gives the same result.
+// COSMOS_PROFILE (or the configured profile channel) of an lcm-logger log, played in log order with
+// their recorded seq, encoder_ticks and t_us, so a recorded run goes through the same downstream
+// code as a live one and gives the same result.
 //
 // start() reads the whole log (set-up, not real-time: it may allocate and take a while), so
 // next() only copies a stored profile into the caller's slot. A profile wider than the slot
@@ -11,9 +11,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "firmware_bridge/error_line.hpp"
+#include "realtime/lcm_channels.hpp"
 #include "realtime/scanner_source.hpp"
 #include "sim/scanner_model.hpp"
 
@@ -25,6 +27,7 @@ struct ReplaySourceSettings {
   // The recording cell's belt travel per profile (its scanner's profile_step_mm()); a log
   // holds encoder counts but not the millimetres per tick.
   double mm_per_profile = ScannerParameters{}.profile_step_mm();
+  std::string channel = kProfileChannel;  // the recording cell's lcm.profile_channel
 };
 
 class ReplaySource final : public ScannerSource {

@@ -1,5 +1,7 @@
 // Row-by-row COSMOS of a part equals whole-image processing of the same rows (issue:
 // real-time cell, "one code path, tested").
+#include "realtime/incremental_cosmos.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 #include <random>
 
 #include "core/cosmos_pipeline.hpp"
-#include "realtime/incremental_cosmos.hpp"
 
 namespace cosmos {
 namespace {
@@ -26,8 +27,8 @@ RangeImage relief(int width, int height, std::uint64_t seed) {
                  6 * std::exp(-((x - 30) * (x - 30) + (y - 22) * (y - 22)) / 40.0) + 0.2 * x;
       if (x > 38) z += 6.0;
       const bool hole = (x - 20) * (x - 20) + (y - 30) * (y - 30) < 9;
-      image.z_mm(column, row) = hole ? std::numeric_limits<float>::quiet_NaN()
-                                     : static_cast<float>(z + noise(generator));
+      image.z_mm(column, row) =
+          hole ? std::numeric_limits<float>::quiet_NaN() : static_cast<float>(z + noise(generator));
     }
   }
   return image;
@@ -39,7 +40,8 @@ void expect_same_as_whole_image(IncrementalCosmos& builder, const RangeImage& pa
   for (int row = 0; row < part.height(); ++row) ASSERT_TRUE(builder.add_row(part.z_mm.row(row)));
   builder.finish();
   const ViewAnalysis whole = analyze_view(part, parameters);
-  const CsmpSegmentation segmentation = segment_csmps(builder.frames(), builder.field(), parameters.segmentation);
+  const CsmpSegmentation segmentation =
+      segment_csmps(builder.frames(), builder.field(), parameters.segmentation);
 
   double max_shape_index_difference = 0;
   int label_mismatches = 0, patch_mismatches = 0;
@@ -49,9 +51,10 @@ void expect_same_as_whole_image(IncrementalCosmos& builder, const RangeImage& pa
       label_mismatches += builder.field().label(column, row) != expected_label;
       if (expected_label != SurfaceLabel::kInvalid)
         max_shape_index_difference = std::max(
-            max_shape_index_difference,
-            std::abs(double{builder.field().shape_index(column, row)} - whole.field.shape_index(column, row)));
-      patch_mismatches += segmentation.patch_of_pixel(column, row) != whole.segmentation.patch_of_pixel(column, row);
+            max_shape_index_difference, std::abs(double{builder.field().shape_index(column, row)} -
+                                                 whole.field.shape_index(column, row)));
+      patch_mismatches += segmentation.patch_of_pixel(column, row) !=
+                          whole.segmentation.patch_of_pixel(column, row);
     }
   }
   EXPECT_EQ(label_mismatches, 0);
@@ -60,7 +63,8 @@ void expect_same_as_whole_image(IncrementalCosmos& builder, const RangeImage& pa
   EXPECT_EQ(patch_mismatches, 0);
   const ShapeSpectrum spectrum = builder.spectrum().finish();
   ASSERT_EQ(spectrum.bins.size(), whole.spectrum.bins.size());
-  for (std::size_t k = 0; k < spectrum.bins.size(); ++k) EXPECT_NEAR(spectrum.bins[k], whole.spectrum.bins[k], 1e-12);
+  for (std::size_t k = 0; k < spectrum.bins.size(); ++k)
+    EXPECT_NEAR(spectrum.bins[k], whole.spectrum.bins[k], 1e-12);
   EXPECT_NEAR(spectrum.planar_fraction, whole.spectrum.planar_fraction, 1e-12);
   EXPECT_GT(whole.segmentation.patch_count, 1);
 }

@@ -1,8 +1,9 @@
 // Inter-process LCM as a user runs it: inside a private network namespace (so nothing can
 // leave this machine), lcm-logger records, `cosmos listen` prints, and a separate publisher
 // process (this test binary, started in a publisher mode) publishes on the default udpm URL.
-// The log then decodes to exactly what was published. When the namespace cannot be made the
-// tests fail and say why; they never skip.
+// The log then decodes to exactly what was published. Then the real thing: `cosmos cell
+// --parts 5` on the simulated conveyor with the regression catalog, recorded by lcm-logger.
+// When the namespace cannot be made the tests fail and say why; they never skip.
 #include <gtest/gtest.h>
 #include <net/if.h>
 #include <unistd.h>
@@ -24,6 +25,7 @@
 #include "realtime/pose_publisher.hpp"
 #include "tests/realtime/lcm_test_messages.hpp"
 #include "tests/realtime/shell_command.hpp"
+#include "tests/regression_model_base.hpp"
 
 namespace cosmos {
 namespace {
@@ -31,6 +33,12 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr char kPublisherModeVariable[] = "COSMOS_LCM_TEST_PUBLISH_TO_LOG";
+// The sync mode: sync messages until lcm-logger has subscribed (COSMOS_LCM_TEST_SYNC=ready)
+// or until its log holds the cell's final status (=cell-ended), so that the script can start
+// the cell, or stop the logger, knowing nothing is lost.
+constexpr char kSyncModeVariable[] = "COSMOS_LCM_TEST_SYNC";
+constexpr char kSyncLogVariable[] = "COSMOS_LCM_TEST_SYNC_LOG";
+constexpr char kCellEndedText[] = "the source has ended";  // realtime/cell_runner.cpp
 constexpr int kPoseCount = 3;
 constexpr int kProfileCount = 2;
 constexpr char kFinalStatusText[] = "namespace test: all sent";
@@ -86,18 +94,49 @@ bool log_holds_everything(const fs::path& log) {
 // payload, then sync messages until the log holds it all so the script may stop the logger.
 // lcm-logger flushes only when a message arrives after its flush interval, so without the
 // trailing sync messages the payload would sit in its buffer.
-int publish_in_namespace(const fs::path& log) {
-  if (!only_loopback_exists()) {
-    std::cerr << "publisher: refusing to publish, interfaces other than lo exist (not in a private "
-                 "namespace)\n";
-    return 10;
+bool logger_ready(const fs::path& log) {
+  std::error_code error;
+  return fs::file_size(log, error) > 0 && !error;
+}
+
+bool log_holds_cell_end(const fs::path& log) {
+  try {
+    for (const CellStatus& status : read_logged_statuses(log))
+      if (status.state_text == kCellEndedText) return true;
+  } catch (const InputError&) {
   }
+  return false;
+}
+
+bool refuse_outside_namespace(const char* who) {
+  if (only_loopback_exists()) return false;
+  std::cerr << who
+            << ": refusing to publish, interfaces other than lo exist (not in a private "
+               "namespace)\n";
+  return true;
+}
+
+int sync_in_namespace(const std::string& until, const fs::path& log) {
+  if (refuse_outside_namespace("sync")) return 10;
   try {
     LcmPublisher publisher(kDefaultLcmUrl);
     const auto sync = [&] { publisher.lcm().publish(kSyncChannel, "sync", 4); };
-    std::error_code error;
-    const bool logger_ready = poll([&] { return fs::file_size(log, error) > 0 && !error; }, sync);
-    if (!logger_ready) {
+    const bool done = until == "ready" ? poll([&] { return logger_ready(log); }, sync)
+                                       : poll([&] { return log_holds_cell_end(log); }, sync);
+    if (!done) std::cerr << "sync: the log never reached '" << until << "' within 10 s\n";
+    return done ? 0 : 11;
+  } catch (const InputError& error) {
+    std::cerr << "sync: " << error.what() << "\n";
+    return 14;
+  }
+}
+
+int publish_in_namespace(const fs::path& log) {
+  if (refuse_outside_namespace("publisher")) return 10;
+  try {
+    LcmPublisher publisher(kDefaultLcmUrl);
+    const auto sync = [&] { publisher.lcm().publish(kSyncChannel, "sync", 4); };
+    if (!poll([&] { return logger_ready(log); }, sync)) {
       std::cerr << "publisher: lcm-logger logged nothing within 10 s\n";
       return 11;
     }
@@ -124,6 +163,8 @@ int publish_in_namespace(const fs::path& log) {
 // test run.
 [[maybe_unused]] const bool publisher_mode_handled = [] {
   if (const char* log = std::getenv(kPublisherModeVariable)) std::exit(publish_in_namespace(log));
+  if (const char* until = std::getenv(kSyncModeVariable))
+    std::exit(sync_in_namespace(until, std::getenv(kSyncLogVariable)));
   return false;
 }();
 
@@ -241,6 +282,59 @@ TEST_F(LcmNetworkNamespace, LoggerAndListenerReceiveWhatAnotherProcessPublishes)
     EXPECT_NE(line.find(expected_positions_m[i]), std::string::npos) << line;
   }
   EXPECT_FALSE(std::getline(lines, line)) << "extra line: " << line;
+}
+
+TEST_F(LcmNetworkNamespace, LoggerRecordsTheCellsPosesAndStatus) {
+  const auto quote = [](const fs::path& path) { return testing::shell_quote(path.string()); };
+  const fs::path log = dir_ / "cell.lcmlog";
+  const fs::path config = dir_ / "cell.yaml";
+  std::ofstream(config) << "cell:\n"
+                        << "  catalog: " << COSMOS_SOURCE_DIR << "/config/parts-regression.yaml\n"
+                        << "  model_base: " << testing::regression_model_base().string() << "\n"
+                        << "sim_source:\n  seed: 7\n";
+  const fs::path test_binary = fs::read_symlink("/proc/self/exe");
+  const auto sync_until = [&](const char* until) {
+    return std::string(kSyncModeVariable) + "=" + until + " " + kSyncLogVariable + "=" +
+           quote(log) + " " + quote(test_binary);
+  };
+  std::ostringstream body;
+  body << "ip link set lo up || exit 20\n"
+       << "ip route add 224.0.0.0/4 dev lo || exit 21\n"
+       << "lcm-logger --quiet --force --flush-interval=10 --lcm-url="
+       << testing::shell_quote(kDefaultLcmUrl) << " " << quote(log) << " 2>"
+       << quote(dir_ / "logger.err") << " &\n"
+       << "logger=$!\n"
+       << "trap 'kill -INT $logger 2>/dev/null; wait $logger' EXIT\n"
+       << sync_until("ready") << " || exit 22\n"
+       << "echo logging >> " << stages() << "\n"
+       << testing::shell_quote(COSMOS_BINARY) << " cell --config " << quote(config)
+       << " --parts 5 --unpaced >" << quote(dir_ / "cell.out") << " 2>" << quote(dir_ / "cell.err")
+       << " || { cat " << quote(dir_ / "cell.err") << " >&2; exit 23; }\n"
+       << "echo cell-ran >> " << stages() << "\n"
+       << sync_until("cell-ended") << " || exit 24\n";
+  const testing::ShellResult result = run_in_namespace(body.str());
+  ASSERT_TRUE(namespace_entered(result));
+  ASSERT_TRUE(result.exited);
+  ASSERT_EQ(result.exit_code, 0) << "stages: " << testing::read_text_file(dir_ / "stages")
+                                 << "stderr: " << result.err
+                                 << "logger: " << testing::read_text_file(dir_ / "logger.err");
+
+  const std::vector<PartPose> poses = read_logged_poses(log);
+  ASSERT_EQ(poses.size(), 5u) << testing::read_text_file(dir_ / "cell.out");
+  int recognized = 0;
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    EXPECT_EQ(poses[i].part_seq, static_cast<std::int64_t>(i));
+    recognized += poses[i].status == PoseStatus::kOk ? 1 : 0;
+  }
+  EXPECT_GE(recognized, 4) << testing::read_text_file(dir_ / "cell.out");
+  const std::vector<CellStatus> statuses = read_logged_statuses(log);
+  ASSERT_FALSE(statuses.empty());
+  EXPECT_EQ(statuses.back().state_text, kCellEndedText);
+  EXPECT_EQ(statuses.back().parts_seen, 5);
+  EXPECT_EQ(statuses.back().parts_recognized + statuses.back().parts_rejected, 5);
+  // The cell's summary says what a user reads at the end of a run.
+  EXPECT_NE(testing::read_text_file(dir_ / "cell.out").find("5 poses published"), std::string::npos)
+      << testing::read_text_file(dir_ / "cell.out");
 }
 
 TEST_F(LcmNetworkNamespace, NoMulticastRouteFailsInOneLine) {

@@ -165,5 +165,25 @@ TEST_F(LcmMemqRoundTrip, SameMessagesAsTheMemoryPublisher) {
   testing::expect_same_status(memory.statuses[0], status);
 }
 
+struct ChannelRecorder {
+  std::vector<std::string> channels;
+  void on_message(const lcm::ReceiveBuffer*, const std::string& channel) {
+    channels.push_back(channel);
+  }
+};
+
+TEST(LcmChannels, ConfiguredNamesReplaceTheDefaults) {
+  LcmPublisher publisher("memq://", {"CELL2_POSE", "CELL2_STATUS", "CELL2_PROFILE"});
+  ChannelRecorder recorder;
+  publisher.lcm().subscribe(".*", &ChannelRecorder::on_message, &recorder);  // every channel
+  ASSERT_TRUE(publisher.publish(sample_pose(1)));
+  ASSERT_TRUE(publisher.publish(sample_status("renamed")));
+  ASSERT_TRUE(publisher.publish(sample_profile(3)));
+  while (publisher.lcm().handleTimeout(0) > 0) {
+  }
+  EXPECT_EQ(recorder.channels,
+            (std::vector<std::string>{"CELL2_POSE", "CELL2_STATUS", "CELL2_PROFILE"}));
+}
+
 }  // namespace
 }  // namespace cosmos

@@ -1,10 +1,10 @@
 // Conditioning sensor profiles onto the COSMOS grid.
+#include "realtime/profile_conditioner.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
-
-#include "realtime/profile_conditioner.hpp"
 
 namespace cosmos {
 namespace {

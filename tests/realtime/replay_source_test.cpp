@@ -36,14 +36,15 @@ class ReplaySourceTest : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
 
   // The profiles on COSMOS_PROFILE with a pose on COSMOS_POSE between the first two.
-  fs::path write_log(const std::vector<Profile>& profiles) {
+  fs::path write_log(const std::vector<Profile>& profiles,
+                     const char* profile_channel = kProfileChannel) {
     const fs::path path = dir_ / "scan.lcmlog";
     lcm::LogFile log(path.string(), "w");
     EXPECT_TRUE(log.good());
     for (std::size_t i = 0; i < profiles.size(); ++i) {
       cosmos_lcm::range_profile_t message{};
       to_message(profiles[i], message);
-      write(log, kProfileChannel, message);
+      write(log, profile_channel, message);
       if (i == 0) {
         cosmos_lcm::part_pose_t pose{};
         to_message(testing::sample_pose(0), pose);
@@ -119,6 +120,19 @@ TEST_F(ReplaySourceTest, ProfilesWiderThanTheSlotAreDroppedAndCounted) {
   Profile unreserved;
   EXPECT_EQ(source.next(unreserved), SourceStatus::kEndOfStream);
   EXPECT_EQ(source.dropped_profiles(), 3u);
+}
+
+TEST_F(ReplaySourceTest, AConfiguredProfileChannelIsTheOneReplayed) {
+  const fs::path log =
+      write_log({testing::sample_profile(0), testing::sample_profile(1)}, "CELL2_PROFILE");
+  ReplaySource by_default(log);
+  EXPECT_EQ(by_default.start(), SourceStatus::kError);
+  EXPECT_EQ(by_default.last_error(), log.string() + ": no COSMOS_PROFILE events to replay");
+  ReplaySourceSettings settings;
+  settings.channel = "CELL2_PROFILE";
+  ReplaySource renamed(log, settings);
+  ASSERT_EQ(renamed.start(), SourceStatus::kOk) << renamed.last_error();
+  EXPECT_EQ(renamed.profile_count(), 2u);
 }
 
 TEST_F(ReplaySourceTest, MissingForeignAndEmptyFilesFailWithOneLineNamingThem) {

@@ -1,0 +1,304 @@
+// Speed of the real-time cell (issue 5) on streams of the simulated source, regression catalog
+// (config/parts-regression.yaml), profiles across the default 256 mm field of view:
+//   ScanLoopProcess/points:W/smoothing:I
+//                     the acquisition thread's per-profile work, ScanLoop::process alone
+//                     (conditioning onto the 0.4 mm grid, tracking, incremental COSMOS) on
+//                     W-point profiles with I smoothing iterations (15 = default, 0 = off);
+//                     time per profile, p50_us and p999_us over every profile timed
+//   Conditioning/W    ProfileConditioner::condition alone: raw input points per second
+//   EndOfPartToPose   run_cell unpaced: the tracker completes a part -> its pose published,
+//                     latency_p50_ms over the parts
+//   PacedJitter       run_cell paced at the default line rate (2500 Hz): start-time jitter of
+//                     the acquisition loop, start_jitter_{p50,p99,max}_us
+// Needs the catalog meshes (scripts/fetch_catalog.sh). The two whole-cell runs also need the
+// regression model base: $COSMOS_BENCH_MODEL_BASE, else build/test-data/regression-80.cmb
+// (ctest builds it, tests/CMakeLists.txt). Run: build/bench/scan_loop_bench
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/io/model_base_file.hpp"
+#include "core/model_base.hpp"
+#include "core/recognizer.hpp"
+#include "firmware_bridge/kernel_timestamp.hpp"
+#include "realtime/cell_runner.hpp"
+#include "realtime/latency_histogram.hpp"
+#include "realtime/memory_publisher.hpp"
+#include "realtime/part_recognition.hpp"
+#include "realtime/profile_conditioner.hpp"
+#include "realtime/scan_loop.hpp"
+#include "realtime/simulated_source.hpp"
+#include "sim/part_catalog.hpp"
+#include "sim/scanner_model.hpp"
+
+namespace cosmos {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Parts in the pre-generated streams: enough part rows, part ends and empty belt between them
+// for a p99.9 over a few thousand profiles, few enough to generate 3200-point streams quickly.
+constexpr int kStreamParts = 5;
+constexpr int kCellParts = 4;   // unpaced whole-cell run
+constexpr int kPacedParts = 2;  // paced run: real time, about 0.4 s of belt
+constexpr std::uint64_t kSeed = 7;
+
+const PartCatalog& regression_catalog() {
+  static const PartCatalog catalog =
+      read_part_catalog(fs::path(COSMOS_SOURCE_DIR) / "config/parts-regression.yaml");
+  return catalog;
+}
+
+SimulatedSourceSettings source_settings(int parts) {
+  SimulatedSourceSettings settings;
+  settings.parts = parts;
+  settings.seed = kSeed;
+  return settings;
+}
+
+// A whole simulated stream in memory, so that the timed loops run no ray casting.
+struct SimStream {
+  std::vector<Profile> profiles;
+  std::string error;  // why there is no stream (e.g. catalog meshes missing)
+};
+
+const SimStream& sim_stream(int points_per_profile) {
+  static std::map<int, SimStream> streams;
+  const auto [entry, inserted] = streams.try_emplace(points_per_profile);
+  SimStream& stream = entry->second;
+  if (!inserted) return stream;
+  try {
+    ScannerParameters parameters;
+    parameters.points_per_profile = points_per_profile;
+    SimulatedSource source(regression_catalog(), parameters, source_settings(kStreamParts));
+    if (source.start() != SourceStatus::kOk) {
+      stream.error = std::string(source.last_error());
+      return stream;
+    }
+    Profile profile;
+    source.reserve(profile);
+    while (source.next(profile) == SourceStatus::kOk) stream.profiles.push_back(profile);
+    if (stream.profiles.empty()) stream.error = "the simulated source gave no profiles";
+  } catch (const std::exception& e) {
+    stream.error = std::string(e.what()) + " (catalog meshes: scripts/fetch_catalog.sh)";
+  }
+  return stream;
+}
+
+// Builders go back as soon as the tracker completes a part: nothing recognizes them here, and
+// the loop must never drop a part for want of one.
+void return_builders(ScanLoop& loop) {
+  int index = -1;
+  while (loop.completed().try_pop(index)) loop.returned().try_push(index);
+}
+
+void ScanLoopProcess(benchmark::State& state) {
+  const SimStream& stream = sim_stream(static_cast<int>(state.range(0)));
+  if (!stream.error.empty()) {
+    state.SkipWithError(stream.error.c_str());
+    return;
+  }
+  ScanLoopSettings settings;
+  settings.cosmos.smoothing.iterations = static_cast<int>(state.range(1));
+  ScanLoop loop(settings);
+  // One untimed pass first: the builders' buffers are touched (page faults) and every ring
+  // has turned once, as in a cell that has been running for a while.
+  for (const Profile& profile : stream.profiles) {
+    loop.process(profile);
+    return_builders(loop);
+  }
+  // Manual time: only process() counts, not the clock reads and the builders' return. The
+  // stream repeats seamlessly, since it begins and ends with empty belt.
+  LatencyHistogram profile_times;
+  std::size_t next = 0;
+  for (auto _ : state) {
+    const Profile& profile = stream.profiles[next];
+    const std::int64_t start_ns = monotonic_now_ns();
+    loop.process(profile);
+    const std::int64_t time_ns = monotonic_now_ns() - start_ns;
+    profile_times.record_ns(time_ns);
+    state.SetIterationTime(static_cast<double>(time_ns) * 1e-9);
+    return_builders(loop);
+    next = next + 1 == stream.profiles.size() ? 0 : next + 1;
+  }
+  state.counters["p50_us"] = static_cast<double>(profile_times.p50_ns()) / 1e3;
+  state.counters["p999_us"] = static_cast<double>(profile_times.p999_ns()) / 1e3;
+  state.counters["max_us"] = static_cast<double>(profile_times.max_ns()) / 1e3;
+  state.counters["stream_profiles"] = static_cast<double>(stream.profiles.size());
+  state.counters["parts_dropped"] = static_cast<double>(loop.counters().parts_dropped.load());
+}
+BENCHMARK(ScanLoopProcess)
+    ->ArgsProduct({{640, 1280, 3200}, {15, 0}})
+    ->ArgNames({"points", "smoothing"})
+    ->UseManualTime()
+    ->Unit(benchmark::kMicrosecond);
+
+void Conditioning(benchmark::State& state) {
+  const SimStream& stream = sim_stream(static_cast<int>(state.range(0)));
+  if (!stream.error.empty()) {
+    state.SkipWithError(stream.error.c_str());
+    return;
+  }
+  const ProfileConditioner conditioner{ConditioningParameters{}};
+  std::vector<float> row_z_mm(static_cast<std::size_t>(conditioner.width()));
+  std::int64_t input_points = 0;
+  std::size_t next = 0;
+  for (auto _ : state) {
+    const Profile& profile = stream.profiles[next];
+    conditioner.condition(profile, row_z_mm.data());
+    benchmark::DoNotOptimize(row_z_mm.data());
+    benchmark::ClobberMemory();
+    input_points += static_cast<std::int64_t>(profile.width());
+    next = next + 1 == stream.profiles.size() ? 0 : next + 1;
+  }
+  state.SetItemsProcessed(input_points);
+}
+BENCHMARK(Conditioning)->Arg(640)->Arg(1280)->Arg(3200)->Unit(benchmark::kMicrosecond);
+
+// The regression model base and its recognizer, loaded once for both whole-cell runs.
+struct BenchRecognition {
+  std::unique_ptr<ModelBase> base;
+  std::unique_ptr<Recognizer> recognizer;
+  std::string error;  // one line: why there is no model base
+};
+
+const BenchRecognition& bench_recognition() {
+  static const BenchRecognition recognition = [] {
+    BenchRecognition loaded;
+    const char* from_environment = std::getenv("COSMOS_BENCH_MODEL_BASE");
+    const fs::path path = from_environment != nullptr && *from_environment != '\0'
+                              ? fs::path(from_environment)
+                              : fs::path(COSMOS_REGRESSION_MODEL_BASE);
+    try {
+      loaded.base = std::make_unique<ModelBase>(read_model_base(path));
+      // The base was built with the default parameters (tests/CMakeLists.txt).
+      loaded.recognizer =
+          std::make_unique<Recognizer>(*loaded.base, CosmosParameters{}, RecognitionParameters{});
+    } catch (const std::exception& e) {
+      loaded.error = "cannot read the model base " + path.string() + " (" + e.what() +
+                     "): set COSMOS_BENCH_MODEL_BASE or build it with ctest";
+    }
+    return loaded;
+  }();
+  return recognition;
+}
+
+PartRecognitionContext recognition_context(const BenchRecognition& recognition,
+                                           const ScanLoop& loop) {
+  PartRecognitionContext context;
+  context.recognizer = recognition.recognizer.get();
+  context.model_base = recognition.base.get();
+  for (const ModelPart& part : recognition.base->parts) {
+    const PartEntry* entry = regression_catalog().find(part.name);
+    context.catalog_index_of_base_part.push_back(
+        entry != nullptr ? static_cast<int>(entry - regression_catalog().parts.data()) : -1);
+  }
+  context.mm_per_tick = ScannerParameters{}.encoder_mm_per_tick;
+  context.x0_loop_mm = loop.x0_loop_mm();
+  return context;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+// latency_ms runs from the tracker completing the part (the row after its last one) to the
+// publisher sending its pose. Unpaced, the acquisition thread outruns the belt, so this
+// includes the part's recognition and any wait behind the parts completed before it; the
+// recognizer's own time per part is reported beside it (recognize_p50_ms).
+void EndOfPartToPose(benchmark::State& state) {
+  const BenchRecognition& recognition = bench_recognition();
+  if (!recognition.error.empty()) {
+    state.SkipWithError(recognition.error.c_str());
+    return;
+  }
+  std::vector<double> latencies_ms, recognize_ms;
+  std::int64_t parts_seen = 0;
+  for (auto _ : state) {
+    try {
+      SimulatedSource source(regression_catalog(), ScannerParameters{},
+                             source_settings(kCellParts));
+      if (source.start() != SourceStatus::kOk) {
+        state.SkipWithError(std::string(source.last_error()).c_str());
+        return;
+      }
+      ScanLoopSettings loop_settings;
+      loop_settings.wait_for_recognizer = true;  // unpaced: every part is recognized
+      ScanLoop loop(loop_settings);
+      MemoryPublisher publisher;
+      CellRunSettings settings;
+      settings.paced = false;
+      settings.deterministic_output = false;  // latency_ms is measured, not zeroed
+      const CellRunSummary summary =
+          run_cell(source, loop, recognition_context(recognition, loop), publisher, settings,
+                   [&recognize_ms](const PartRecognition& part) {
+                     recognize_ms.push_back(part.result.timings.total_ms);
+                   });
+      parts_seen += summary.parts_seen;
+      for (const PartPose& pose : publisher.poses) latencies_ms.push_back(pose.latency_ms);
+    } catch (const std::exception& e) {
+      state.SkipWithError(
+          (std::string(e.what()) + " (catalog meshes: scripts/fetch_catalog.sh)").c_str());
+      return;
+    }
+  }
+  state.counters["latency_p50_ms"] = median(latencies_ms);
+  state.counters["latency_max_ms"] =
+      latencies_ms.empty() ? 0 : *std::max_element(latencies_ms.begin(), latencies_ms.end());
+  state.counters["recognize_p50_ms"] = median(recognize_ms);
+  state.counters["parts_seen"] = static_cast<double>(parts_seen);
+  state.counters["poses"] = static_cast<double>(latencies_ms.size());
+}
+BENCHMARK(EndOfPartToPose)->Iterations(1)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+// The jitter is the lateness of each period's start against its absolute deadline
+// (deadline_pacer.hpp), with the recognizer and publisher threads running beside the loop.
+void PacedJitter(benchmark::State& state) {
+  const BenchRecognition& recognition = bench_recognition();
+  if (!recognition.error.empty()) {
+    state.SkipWithError(recognition.error.c_str());
+    return;
+  }
+  CellRunSummary summary;
+  for (auto _ : state) {
+    try {
+      SimulatedSource source(regression_catalog(), ScannerParameters{},
+                             source_settings(kPacedParts));
+      if (source.start() != SourceStatus::kOk) {
+        state.SkipWithError(std::string(source.last_error()).c_str());
+        return;
+      }
+      ScanLoop loop{ScanLoopSettings{}};
+      MemoryPublisher publisher;
+      CellRunSettings settings;
+      settings.paced = true;
+      settings.line_rate_hz = ScannerParameters{}.line_rate_hz;
+      summary = run_cell(source, loop, recognition_context(recognition, loop), publisher, settings);
+    } catch (const std::exception& e) {
+      state.SkipWithError(
+          (std::string(e.what()) + " (catalog meshes: scripts/fetch_catalog.sh)").c_str());
+      return;
+    }
+  }
+  state.counters["start_jitter_p50_us"] = summary.start_jitter_p50_us;
+  state.counters["start_jitter_p99_us"] = summary.start_jitter_p99_us;
+  state.counters["start_jitter_max_us"] = summary.start_jitter_max_us;
+  state.counters["overruns"] = static_cast<double>(summary.deadline_overruns);
+  state.counters["profiles"] = static_cast<double>(summary.profiles);
+  state.counters["parts_dropped"] = static_cast<double>(summary.parts_dropped);
+}
+BENCHMARK(PacedJitter)->Iterations(1)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace cosmos
