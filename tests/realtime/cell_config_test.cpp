@@ -11,41 +11,25 @@
 #include <string>
 
 #include "core/input_error.hpp"
+#include "tests/common/config_file_test.hpp"
 
 namespace cosmos {
 namespace {
 
 namespace fs = std::filesystem;
 
-class CellConfigFile : public ::testing::Test {
+class CellConfigFile : public testing::ConfigFileTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("cosmos_cell_config_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path write(const std::string& text) const {
-    const fs::path path = dir_ / "cell.yaml";
-    std::ofstream(path) << text;
-    return path;
-  }
-
   std::string error_of(const std::string& text) const {
-    try {
-      load_cell_config(write(text));
-    } catch (const InputError& error) {
-      return error.what();
-    }
-    return "(no error)";
+    const std::string error =
+        error_when_loading(text, [](const fs::path& file) { load_cell_config(file); });
+    return error.empty() ? "(no error)" : error;
   }
 
   // `file:LINE: key: ` of the written file.
   std::string where(int line, const std::string& key) const {
-    return (dir_ / "cell.yaml").string() + ":" + std::to_string(line) + ": " + key + ": ";
+    return path().string() + ":" + std::to_string(line) + ": " + key + ": ";
   }
-
-  fs::path dir_;
 };
 
 TEST_F(CellConfigFile, ShippedConfigHoldsTheDocumentedDefaults) {

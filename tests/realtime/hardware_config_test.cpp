@@ -10,40 +10,21 @@
 #include <string>
 
 #include "core/input_error.hpp"
+#include "tests/common/config_file_test.hpp"
 
 namespace cosmos {
 namespace {
 
 namespace fs = std::filesystem;
 
-class HardwareConfigTest : public ::testing::Test {
+class HardwareConfigTest : public testing::ConfigFileTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("cosmos_hardware_config_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path write(const std::string& text) const {
-    const fs::path path = dir_ / "hw.yaml";
-    std::ofstream(path) << text;
-    return path;
-  }
-
+  HardwareConfigTest() : ConfigFileTest("hw.yaml") {}
   std::string error_of(const std::string& text) const {
-    try {
-      read_hardware_config(write(text));
-    } catch (const InputError& error) {
-      return error.what();
-    }
-    return "";
+    return error_when_loading(text, [](const fs::path& file) { read_hardware_config(file); });
   }
 
-  std::string at(int line) const {
-    return (dir_ / "hw.yaml").string() + ":" + std::to_string(line);
-  }
-
-  fs::path dir_;
+  std::string at(int line) const { return path().string() + ":" + std::to_string(line); }
 };
 
 constexpr char kMinimalGpio[] = "gpio:\n  encoder_a: ENC_A\n  encoder_b: 5\n";

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/input_error.hpp"
+#include "tests/common/config_file_test.hpp"
 #include "sim/scanner_config.hpp"
 
 namespace cosmos {
@@ -16,30 +17,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class ScannerConfig : public ::testing::Test {
+class ScannerConfig : public testing::ConfigFileTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("cosmos_scanner_config_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path write(const std::string& text) const {
-    const fs::path path = dir_ / "cell.yaml";
-    std::ofstream(path) << text;
-    return path;
-  }
-
   std::string error_of(const std::string& text) const {
-    try {
-      read_scanner_config(write(text));
-    } catch (const InputError& error) {
-      return error.what();
-    }
-    return "";
+    return error_when_loading(text, [](const fs::path& file) { read_scanner_config(file); });
   }
-
-  fs::path dir_;
 };
 
 TEST_F(ScannerConfig, ShippedConfigHoldsTheDefaults) {
