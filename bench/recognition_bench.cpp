@@ -12,10 +12,11 @@
 // that falls back to the pose search costs several times the others).
 //
 // The model base comes from $COSMOS_BENCH_MODEL_BASE, default
-// /work/main/build/test-data/regression-80.cmb (ctest's build_regression_model_base makes it);
+// <build>/test-data/regression-80.cmb (ctest's build_regression_model_base makes it);
 // the catalog from $COSMOS_BENCH_CATALOG, default config/parts-regression.yaml of the source
 // tree (found like the CLI finds config/parts.yaml).
-// Run: build/bench/recognition_bench (about a minute on an idle 2-core machine).
+// Counters are in ms; the console prints small ones with SI prefixes (1.5m ms = 1.5 us).
+// Run: build/bench/recognition_bench (under a minute on 2 cores, setup included).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -56,7 +57,7 @@ constexpr std::uint64_t kScanSeed = 11;  // the recognition regression suite's e
 // Test scans draw from streams above 2^32 so they never share noise with the model views
 // (apps/evaluation_scans.cpp, kTestStreamBase).
 constexpr std::uint64_t kTestStreamBase = std::uint64_t{1} << 32;
-constexpr const char* kDefaultModelBase = "/work/main/build/test-data/regression-80.cmb";
+constexpr const char* kDefaultModelBase = COSMOS_REGRESSION_MODEL_BASE;
 
 // The model-base build: the 20 icosahedron face centres, which are the first 20 directions
 // of `cosmos modelbase build --views N` (apps/view_direction_subset.hpp: direction 16 f + 15
@@ -277,7 +278,7 @@ void BM_Features(benchmark::State& state) {
     benchmark::DoNotOptimize(analyze_view(scan.image, fixture->cosmos()).moments);
   });
 }
-BENCHMARK(BM_Features)->Unit(benchmark::kMillisecond)->Iterations(2);
+BENCHMARK(BM_Features)->Unit(benchmark::kMillisecond)->Iterations(10);
 
 void BM_RegistrationControlPoints(benchmark::State& state) {
   const Fixture* fixture = ready_fixture(state);
@@ -291,7 +292,7 @@ void BM_RegistrationControlPoints(benchmark::State& state) {
   state.counters["points_per_scan"] =
       points / static_cast<double>(state.iterations() * fixture->scans().size());
 }
-BENCHMARK(BM_RegistrationControlPoints)->Unit(benchmark::kMillisecond)->Iterations(5);
+BENCHMARK(BM_RegistrationControlPoints)->Unit(benchmark::kMillisecond)->Iterations(100);
 
 void BM_SpectralSelection(benchmark::State& state) {
   const Fixture* fixture = ready_fixture(state);
@@ -300,7 +301,7 @@ void BM_SpectralSelection(benchmark::State& state) {
     benchmark::DoNotOptimize(fixture->recognizer().selector().select(scan.analysis.moments));
   });
 }
-BENCHMARK(BM_SpectralSelection)->Unit(benchmark::kMillisecond)->Iterations(50);
+BENCHMARK(BM_SpectralSelection)->Unit(benchmark::kMillisecond)->Iterations(1000);
 
 // §5.3 on each of the selected views: patch-group matching and the pose it implies.
 void BM_PatchGroupMatchingAndPose(benchmark::State& state) {
@@ -320,7 +321,7 @@ void BM_PatchGroupMatchingAndPose(benchmark::State& state) {
   });
   state.counters["views_per_scan"] = parameters.selection.best_views;
 }
-BENCHMARK(BM_PatchGroupMatchingAndPose)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_PatchGroupMatchingAndPose)->Unit(benchmark::kMillisecond)->Iterations(100);
 
 // The recognizer unpacks each selected view's model surface from the base's compact form
 // (counted in its registration time).
@@ -334,7 +335,7 @@ void BM_ModelSurfaceUnpack(benchmark::State& state) {
     }
   });
 }
-BENCHMARK(BM_ModelSurfaceUnpack)->Unit(benchmark::kMillisecond)->Iterations(10);
+BENCHMARK(BM_ModelSurfaceUnpack)->Unit(benchmark::kMillisecond)->Iterations(100);
 
 // The initial poses of each selected view (patch groups, principal axes, in-plane turns),
 // each scored by one correspondence pass.
@@ -349,7 +350,7 @@ void BM_PoseHypothesisRanking(benchmark::State& state) {
           {.in_plane_turns = parameters.in_plane_hypotheses}));
   });
 }
-BENCHMARK(BM_PoseHypothesisRanking)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_PoseHypothesisRanking)->Unit(benchmark::kMillisecond)->Iterations(20);
 
 // One minimum-variance registration from the chosen view's best initial pose; the recognizer
 // runs registered_hypotheses of these per selected view.
@@ -368,7 +369,7 @@ void BM_OneRegistration(benchmark::State& state) {
   state.counters["registrations_per_recognition"] =
       fixture->parameters().registered_hypotheses * fixture->parameters().selection.best_views;
 }
-BENCHMARK(BM_OneRegistration)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_OneRegistration)->Unit(benchmark::kMillisecond)->Iterations(50);
 
 // The chosen view's registered pose judged against the part's views around it.
 void BM_PartSupport(benchmark::State& state) {
@@ -381,7 +382,7 @@ void BM_PartSupport(benchmark::State& state) {
         scan.chosen_registered, parameters.registration, parameters.support));
   });
 }
-BENCHMARK(BM_PartSupport)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_PartSupport)->Unit(benchmark::kMillisecond)->Iterations(50);
 
 // The fallback, for one part (the recognizer searches up to `searched_parts` of them, and
 // only when no selected view registers with enough support).
@@ -395,7 +396,7 @@ void BM_FallbackPoseSearchOnePart(benchmark::State& state) {
                                               parameters.search));
   });
 }
-BENCHMARK(BM_FallbackPoseSearchOnePart)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_FallbackPoseSearchOnePart)->Unit(benchmark::kMillisecond)->Iterations(5);
 
 void report_outcomes(benchmark::State& state, const Fixture& fixture) {
   int identified = 0, fell_back = 0;
@@ -416,7 +417,7 @@ void BM_Recognize(benchmark::State& state) {
   });
   report_outcomes(state, *fixture);
 }
-BENCHMARK(BM_Recognize)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_Recognize)->Unit(benchmark::kMillisecond)->Iterations(5);
 
 // What the real-time cell pays once the scan's features exist.
 void BM_RecognizeAnalyzed(benchmark::State& state) {
@@ -428,7 +429,7 @@ void BM_RecognizeAnalyzed(benchmark::State& state) {
   });
   report_outcomes(state, *fixture);
 }
-BENCHMARK(BM_RecognizeAnalyzed)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_RecognizeAnalyzed)->Unit(benchmark::kMillisecond)->Iterations(5);
 
 // build_model_base (apps/model_base_builder.cpp) is compiled only into the `cosmos`
 // executable, not into a library a bench links, so this repeats its per-part work with the
@@ -450,15 +451,15 @@ void BM_ModelBaseBuildOnePart(benchmark::State& state) {
   RegistrationPointParameters control_points;
   control_points.stride_px = kModelSurfaceStridePx;
   std::vector<double> view_ms, scan_ms, analysis_ms, control_points_ms;
-  double mesh_ms = 0, renderer_ms = 0, grouping_ms = 0;
+  std::vector<double> mesh_ms, renderer_ms, grouping_ms;
   int views = 0;
   for (auto _ : state) {
     Clock::time_point stage = Clock::now();
     const TriangleMesh mesh = load_mesh(entry.mesh_path, entry.size_mm);
-    mesh_ms = elapsed_ms(stage);
+    mesh_ms.push_back(elapsed_ms(stage));
     stage = Clock::now();
     ModelViewRenderer renderer(mesh, entry.name, scanner);
-    renderer_ms = elapsed_ms(stage);
+    renderer_ms.push_back(elapsed_ms(stage));
     ModelBase base;
     base.parts.push_back(
         {entry.name, entry.mesh_path.filename().string(), entry.size_mm, 0, entry.symmetric});
@@ -488,7 +489,7 @@ void BM_ModelBaseBuildOnePart(benchmark::State& state) {
     }
     stage = Clock::now();
     const ViewGroupingResult grouping = group_model_views(base, ViewGroupingParameters{});
-    grouping_ms = elapsed_ms(stage);
+    grouping_ms.push_back(elapsed_ms(stage));
     benchmark::DoNotOptimize(grouping.clusters.data());
     views = static_cast<int>(base.views.size());
   }
@@ -497,11 +498,11 @@ void BM_ModelBaseBuildOnePart(benchmark::State& state) {
   state.counters["scan_median_ms"] = median(scan_ms);
   state.counters["features_median_ms"] = median(analysis_ms);
   state.counters["control_points_median_ms"] = median(control_points_ms);
-  state.counters["mesh_load_ms"] = mesh_ms;
-  state.counters["scanner_scene_ms"] = renderer_ms;
-  state.counters["grouping_ms"] = grouping_ms;
+  state.counters["mesh_load_median_ms"] = median(mesh_ms);
+  state.counters["scanner_scene_median_ms"] = median(renderer_ms);
+  state.counters["grouping_median_ms"] = median(grouping_ms);
 }
-BENCHMARK(BM_ModelBaseBuildOnePart)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_ModelBaseBuildOnePart)->Unit(benchmark::kMillisecond)->Iterations(5);
 
 }  // namespace
 }  // namespace cosmos

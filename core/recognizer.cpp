@@ -113,10 +113,16 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   const std::vector<SpectralCandidate> selected = selector_.select(analysis.moments);
   result.timings.selection_ms = elapsed_ms(stage);
 
-  for (const SpectralCandidate& candidate : selected)
-    result.candidates.push_back(verify(analysis, scene_points.points, candidate,
+  const RegistrationPoints ranking_points =
+      spread_subset(scene_points.points, parameters_.ranking_points);
+  for (const SpectralCandidate& candidate : selected) {
+    result.candidates.push_back(verify(analysis, scene_points.points, ranking_points, candidate,
                                        result.timings.matching_ms, result.timings.registration_ms));
-  result.views_examined = static_cast<int>(selected.size());
+    ++result.views_examined;
+    if (result.candidates.back().registered &&
+        result.candidates.back().inlier_fraction >= parameters_.sufficient_support)
+      break;
+  }
   const RecognitionCandidate* best = best_candidate(result.candidates);
   if (!best || best->inlier_fraction < parameters_.min_inlier_fraction) {
     search_candidate_parts(analysis, scene_points.points, result);
@@ -148,6 +154,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
 
 RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene,
                                         const RegistrationPoints& scene_points,
+                                        const RegistrationPoints& ranking_points,
                                         const SpectralCandidate& selected, double& matching_ms,
                                         double& registration_ms) const {
   const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(selected.view)];
@@ -167,7 +174,7 @@ RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene,
   const ModelSurface model(view);
   std::vector<RigidTransform> starts;
   for (const PoseHypothesis& hypothesis :
-       rank_pose_hypotheses(scene_points, model.points(), from_patches, parameters_.registration,
+       rank_pose_hypotheses(ranking_points, model.points(), from_patches, parameters_.registration,
                             {.in_plane_turns = parameters_.in_plane_hypotheses})) {
     if (starts.size() >= static_cast<std::size_t>(parameters_.registered_hypotheses)) break;
     starts.push_back(hypothesis.T_model_scene);

@@ -47,6 +47,12 @@ struct RecognitionParameters {
   RegistrationPointParameters scene_points{.stride_px = 4};
   int in_plane_hypotheses = 12;   // turns about the viewing axis tried per candidate view
   int registered_hypotheses = 2;  // best-scoring initial poses refined per candidate view
+  // Initial poses are ranked on this many evenly spread scene control points (one
+  // correspondence pass each); registration then uses them all.
+  int ranking_points = 300;
+  // Verification stops at the first selected view whose part support reaches this: the
+  // others cannot beat it by much, and a wrong part explains 5-20 % of a scene, not 90 %.
+  double sufficient_support = 0.9;
   PartSupportParameters support;  // what counts as explained scene surface
   // When no selected view registers with enough support: the pose search over every view of
   // the `searched_parts` parts whose closest view clusters rank first.
@@ -118,6 +124,7 @@ class Recognizer {
 
  private:
   RecognitionCandidate verify(const ViewAnalysis& scene, const RegistrationPoints& scene_points,
+                              const RegistrationPoints& ranking_points,
                               const SpectralCandidate& selected, double& matching_ms,
                               double& registration_ms) const;
   // The fallback: every view of the candidates' parts (part_pose_search.hpp).
