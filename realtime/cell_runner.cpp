@@ -42,7 +42,7 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
     }
     if (settings.recognizer_delay_ms > 0)
       std::this_thread::sleep_for(std::chrono::milliseconds(settings.recognizer_delay_ms));
-    const PartBuilder& builder = loop.builder(index);
+    PartBuilder& builder = loop.builder(index);
     CompletedPose completed{recognize_part(builder, context, part_seq++), builder.completed_ns};
     (completed.recognition.pose.status == PoseStatus::kOk ? status.parts_recognized
                                                           : status.parts_rejected)

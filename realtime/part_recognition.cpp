@@ -27,7 +27,8 @@ RigidTransform T_belt_loop() {
 
 }  // namespace
 
-PartView extract_part_view(const PartBuilder& builder, const PartRecognitionContext& context) {
+PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& context) {
+  builder.cosmos.finish();
   const IncrementalCosmos& source = builder.cosmos;
   const int full_width = source.image().width();
   const int c0 = std::max(0, builder.column_min - kColumnMargin);
@@ -80,7 +81,7 @@ PartView extract_part_view(const PartBuilder& builder, const PartRecognitionCont
   return part;
 }
 
-PartRecognition recognize_part(const PartBuilder& builder, const PartRecognitionContext& context,
+PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContext& context,
                                std::int64_t part_seq) {
   const auto start = std::chrono::steady_clock::now();
   const PartView part = extract_part_view(builder, context);

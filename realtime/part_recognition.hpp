@@ -39,14 +39,17 @@ struct PartView {
   RangeImage image;
   ViewAnalysis analysis;
 };
-PartView extract_part_view(const PartBuilder& builder, const PartRecognitionContext& context);
+// Finishes the builder's COSMOS first: the pipeline's last rows (up to the smoothing depth)
+// are drained here, on the recognizer's thread, rather than in the acquisition thread's
+// profile that completed the part (2.3 ms of a 400 us period, measured).
+PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& context);
 
 struct PartRecognition {
   PartPose pose;
   RecognitionResult result;
   RigidTransform T_belt_part;  // for checks against a simulated ground truth
 };
-PartRecognition recognize_part(const PartBuilder& builder, const PartRecognitionContext& context,
+PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContext& context,
                                std::int64_t part_seq);
 
 // T_belt_part from a pose of T_cell_part at encoder count e (the inverse of the chain above).

@@ -93,7 +93,6 @@ void ScanLoop::complete(const TrackedPart& part) {
     return;
   }
   PartBuilder& builder = *builders_[static_cast<std::size_t>(index)];
-  builder.cosmos.finish();
   builder.column_min = width() - 1 - part.column_max;
   builder.column_max = width() - 1 - part.column_min;
   builder.completed_ns = monotonic_now_ns();

@@ -84,7 +84,8 @@ class ScanLoop {
   // End of stream: completes every open part.
   void flush();
 
-  // The recognizer's side: completed builders in completion order, and their return.
+  // The recognizer's side: completed builders in completion order (their COSMOS still to
+  // be finished: extract_part_view does it on the recognizer's thread), and their return.
   SpscRing<int>& completed() { return completed_; }
   SpscRing<int>& returned() { return returned_; }
   PartBuilder& builder(int index) { return *builders_[static_cast<std::size_t>(index)]; }
