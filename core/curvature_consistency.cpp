@@ -159,13 +159,24 @@ void smooth_frame_row(const SmoothingRowInput& in, float* const* out_frame,
     }
   }
   const auto directions = std::make_integer_sequence<int, 8>{};
+  const int begin = std::clamp(in.column_begin, 0, in.width);
+  const int end = in.column_end < 0 ? in.width : std::clamp(in.column_end, begin, in.width);
+  // Outside the range every pixel is invalid and keeps its frame, as inside: a copy.
+  for (int m = 0; m < kFrameComponents; ++m) {
+    std::copy(in.frame[1][m], in.frame[1][m] + begin, out_frame[m]);
+    std::copy(in.frame[1][m] + end, in.frame[1][m] + in.width, out_frame[m] + end);
+  }
+  if (begin >= end) return;
   if (in.width <= 2) {
-    smooth_columns(in, clamped, out_frame, 0, in.width, scales, directions);
+    smooth_columns(in, clamped, out_frame, begin, end, scales, directions);
     return;
   }
-  smooth_columns(in, clamped, out_frame, 0, 1, scales, directions);
-  smooth_columns(in, shifted, out_frame, 1, in.width - 1, scales, directions);
-  smooth_columns(in, clamped, out_frame, in.width - 1, in.width, scales, directions);
+  if (begin == 0) smooth_columns(in, clamped, out_frame, 0, 1, scales, directions);
+  const int inner_begin = std::max(begin, 1), inner_end = std::min(end, in.width - 1);
+  if (inner_begin < inner_end)
+    smooth_columns(in, shifted, out_frame, inner_begin, inner_end, scales, directions);
+  if (end == in.width)
+    smooth_columns(in, clamped, out_frame, in.width - 1, in.width, scales, directions);
 }
 
 void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& parameters) {

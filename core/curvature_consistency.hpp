@@ -22,6 +22,11 @@ namespace cosmos {
 // frames; at the image border the missing row points at row r (its same-side bits are 0).
 struct SmoothingRowInput {
   int width = 0;
+  // Only columns [column_begin, column_end) are smoothed (column_end -1: the whole row); the
+  // others must be invalid pixels, and keep their frame, as invalid pixels do inside. A
+  // caller that knows where the row's valid pixels lie skips the smoothing of the rest.
+  int column_begin = 0;
+  int column_end = -1;
   const std::uint8_t* valid = nullptr;
   const std::uint8_t* same_side = nullptr;
   const float* position[3][3] = {};

@@ -45,6 +45,7 @@ class IncrementalCosmos {
   bool fit_next();
   bool link_next();
   bool smooth_next(int level);
+  std::array<int, 2> valid_extent(const std::uint8_t* valid) const;
   bool classify_next();
   // Frame rows of smoothing level `level` (0 = fitted, iterations = final), row clamped to
   // the part's rows as whole-image processing does.
@@ -67,6 +68,8 @@ class IncrementalCosmos {
   int fitted_rows_ = 0;
   int linked_rows_ = 0;
   std::vector<int> smoothed_rows_;  // per level 1 .. iterations
+  // Per row: the columns smoothing writes, [begin, end) (smooth_next).
+  std::vector<std::array<int, 2>> smoothed_columns_;
   int classified_rows_ = 0;
 };
 

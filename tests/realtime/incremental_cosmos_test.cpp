@@ -87,6 +87,21 @@ TEST(IncrementalCosmos, EqualsWholeImageForAnyIterationCount) {
   }
 }
 
+TEST(IncrementalCosmos, EqualsWholeImageForAPartNarrowerThanTheBelt) {
+  // Smoothing runs only between each row's first and last valid pixel: a part in the middle
+  // of a wide, otherwise empty belt, its rows of varying extent, gives the same COSMOS.
+  const RangeImage part = relief(70, 80, 4);
+  RangeImage belt(200, 80, 0.4, 0.4);
+  for (int row = 0; row < part.height(); ++row) {
+    const int inset = std::abs(row - 40) / 4;  // a lozenge-ish outline
+    for (int column = inset; column < part.width() - inset; ++column)
+      belt.z_mm(60 + column, row) = part.z_mm(column, row);
+  }
+  const CosmosParameters parameters;
+  IncrementalCosmos builder(parameters, 200, 100, 0.4, 0.4);
+  expect_same_as_whole_image(builder, belt, parameters);
+}
+
 TEST(IncrementalCosmos, RefusesRowsBeyondItsCapacity) {
   const CosmosParameters parameters;
   IncrementalCosmos builder(parameters, 20, 3, 0.4, 0.4);
