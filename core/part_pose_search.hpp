@@ -21,7 +21,9 @@
 namespace cosmos {
 
 struct PartPoseSearchParameters {
-  int scoring_points = 200;  // scene control points used to score a hypothesis
+  // Scene control points used to score a hypothesis: 100 rank as well as 200 (measured on
+  // the 20-part catalog), at half the cost.
+  int scoring_points = 100;
   int in_plane_turns = 12;
   int refined_hypotheses = 32;  // registered on the subset before the final ranking
   int refinement_iterations = 8;

@@ -99,8 +99,15 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   if (analysis.valid_pixels == 0) return finish("no object: no surface could be fitted");
 
   Clock::time_point stage = Clock::now();
-  const RegistrationPointsResult scene_points =
+  RegistrationPointsResult scene_points =
       build_registration_points(scene, parameters_.scene_points, &analysis.frames);
+  // A small visible surface gets denser control points: a hundred points do not tell a
+  // good pose from a poor one reliably.
+  for (RegistrationPointParameters denser = parameters_.scene_points;
+       scene_points.points.size() < parameters_.min_dense_scene_points && denser.stride_px > 1;) {
+    denser.stride_px /= 2;
+    scene_points = build_registration_points(scene, denser, &analysis.frames);
+  }
   result.scene_points = scene_points.points.size();
   result.timings.features_ms += elapsed_ms(stage);
   if (scene_points.status != RegistrationPointsStatus::ok ||
@@ -124,7 +131,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
       break;
   }
   const RecognitionCandidate* best = best_candidate(result.candidates);
-  if (!best || best->inlier_fraction < parameters_.min_inlier_fraction) {
+  if (!best || best->inlier_fraction < parameters_.sufficient_support) {
     search_candidate_parts(analysis, scene_points.points, result);
     best = best_candidate(result.candidates);
   }
@@ -187,13 +194,10 @@ RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene,
 void Recognizer::search_candidate_parts(const ViewAnalysis& scene,
                                         const RegistrationPoints& scene_points,
                                         RecognitionResult& result) const {
-  // Parts in the order of their closest view cluster (§5.2's first tier).
-  std::vector<int> parts;
-  for (int cluster : selector_.rank_clusters(scene.moments)) {
-    const int part = model_base_.clusters[static_cast<std::size_t>(cluster)].part_index;
-    if (parts.size() >= static_cast<std::size_t>(parameters_.searched_parts)) break;
-    if (std::find(parts.begin(), parts.end(), part) == parts.end()) parts.push_back(part);
-  }
+  // Parts in the order of their closest view.
+  std::vector<int> parts = selector_.rank_parts(scene.moments);
+  if (parts.size() > static_cast<std::size_t>(parameters_.searched_parts))
+    parts.resize(static_cast<std::size_t>(parameters_.searched_parts));
   for (int part : parts) {
     for (const ModelBaseView& view : model_base_.views)
       result.views_examined += view.part_index == part;
@@ -217,6 +221,9 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene,
       result.timings.registration_ms += elapsed_ms(stage);
       result.candidates.push_back(candidate);
     }
+    // As in verification: a part that explains this much of the scene ends the search.
+    const RecognitionCandidate* best = best_candidate(result.candidates);
+    if (best && best->inlier_fraction >= parameters_.sufficient_support) break;
   }
 }
 

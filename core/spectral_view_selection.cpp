@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <limits>
 #include <numeric>
 
 namespace cosmos {
@@ -53,6 +54,18 @@ std::vector<int> SpectralViewSelector::rank_clusters(const MomentVector& moments
   std::vector<int> order(distances.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return distances[a] < distances[b]; });
+  return order;
+}
+
+std::vector<int> SpectralViewSelector::rank_parts(const MomentVector& moments) const {
+  std::vector<double> closest(model_base_.parts.size(), std::numeric_limits<double>::infinity());
+  for (const ModelBaseView& view : model_base_.views) {
+    const auto part = static_cast<std::size_t>(view.part_index);
+    closest[part] = std::min(closest[part], distance(moments, view.moments));
+  }
+  std::vector<int> order(closest.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return closest[a] < closest[b]; });
   return order;
 }
 
