@@ -25,14 +25,27 @@ class RecognitionRegression : public ::testing::Test {
     dir_ = fs::temp_directory_path() / ("cosmos-recognition-" + std::to_string(::getpid()));
     fs::create_directories(dir_);
     base_ = regression_model_base();
-    eval_ = run_cosmos("eval --modelbase '" + base_.string() + "' --catalog '" +
-                           std::string(COSMOS_SOURCE_DIR) +
-                           "/config/parts.yaml' --tests 100 --seed 11 --unknown bunny "
-                           "--threads 2 --out '" +
-                           (dir_ / "eval").string() + "'",
-                       dir_);
-    metrics_ = nlohmann::json::parse(read_text(dir_ / "eval" / "metrics.json"), nullptr, false);
   }
+
+  // The eval ctest runs once before the suite (tests/CMakeLists.txt, run_regression_eval);
+  // run on its own, the binary runs it here when its metrics are missing.
+  static const nlohmann::json& metrics() {
+    static const nlohmann::json parsed = [] {
+      const fs::path metrics_file = eval_dir() / "metrics.json";
+      if (!fs::exists(metrics_file)) {
+        const CliRun run = run_cosmos(
+            "eval --modelbase '" + base_.string() + "' --catalog '" +
+                std::string(COSMOS_SOURCE_DIR) +
+                "/config/parts.yaml' --tests 100 --seed 11 --unknown bunny --threads 2 --out '" +
+                eval_dir().string() + "'",
+            dir_);
+        EXPECT_EQ(run.exit_code, 0) << run.err;
+      }
+      return nlohmann::json::parse(read_text(metrics_file), nullptr, false);
+    }();
+    return parsed;
+  }
+  static fs::path eval_dir() { return COSMOS_REGRESSION_EVAL_DIR; }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
 
   // Scans `part` with `cosmos sim scan` into the suite's directory.
@@ -53,38 +66,38 @@ class RecognitionRegression : public ::testing::Test {
   }
 
   static inline fs::path dir_, base_;
-  static inline CliRun eval_;
-  static inline nlohmann::json metrics_;
 };
 
 TEST_F(RecognitionRegression, IdentifiesAtLeast95PercentOf100Scans) {
-  ASSERT_EQ(eval_.exit_code, 0) << eval_.err;
-  ASSERT_TRUE(metrics_.is_object());
-  EXPECT_EQ(metrics_["tests"], 100);
-  EXPECT_GE(metrics_["identification_rate"].get<double>(), 0.95);
-  EXPECT_GE(metrics_["add_s_recall_10pct"].get<double>(), 0.93);
-  EXPECT_LE(metrics_["false_reject_rate"].get<double>(), 0.05);
+  const nlohmann::json& m = metrics();
+  ASSERT_TRUE(m.is_object());
+  EXPECT_EQ(m["tests"], 100);
+  EXPECT_GE(m["identification_rate"].get<double>(), 0.95);
+  EXPECT_GE(m["add_s_recall_10pct"].get<double>(), 0.93);
+  EXPECT_LE(m["false_reject_rate"].get<double>(), 0.05);
   // Correct identifications of the asymmetric parts come with an accurate pose.
-  EXPECT_LE(metrics_["rotation_error_deg"]["median"].get<double>(), 1.0);
-  EXPECT_LE(metrics_["translation_error_mm"]["median"].get<double>(), 1.0);
+  EXPECT_LE(m["rotation_error_deg"]["median"].get<double>(), 1.0);
+  EXPECT_LE(m["translation_error_mm"]["median"].get<double>(), 1.0);
 }
 
 TEST_F(RecognitionRegression, RejectsThePartTheBaseDoesNotHold) {
-  ASSERT_EQ(eval_.exit_code, 0) << eval_.err;
-  EXPECT_GE(metrics_["unknown_reject_rate"].get<double>(), 0.9);
+  const nlohmann::json& m = metrics();
+  ASSERT_TRUE(m.is_object());
+  EXPECT_GE(m["unknown_reject_rate"].get<double>(), 0.9);
 }
 
 TEST_F(RecognitionRegression, ReportHasItsFilesAndStableKeys) {
+  const nlohmann::json& m = metrics();
   for (const char* file : {"metrics.json", "report.html", "confusion_matrix.png",
                            "cluster_rate.png", "rotation_error_cdf.png"})
-    EXPECT_TRUE(fs::exists(dir_ / "eval" / file)) << file;
+    EXPECT_TRUE(fs::exists(eval_dir() / file)) << file;
   for (const char* key :
        {"tests", "identification_rate", "spectral_cluster_hit_rate", "spectral_view_selection_rate",
         "fraction_db_examined", "rotation_error_deg", "translation_error_mm", "add_s_recall_10pct",
         "add_s_recall_2pct", "unknown_reject_rate", "false_reject_rate", "recognition_ms"})
-    EXPECT_TRUE(metrics_.contains(key)) << key;
+    EXPECT_TRUE(m.contains(key)) << key;
   for (const char* k : {"1", "2", "5", "10"})
-    EXPECT_TRUE(metrics_["spectral_cluster_hit_rate"].contains(k)) << k;
+    EXPECT_TRUE(m["spectral_cluster_hit_rate"].contains(k)) << k;
 }
 
 TEST_F(RecognitionRegression, RecognizeJsonGivesPartPoseAndCandidates) {
