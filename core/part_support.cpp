@@ -24,10 +24,18 @@ PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBas
 
   const RigidTransform T_part_scene = view.T_scanner_part.inverse() * T_model_scene;
   const double min_cosine = std::cos(parameters.neighbour_view_angle_deg * std::numbers::pi / 180);
+  std::vector<std::pair<double, int>> neighbours;  // (-cosine, view): nearest first
   for (std::size_t v = 0; v < base.views.size(); ++v) {
     const ModelBaseView& other = base.views[v];
     if (static_cast<int>(v) == matched || other.part_index != view.part_index) continue;
-    if (other.direction_part.dot(view.direction_part) < min_cosine) continue;
+    const double cosine = other.direction_part.dot(view.direction_part);
+    if (cosine >= min_cosine) neighbours.emplace_back(-cosine, static_cast<int>(v));
+  }
+  std::sort(neighbours.begin(), neighbours.end());
+  if (neighbours.size() > static_cast<std::size_t>(parameters.max_neighbour_views))
+    neighbours.resize(static_cast<std::size_t>(parameters.max_neighbour_views));
+  for (const auto& [negative_cosine, v] : neighbours) {
+    const ModelBaseView& other = base.views[static_cast<std::size_t>(v)];
     const ModelSurface other_surface(other);
     correspondence_distances(scene, other_surface.points(), other.T_scanner_part * T_part_scene,
                              strict, distance_mm);

@@ -19,6 +19,9 @@ namespace cosmos {
 struct PartSupportParameters {
   double inlier_distance_mm = 0.2;
   double neighbour_view_angle_deg = 40.0;
+  // At most this many of them, the nearest first: a 320-view base has ~37 within 40 degrees,
+  // where 12 (~20 degrees) already cover what one view misses.
+  int max_neighbour_views = 20;
 };
 
 struct PartSupport {

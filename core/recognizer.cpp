@@ -233,9 +233,17 @@ void Recognizer::register_candidate(const RegistrationPoints& scene_points,
                                     RecognitionCandidate& candidate) const {
   RegistrationResult best;
   Support best_support;
+  // Coarse to fine: the iterations far from the optimum on a spread subset, the last few on
+  // every control point (ch. 6's estimate is the fine one).
+  const RegistrationPoints coarse_points =
+      spread_subset(scene_points, parameters_.coarse_registration_points);
+  RegistrationParameters fine = parameters_.registration;
+  fine.max_iterations = parameters_.fine_registration_iterations;
   for (const RigidTransform& start : starts) {
-    const RegistrationResult registration =
-        register_views(scene_points, model, start, parameters_.registration);
+    RegistrationResult registration =
+        register_views(coarse_points, model, start, parameters_.registration);
+    if (registration.status == RegistrationStatus::invalid_input) continue;
+    registration = register_views(scene_points, model, registration.T_model_scene, fine);
     // A degenerate (still planar) result is kept: its support decides.
     if (registration.status == RegistrationStatus::invalid_input) continue;
     const Support support =

@@ -46,11 +46,15 @@ struct RecognitionParameters {
   // on a catalog part, enough to fix 6 parameters many times over.
   RegistrationPointParameters scene_points{.stride_px = 4};
   int min_dense_scene_points = 600;  // fewer: halve the stride (down to every pixel)
-  int in_plane_hypotheses = 12;   // turns about the viewing axis tried per candidate view
-  int registered_hypotheses = 2;  // best-scoring initial poses refined per candidate view
+  int in_plane_hypotheses = 12;      // turns about the viewing axis tried per candidate view
+  int registered_hypotheses = 2;     // best-scoring initial poses refined per candidate view
   // Initial poses are ranked on this many evenly spread scene control points (one
   // correspondence pass each); registration then uses them all.
   int ranking_points = 300;
+  // Registration runs on this many spread control points until it converges, then at most
+  // fine_registration_iterations more on all of them.
+  int coarse_registration_points = 300;
+  int fine_registration_iterations = 10;
   // Verification stops at the first selected view whose part support reaches this: the
   // others cannot beat it by much, and a wrong part rarely explains 90 % of a scene. Below
   // it the pose search runs too, so a mechanical part whose flat faces another explains at
