@@ -179,9 +179,20 @@ void smooth_frame_row(const SmoothingRowInput& in, float* const* out_frame,
     smooth_columns(in, clamped, out_frame, in.width - 1, in.width, scales, directions);
 }
 
+std::array<int, 2> valid_column_extent(const std::uint8_t* valid, int width) {
+  int begin = 0, end = width;
+  while (begin < end && !valid[begin]) ++begin;
+  while (end > begin && !valid[end - 1]) --end;
+  return {begin, end};
+}
+
 void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& parameters) {
   if (parameters.iterations <= 0) return;
   const int width = field.width(), height = field.height();
+  // A part rarely fills its image's rows: each pass computes only the valid span of a row.
+  std::vector<std::array<int, 2>> extents(static_cast<std::size_t>(height));
+  for (int row = 0; row < height; ++row)
+    extents[static_cast<std::size_t>(row)] = valid_column_extent(field.valid.row(row), width);
   std::array<PixelGrid<float>, kFrameComponents> scratch = field.frame;
   auto* previous = &field.frame;
   auto* next = &scratch;
@@ -191,6 +202,8 @@ void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& para
       in.width = width;
       in.valid = field.valid.row(row);
       in.same_side = field.same_side.row(row);
+      in.column_begin = extents[static_cast<std::size_t>(row)][0];
+      in.column_end = extents[static_cast<std::size_t>(row)][1];
       const int rows[3] = {std::max(row - 1, 0), row, std::min(row + 1, height - 1)};
       for (int r = 0; r < 3; ++r) {
         for (int axis = 0; axis < 3; ++axis)

@@ -11,6 +11,7 @@
 // One iteration of one row reads only rows r-1..r+1 of the previous iteration, so the real-time
 // loop can pipeline the iterations row by row. The row kernel is branch-free over a row of
 // structure-of-arrays frames, so that it vectorizes across columns.
+#include <array>
 #include <cstdint>
 
 #include "core/cosmos_parameters.hpp"
@@ -35,6 +36,10 @@ struct SmoothingRowInput {
 
 void smooth_frame_row(const SmoothingRowInput& in, float* const* out_frame,
                       const SmoothingParameters& parameters);
+
+// [first, last + 1) of a row's valid pixels ({w, w} or narrower when none): the columns a
+// smoothing pass needs to compute.
+std::array<int, 2> valid_column_extent(const std::uint8_t* valid, int width);
 
 // Runs parameters.iterations iterations over the whole field in place.
 void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& parameters);

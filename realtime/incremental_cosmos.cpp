@@ -98,13 +98,6 @@ float* IncrementalCosmos::writable_frame_row(int level, int component, int row) 
   return const_cast<float*>(frame_row(level, component, row));
 }
 
-std::array<int, 2> IncrementalCosmos::valid_extent(const std::uint8_t* valid) const {
-  int begin = 0, end = width_;
-  while (begin < end && !valid[begin]) ++begin;
-  while (end > begin && !valid[end - 1]) --end;
-  return {begin, end};
-}
-
 bool IncrementalCosmos::smooth_next(int level) {
   const int last = static_cast<int>(smoothed_rows_.size());
   const int row = smoothed_rows_[level - 1];
@@ -123,7 +116,8 @@ bool IncrementalCosmos::smooth_next(int level) {
   in.same_side = fitted_.same_side.row(row);
   // A part covers a fraction of the belt's width: smooth only between the row's first and
   // last valid pixel (found once, at level 1); the invalid pixels outside keep their frames.
-  if (level == 1) smoothed_columns_[static_cast<std::size_t>(row)] = valid_extent(in.valid);
+  if (level == 1)
+    smoothed_columns_[static_cast<std::size_t>(row)] = valid_column_extent(in.valid, width_);
   in.column_begin = smoothed_columns_[static_cast<std::size_t>(row)][0];
   in.column_end = smoothed_columns_[static_cast<std::size_t>(row)][1];
   const int rows[3] = {std::max(row - 1, 0), row, std::min(row + 1, rows_ - 1)};

@@ -45,7 +45,6 @@ class IncrementalCosmos {
   bool fit_next();
   bool link_next();
   bool smooth_next(int level);
-  std::array<int, 2> valid_extent(const std::uint8_t* valid) const;
   bool classify_next();
   // Frame rows of smoothing level `level` (0 = fitted, iterations = final), row clamped to
   // the part's rows as whole-image processing does.
