@@ -119,7 +119,8 @@ void ScanLoop::start_parts(std::int64_t profile_index, const Profile& profile) {
     PartBuilder& builder = *builders_[static_cast<std::size_t>(index)];
     builder.cosmos.begin_part(x0_loop_mm(),
                               static_cast<double>(profile_index) * settings_.conditioning.grid_mm);
-    std::fill(builder.labels.begin(), builder.labels.end(), -1);
+    // No clearing of labels: every row the part gets is written whole (process), and only
+    // those are read; a 3.8 MB fill here was the loop's slowest profile.
     builder.part_id = part.id;
     builder.merged_count = 0;
     builder.first_profile = profile_index;
