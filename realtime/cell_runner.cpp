@@ -138,8 +138,10 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
   std::int64_t first_t_us = -1;
   for (;;) {
     pacer.wait_next();
-    const std::int64_t start_ns = monotonic_now_ns();
     const SourceStatus status = source.next(profile);
+    // Processing time starts when the profile is in hand: a hardware source's next() waits
+    // for the camera, and the simulator's ray casting is the scanner's work, not the cell's.
+    const std::int64_t start_ns = monotonic_now_ns();
     if (status == SourceStatus::kEndOfStream) break;
     if (status == SourceStatus::kTimeout) continue;
     if (status == SourceStatus::kError) {

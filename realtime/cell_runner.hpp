@@ -2,7 +2,8 @@
 // The running cell: three threads around the ScanLoop (DESIGN.md "Real-time discipline").
 //   acquisition  (the calling thread, with the real-time settings applied): source.next() →
 //                ScanLoop::process, paced on absolute deadlines at the line rate or unpaced;
-//                records per-profile processing time; never waits on the others (except in
+//                records per-profile processing time (from the profile in hand to
+//                its last stage, source time excluded); never waits on the others (except in
 //                the unpaced wait_for_recognizer mode, scan_loop.hpp).
 //   recognizer   completed parts → recognize_part → poses ring; gives the builder back.
 //   publisher    poses ring → Publisher; cell_status_t every status period; recorded
