@@ -9,22 +9,9 @@ namespace cosmos {
 
 RegistrationPoints spread_subset(const RegistrationPoints& points, int count) {
   const int step = std::max(1, points.size() / std::max(count, 1));
-  RegistrationPoints subset;
-  subset.fit_cofactor = points.fit_cofactor;
-  subset.z_noise_sigma_mm = points.z_noise_sigma_mm;
-  const int kept = (points.size() + step - 1) / step;
-  subset.position_mm.resize(3, kept);
-  subset.normal.resize(3, kept);
-  subset.surface.resize(kSurfaceCoefficients, kept);
-  subset.residual_rms_mm.resize(kept);
-  for (int k = 0; k < kept; ++k) {
-    const int i = k * step;
-    subset.position_mm.col(k) = points.position_mm.col(i);
-    subset.normal.col(k) = points.normal.col(i);
-    subset.surface.col(k) = points.surface.col(i);
-    subset.residual_rms_mm(k) = points.residual_rms_mm(i);
-  }
-  return subset;
+  std::vector<int> indices;
+  for (int i = 0; i < points.size(); i += step) indices.push_back(i);
+  return select_points(points, indices);
 }
 
 std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene,

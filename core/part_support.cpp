@@ -34,13 +34,23 @@ PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBas
   std::sort(neighbours.begin(), neighbours.end());
   if (neighbours.size() > static_cast<std::size_t>(parameters.max_neighbour_views))
     neighbours.resize(static_cast<std::size_t>(parameters.max_neighbour_views));
+  // Each further view is asked only about the points no view has explained yet: a point
+  // within the inlier distance keeps the distance of the first view that explained it.
+  std::vector<int> unexplained;
   for (const auto& [negative_cosine, v] : neighbours) {
+    unexplained.clear();
+    for (std::size_t i = 0; i < nearest_mm.size(); ++i)
+      if (!(nearest_mm[i] <= parameters.inlier_distance_mm))
+        unexplained.push_back(static_cast<int>(i));
+    if (unexplained.empty()) break;
     const ModelBaseView& other = base.views[static_cast<std::size_t>(v)];
     const ModelSurface other_surface(other);
-    correspondence_distances(scene, other_surface.points(), other.T_scanner_part * T_part_scene,
-                             strict, distance_mm);
-    for (std::size_t i = 0; i < nearest_mm.size(); ++i)
-      nearest_mm[i] = std::min(nearest_mm[i], distance_mm[i]);
+    correspondence_distances(select_points(scene, unexplained), other_surface.points(),
+                             other.T_scanner_part * T_part_scene, strict, distance_mm);
+    for (std::size_t k = 0; k < unexplained.size(); ++k) {
+      double& nearest = nearest_mm[static_cast<std::size_t>(unexplained[k])];
+      nearest = std::min(nearest, distance_mm[k]);
+    }
     ++support.views_used;
   }
 

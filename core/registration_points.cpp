@@ -166,4 +166,24 @@ RegistrationPointsResult build_registration_points(const RangeImage& image,
   return result;
 }
 
+RegistrationPoints select_points(const RegistrationPoints& points,
+                                 const std::vector<int>& indices) {
+  RegistrationPoints subset;
+  subset.fit_cofactor = points.fit_cofactor;
+  subset.z_noise_sigma_mm = points.z_noise_sigma_mm;
+  const auto count = static_cast<Eigen::Index>(indices.size());
+  subset.position_mm.resize(3, count);
+  subset.normal.resize(3, count);
+  subset.surface.resize(kSurfaceCoefficients, count);
+  subset.residual_rms_mm.resize(count);
+  for (Eigen::Index k = 0; k < count; ++k) {
+    const int i = indices[static_cast<std::size_t>(k)];
+    subset.position_mm.col(k) = points.position_mm.col(i);
+    subset.normal.col(k) = points.normal.col(i);
+    subset.surface.col(k) = points.surface.col(i);
+    subset.residual_rms_mm(k) = points.residual_rms_mm(i);
+  }
+  return subset;
+}
+
 }  // namespace cosmos

@@ -101,6 +101,10 @@ struct RegistrationPointsResult {
   RegistrationPoints points;
 };
 
+// The points at `indices` (in that order), as scene points: positions, normals, fits and
+// residuals, without the model-side grid lookup.
+RegistrationPoints select_points(const RegistrationPoints& points, const std::vector<int>& indices);
+
 // Fits every stride-th pixel whose full window has data and no depth jump, and keeps the
 // smooth, not-grazing ones (§6.7.1). With `frames`, the normal of a control point
 // is the Darboux-frame normal of the (bicubic) local fit where that fit is valid, which is
