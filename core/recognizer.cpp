@@ -220,10 +220,10 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene,
                          candidate);
       result.timings.registration_ms += elapsed_ms(stage);
       result.candidates.push_back(candidate);
+      // As in verification: a pose that explains this much of the scene ends the search.
+      if (candidate.registered && candidate.inlier_fraction >= parameters_.sufficient_support)
+        return;
     }
-    // As in verification: a part that explains this much of the scene ends the search.
-    const RecognitionCandidate* best = best_candidate(result.candidates);
-    if (best && best->inlier_fraction >= parameters_.sufficient_support) break;
   }
 }
 
