@@ -16,6 +16,7 @@ SeparableWindowFit::SeparableWindowFit(int half_window, int degree, int max_widt
       norm_(degree + 1, 0.0),
       monomial_(static_cast<std::size_t>(degree + 1) * (degree + 1), 0.0),
       slot_row_(side_, -1),
+      slot_columns_(static_cast<std::size_t>(side_), {0, 0}),
       filtered_(static_cast<std::size_t>(side_) * filters_ * max_width_, 0.0),
       row_min_(static_cast<std::size_t>(side_) * max_width_, 0.0f),
       row_max_(static_cast<std::size_t>(side_) * max_width_, 0.0f),
@@ -31,12 +32,16 @@ SeparableWindowFit::SeparableWindowFit(int half_window, int degree, int max_widt
     for (int k = 0; k < side_; ++k) polynomial_[i * side_ + k] = std::pow(k - half_, i);
     for (int j = 0; j < i; ++j) {
       double dot = 0;
-      for (int k = 0; k < side_; ++k) dot += polynomial_[i * side_ + k] * polynomial_[j * side_ + k];
+      for (int k = 0; k < side_; ++k)
+        dot += polynomial_[i * side_ + k] * polynomial_[j * side_ + k];
       const double factor = dot / norm_[j];
-      for (int k = 0; k < side_; ++k) polynomial_[i * side_ + k] -= factor * polynomial_[j * side_ + k];
-      for (int m = 0; m <= degree_; ++m) monomial_[i * (degree_ + 1) + m] -= factor * monomial_[j * (degree_ + 1) + m];
+      for (int k = 0; k < side_; ++k)
+        polynomial_[i * side_ + k] -= factor * polynomial_[j * side_ + k];
+      for (int m = 0; m <= degree_; ++m)
+        monomial_[i * (degree_ + 1) + m] -= factor * monomial_[j * (degree_ + 1) + m];
     }
-    for (int k = 0; k < side_; ++k) norm_[i] += polynomial_[i * side_ + k] * polynomial_[i * side_ + k];
+    for (int k = 0; k < side_; ++k)
+      norm_[i] += polynomial_[i * side_ + k] * polynomial_[i * side_ + k];
   }
 }
 
@@ -47,11 +52,18 @@ void SeparableWindowFit::filter_image_row(const RangeImage& image, int image_row
   const int width = image.width();
   const float* z = image.z_mm.row(image_row);
   const double nan = std::numeric_limits<double>::quiet_NaN();
+  // A part rarely fills the row: only windows within its first and last sample can be
+  // complete (a NaN inside the span still makes its windows NaN, as before).
+  int first = 0, last = width;
+  while (first < last && std::isnan(z[first])) ++first;
+  while (last > first && std::isnan(z[last - 1])) --last;
+  const int begin = std::max(half_, first + half_), end = std::min(width - half_, last - half_);
+  slot_columns_[static_cast<std::size_t>(slot)] = {begin, std::max(begin, end)};
   for (int f = 0; f < filters_; ++f) {
     double* out = &filtered(slot, f, 0);
-    std::fill(out, out + width, nan);  // columns whose window leaves the image
+    std::fill(out, out + width, nan);  // columns whose window leaves the image or the data
     const double* p = f <= degree_ ? &polynomial_[f * side_] : nullptr;
-    for (int c = half_; c + half_ < width; ++c) {
+    for (int c = begin; c < end; ++c) {
       double sum = 0;
       for (int k = 0; k < side_; ++k) {
         const double value = z[c + k - half_];
@@ -62,7 +74,7 @@ void SeparableWindowFit::filter_image_row(const RangeImage& image, int image_row
   }
   float* low = &row_min_[static_cast<std::size_t>(slot) * max_width_];
   float* high = &row_max_[static_cast<std::size_t>(slot) * max_width_];
-  for (int c = half_; c + half_ < width; ++c) {
+  for (int c = begin; c < end; ++c) {
     low[c] = *std::min_element(z + c - half_, z + c + half_ + 1);
     high[c] = *std::max_element(z + c - half_, z + c + half_ + 1);
   }
@@ -76,10 +88,16 @@ void SeparableWindowFit::fit_row(const RangeImage& image, int row, double max_de
   for (int dv = -half_; dv <= half_; ++dv) {
     const int image_row = row + dv;
     slots[dv + half_] = image_row % side_;
-    if (slot_row_[slots[dv + half_]] != image_row) filter_image_row(image, image_row, slots[dv + half_]);
+    if (slot_row_[slots[dv + half_]] != image_row)
+      filter_image_row(image, image_row, slots[dv + half_]);
   }
-  // Column-inner loops over whole rows, so the compiler vectorizes them.
-  const int begin = half_, end = width - half_;
+  // Column-inner loops over the columns every window row can complete, so the compiler
+  // vectorizes them; the rest stay incomplete (complete_ 0, quadric 0).
+  int begin = half_, end = width - half_;
+  for (int k = 0; k < side_; ++k) {
+    begin = std::max(begin, slot_columns_[static_cast<std::size_t>(slots[k])][0]);
+    end = std::min(end, slot_columns_[static_cast<std::size_t>(slots[k])][1]);
+  }
   double* squares = residual_.data();
   for (int c = begin; c < end; ++c) squares[c] = 0;
   std::vector<float>& low = range_low_;
@@ -112,9 +130,9 @@ void SeparableWindowFit::fit_row(const RangeImage& image, int row, double max_de
       }
       const double* mi = &monomial_[i * stride];
       const double* mj = &monomial_[j * stride];
-      const double taylor[kQuadricTerms] = {mi[0] * mj[0], mi[1] * mj[0], mi[0] * mj[1],
-                                            degree_ >= 2 ? mi[2] * mj[0] : 0.0, mi[1] * mj[1],
-                                            degree_ >= 2 ? mi[0] * mj[2] : 0.0};
+      const double taylor[kQuadricTerms] = {mi[0] * mj[0], mi[1] * mj[0],
+                                            mi[0] * mj[1], degree_ >= 2 ? mi[2] * mj[0] : 0.0,
+                                            mi[1] * mj[1], degree_ >= 2 ? mi[0] * mj[2] : 0.0};
       const double inverse_norm = 1.0 / (norm_[i] * norm_[j]);
       for (int c = begin; c < end; ++c) {
         const double a = dot[c] * inverse_norm;

@@ -6,6 +6,7 @@
 // the fit's residual comes for free. Row filters are cached in a ring of 2h+1 image rows, so
 // fitting the rows of an image in order filters each image row once (the real-time loop fits
 // one row per profile).
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -42,12 +43,15 @@ class SeparableWindowFit {
   int degree_;
   int filters_;  // degree + 1 polynomial filters, then the sum of squares
   int max_width_;
-  std::vector<double> polynomial_;       // p_i(u) at u = -h..h, row per degree
-  std::vector<double> norm_;             // sum over u of p_i(u)^2
-  std::vector<double> monomial_;         // monomial coefficients of p_i, row per degree
-  std::vector<int> slot_row_;            // image row held by each ring slot (-1: none)
-  std::vector<double> filtered_;         // slot x filter x column
-  std::vector<float> row_min_, row_max_; // slot x column: depth range of the window's row
+  std::vector<double> polynomial_;  // p_i(u) at u = -h..h, row per degree
+  std::vector<double> norm_;        // sum over u of p_i(u)^2
+  std::vector<double> monomial_;    // monomial coefficients of p_i, row per degree
+  std::vector<int> slot_row_;       // image row held by each ring slot (-1: none)
+  // Per slot: the columns whose window lies within the row's data, [first, last); outside
+  // them the filtered values are NaN and nothing else is computed.
+  std::vector<std::array<int, 2>> slot_columns_;
+  std::vector<double> filtered_;          // slot x filter x column
+  std::vector<float> row_min_, row_max_;  // slot x column: depth range of the window's row
   std::vector<double> quadric_[kQuadricTerms];
   std::vector<double> residual_;
   std::vector<double> dot_;
