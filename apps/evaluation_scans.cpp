@@ -83,15 +83,21 @@ std::vector<EvaluationTest> evaluation_plan(const std::vector<EvaluationPart>& p
   return plan;
 }
 
+RangeImage scan_evaluation_test(const EvaluationTest& test,
+                                const std::vector<EvaluationPart>& parts,
+                                const ScannerParameters& scanner) {
+  const EvaluationPart& part = parts[static_cast<std::size_t>(test.part)];
+  ScannerParameters noisy = scanner;
+  noisy.seed = mix_seed(test.seed, 1);
+  return scan_single_part(part.mesh, part.name, random_rotation(mix_seed(test.seed, 0)), noisy);
+}
+
 EvaluationRecord run_evaluation_test(const EvaluationTest& test,
                                      const std::vector<EvaluationPart>& parts,
                                      const ScannerParameters& scanner, const Recognizer& recognizer,
                                      const ModelBase& base) {
   const EvaluationPart& part = parts[static_cast<std::size_t>(test.part)];
-  ScannerParameters noisy = scanner;
-  noisy.seed = mix_seed(test.seed, 1);
-  const RangeImage image =
-      scan_single_part(part.mesh, part.name, random_rotation(mix_seed(test.seed, 0)), noisy);
+  const RangeImage image = scan_evaluation_test(test, parts, scanner);
   const RecognitionResult result = recognizer.recognize(image);
 
   EvaluationRecord record;

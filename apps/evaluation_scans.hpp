@@ -46,6 +46,11 @@ std::vector<EvaluationPart> evaluation_parts(const ModelBase& base, const PartCa
 std::vector<EvaluationTest> evaluation_plan(const std::vector<EvaluationPart>& parts, int tests,
                                             std::uint64_t seed);
 
+// The test's scan: its part in the test's random pose, with the test's noise.
+RangeImage scan_evaluation_test(const EvaluationTest& test,
+                                const std::vector<EvaluationPart>& parts,
+                                const ScannerParameters& scanner);
+
 // Scans the test's part and recognizes it. Thread-safe: everything shared is read-only.
 EvaluationRecord run_evaluation_test(const EvaluationTest& test,
                                      const std::vector<EvaluationPart>& parts,

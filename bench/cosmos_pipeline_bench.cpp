@@ -19,14 +19,18 @@ RangeImage free_form_surface() {
   RangeImage image(640, 480, 0.4, 0.4);
   std::mt19937_64 generator(5);
   std::normal_distribution<double> noise(0.0, 0.02);
-  struct Bump { double x, y, sigma, height; };
-  const Bump bumps[] = {{60, 50, 18, 25}, {170, 120, 25, -15}, {200, 40, 12, 10}, {100, 150, 30, 20}};
+  struct Bump {
+    double x, y, sigma, height;
+  };
+  const Bump bumps[] = {
+      {60, 50, 18, 25}, {170, 120, 25, -15}, {200, 40, 12, 10}, {100, 150, 30, 20}};
   for (int row = 0; row < image.height(); ++row) {
     for (int column = 0; column < image.width(); ++column) {
       const double x = image.x_mm(column), y = image.y_mm(row);
       double z = 5 * std::sin(x / 23.0) * std::cos(y / 31.0);
       for (const Bump& b : bumps)
-        z += b.height * std::exp(-((x - b.x) * (x - b.x) + (y - b.y) * (y - b.y)) / (2 * b.sigma * b.sigma));
+        z += b.height *
+             std::exp(-((x - b.x) * (x - b.x) + (y - b.y) * (y - b.y)) / (2 * b.sigma * b.sigma));
       image.z_mm(column, row) = static_cast<float>(z + noise(generator));
     }
   }

@@ -67,8 +67,9 @@ RegistrationPoints synthetic_registration(std::mt19937& random, int points) {
 }
 
 fs::path synthetic_base_file(int mean_points) {
-  const fs::path path = fs::temp_directory_path() /
-                        ("cosmos_bench_base_" + std::to_string(::getpid()) + "_" + std::to_string(mean_points) + ".cmb");
+  const fs::path path =
+      fs::temp_directory_path() / ("cosmos_bench_base_" + std::to_string(::getpid()) + "_" +
+                                   std::to_string(mean_points) + ".cmb");
   std::mt19937 random(42);
   ModelBase base;
   base.parameters_text = "{}\n";
@@ -97,7 +98,8 @@ double status_mb(const char* field) {
   std::ifstream status("/proc/self/status");
   std::string line;
   while (std::getline(status, line))
-    if (line.rfind(field, 0) == 0) return std::stod(line.substr(std::string(field).size())) / 1024.0;
+    if (line.rfind(field, 0) == 0)
+      return std::stod(line.substr(std::string(field).size())) / 1024.0;
   return 0;
 }
 
@@ -130,7 +132,8 @@ BENCHMARK(BM_LoadModelBase)->Arg(1820)->Arg(4100)->Unit(benchmark::kMillisecond)
 
 void BM_UnpackOneView(benchmark::State& state) {
   std::mt19937 random(1);
-  const PackedRegistrationPoints packed = pack_registration_points(synthetic_registration(random, 1820));
+  const PackedRegistrationPoints packed =
+      pack_registration_points(synthetic_registration(random, 1820));
   for (auto _ : state) benchmark::DoNotOptimize(unpack_registration_points(packed).surface.data());
 }
 BENCHMARK(BM_UnpackOneView)->Unit(benchmark::kMicrosecond);

@@ -64,7 +64,8 @@ void scan_profiles(benchmark::State& state, const ScannerParameters& parameters,
     for (const float z : profile.z_mm) part_samples += z > parameters.background_height_mm;
     k = k == range.last ? range.first : k + 1;
   }
-  state.counters[counter] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters[counter] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["profiles_per_scan"] = static_cast<double>(range.count());
   state.counters["part_samples"] = part_samples / static_cast<double>(state.iterations());
 }

@@ -23,9 +23,10 @@ constexpr int kRoiRows = 256;
 // A noisy σ = 2 px stripe wandering over the middle of the ROI, as a part passes.
 cv::Mat bench_frame(bool sixteen_bit) {
   const auto centres = test::wandering_centres(kColumns, 128.0, 60.0);
-  return sixteen_bit
-             ? test::render_stripe<std::uint16_t>(centres, kRoiRows, {2.0, 40000.0}, {300.0, 0.01, 0.5}, 1)
-             : test::render_stripe<std::uint8_t>(centres, kRoiRows, {2.0, 200.0}, {2.0, 0.01, 40.0}, 1);
+  return sixteen_bit ? test::render_stripe<std::uint16_t>(centres, kRoiRows, {2.0, 40000.0},
+                                                          {300.0, 0.01, 0.5}, 1)
+                     : test::render_stripe<std::uint8_t>(centres, kRoiRows, {2.0, 200.0},
+                                                         {2.0, 0.01, 40.0}, 1);
 }
 
 StripeExtractionParameters bench_parameters(StripePeakMethod method, bool sixteen_bit) {
@@ -49,10 +50,14 @@ void BM_ExtractStripe(benchmark::State& state, StripePeakMethod method, bool six
   state.SetItemsProcessed(state.iterations());
   state.counters["valid_columns"] = peaks.valid_columns;
 }
-BENCHMARK_CAPTURE(BM_ExtractStripe, centre_of_gravity_8bit, StripePeakMethod::kCentreOfGravity, false);
-BENCHMARK_CAPTURE(BM_ExtractStripe, gaussian_3pt_8bit, StripePeakMethod::kGaussianThreePoint, false);
-BENCHMARK_CAPTURE(BM_ExtractStripe, centre_of_gravity_16bit, StripePeakMethod::kCentreOfGravity, true);
-BENCHMARK_CAPTURE(BM_ExtractStripe, gaussian_3pt_16bit, StripePeakMethod::kGaussianThreePoint, true);
+BENCHMARK_CAPTURE(BM_ExtractStripe, centre_of_gravity_8bit, StripePeakMethod::kCentreOfGravity,
+                  false);
+BENCHMARK_CAPTURE(BM_ExtractStripe, gaussian_3pt_8bit, StripePeakMethod::kGaussianThreePoint,
+                  false);
+BENCHMARK_CAPTURE(BM_ExtractStripe, centre_of_gravity_16bit, StripePeakMethod::kCentreOfGravity,
+                  true);
+BENCHMARK_CAPTURE(BM_ExtractStripe, gaussian_3pt_16bit, StripePeakMethod::kGaussianThreePoint,
+                  true);
 
 // One frame's peaks → points on the laser plane → a 1280-sample profile (0.2 mm grid).
 void BM_TriangulateAndResample(benchmark::State& state) {
