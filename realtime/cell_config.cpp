@@ -24,19 +24,6 @@ constexpr std::array<const char*, 7> kSections = {"scanner", "cell",     "condit
 // Profiles wider than this are a typo (65,536 columns of 0.4 mm are 26 m of belt).
 constexpr double kMaxGridColumns = 65536.0;
 
-YAML::Node load_yaml(const fs::path& path, const YamlInputErrors& errors) {
-  std::error_code error;
-  if (!fs::is_regular_file(path, error))
-    throw InputError(path.string() + ": config file not found");
-  try {
-    return YAML::LoadFile(path.string());
-  } catch (const YAML::ParserException& parse) {
-    errors.fail_line(parse.mark.line, "yaml", parse.msg);
-  } catch (const YAML::Exception& other) {
-    throw InputError(path.string() + ": cannot read config: " + other.msg);
-  }
-}
-
 void check_sections(const YAML::Node& root, const YamlInputErrors& errors) {
   std::set<std::string> seen;
   for (const auto& item : root) {
@@ -208,7 +195,7 @@ int CellConfig::max_part_rows() const {
 
 CellConfig load_cell_config(const fs::path& yaml_path) {
   const YamlInputErrors errors(yaml_path);
-  const YAML::Node root = load_yaml(yaml_path, errors);
+  const YAML::Node root = errors.load_file("config file");
   CellConfig config;
   config.file = yaml_path;
   if (!root.IsNull() && !root.IsMap()) {

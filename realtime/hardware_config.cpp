@@ -138,19 +138,8 @@ void read_stripe(YamlSectionReader& section, PixelFormat format,
   }
 }
 
-YAML::Node load_root(const fs::path& yaml_path, const YamlInputErrors& errors) {
-  std::error_code error;
-  if (!fs::is_regular_file(yaml_path, error)) {
-    throw InputError(yaml_path.string() + ": hardware config not found");
-  }
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(yaml_path.string());
-  } catch (const YAML::ParserException& parse) {
-    errors.fail_line(parse.mark.line, "yaml", parse.msg);
-  } catch (const YAML::Exception& other) {
-    throw InputError(yaml_path.string() + ": cannot read hardware config: " + other.msg);
-  }
+YAML::Node load_root(const YamlInputErrors& errors) {
+  const YAML::Node root = errors.load_file("hardware config");
   if (!root.IsMap()) {
     errors.fail_line(root.Mark().line, "hardware", "expected the sections camera, gpio, stripe");
   }
@@ -172,7 +161,7 @@ YAML::Node load_root(const fs::path& yaml_path, const YamlInputErrors& errors) {
 
 HardwareConfig read_hardware_config(const fs::path& yaml_path) {
   const YamlInputErrors errors(yaml_path);
-  const YAML::Node root = load_root(yaml_path, errors);
+  const YAML::Node root = load_root(errors);
   HardwareConfig config;
   config.file = yaml_path;
   YamlSectionReader camera(errors, root["camera"], "camera");

@@ -121,18 +121,6 @@ PartEntry read_part(const YamlInputErrors& errors, const YAML::Node& node, const
   return part;
 }
 
-YAML::Node load_yaml(const fs::path& path, const YamlInputErrors& errors) {
-  std::error_code error;
-  if (!fs::is_regular_file(path, error)) throw InputError(path.string() + ": part catalog not found");
-  try {
-    return YAML::LoadFile(path.string());
-  } catch (const YAML::ParserException& parse) {
-    errors.fail_line(parse.mark.line, "yaml", parse.msg);
-  } catch (const YAML::Exception& other) {
-    throw InputError(path.string() + ": cannot read part catalog: " + other.msg);
-  }
-}
-
 }  // namespace
 
 const PartEntry* PartCatalog::find(std::string_view name) const {
@@ -151,7 +139,7 @@ const PartEntry& PartCatalog::at(std::string_view name) const {
 
 PartCatalog read_part_catalog(const fs::path& yaml_path, const fs::path& mesh_cache_dir) {
   const YamlInputErrors errors(yaml_path);
-  const YAML::Node root = load_yaml(yaml_path, errors);
+  const YAML::Node root = errors.load_file("part catalog");
   if (!root.IsMap()) errors.fail_line(root.Mark().line, "parts", "the catalog must be a map with a 'parts' list");
   const auto entries = keyed_entries(errors, root, {"mesh_dir", "parts"}, "mesh_dir, parts");
 

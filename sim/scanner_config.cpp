@@ -169,16 +169,7 @@ void read_map(const YamlInputErrors& errors, const YAML::Node& map, const std::s
 
 ScannerParameters read_scanner_config(const fs::path& yaml_path, const ScannerParameters& defaults) {
   const YamlInputErrors errors(yaml_path);
-  std::error_code error;
-  if (!fs::is_regular_file(yaml_path, error)) throw InputError(yaml_path.string() + ": config file not found");
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(yaml_path.string());
-  } catch (const YAML::ParserException& parse) {
-    errors.fail_line(parse.mark.line, "yaml", parse.msg);
-  } catch (const YAML::Exception& other) {
-    throw InputError(yaml_path.string() + ": cannot read config: " + other.msg);
-  }
+  const YAML::Node root = errors.load_file("config file");
   ScannerParameters parameters = defaults;
   if (root.IsNull()) return parameters;
   if (!root.IsMap()) errors.fail_line(root.Mark().line, "scanner", "the config must be a map of sections");

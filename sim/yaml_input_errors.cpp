@@ -16,6 +16,19 @@ void YamlInputErrors::fail_line(int line0, const std::string& key, const std::st
   throw InputError(message);
 }
 
+YAML::Node YamlInputErrors::load_file(const std::string& what) const {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(file_, error))
+    throw InputError(file_.string() + ": " + what + " not found");
+  try {
+    return YAML::LoadFile(file_.string());
+  } catch (const YAML::ParserException& parse) {
+    fail_line(parse.mark.line, "yaml", parse.msg);
+  } catch (const YAML::Exception& other) {
+    throw InputError(file_.string() + ": cannot read " + what + ": " + other.msg);
+  }
+}
+
 std::string describe_yaml_node(const YAML::Node& node) {
   if (node.IsNull()) return "nothing";
   if (node.IsSequence()) return "a list";
