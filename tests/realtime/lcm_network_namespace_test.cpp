@@ -212,6 +212,20 @@ class LcmNetworkNamespace : public ::testing::Test {
            << "` (needs root, or unprivileged user namespaces): " << result.err;
   }
 
+  // Script lines: lo up with a multicast route, and lcm-logger recording the default URL into
+  // `log` until the script exits.
+  std::string loopback_with_logger(const fs::path& log) const {
+    std::ostringstream lines;
+    lines << "ip link set lo up || exit 20\n"
+          << "ip route add 224.0.0.0/4 dev lo || exit 21\n"
+          << "lcm-logger --quiet --force --flush-interval=10 --lcm-url="
+          << testing::shell_quote(kDefaultLcmUrl) << " " << testing::shell_quote(log.string())
+          << " 2>" << testing::shell_quote((dir_ / "logger.err").string()) << " &\n"
+          << "logger=$!\n"
+          << "trap 'kill -INT $logger 2>/dev/null; wait $logger' EXIT\n";
+    return lines.str();
+  }
+
   fs::path dir_;
 };
 
@@ -220,16 +234,9 @@ TEST_F(LcmNetworkNamespace, LoggerAndListenerReceiveWhatAnotherProcessPublishes)
   const fs::path log = dir_ / "cell.lcmlog";
   const fs::path test_binary = fs::read_symlink("/proc/self/exe");
   std::ostringstream body;
-  body << "ip link set lo up || exit 20\n"
-       << "ip route add 224.0.0.0/4 dev lo || exit 21\n"
-       << "lcm-logger --quiet --force --flush-interval=10 --lcm-url="
-       << testing::shell_quote(kDefaultLcmUrl) << " " << quote(log) << " 2>"
-       << quote(dir_ / "logger.err") << " &\n"
-       << "logger=$!\n"
-       << "trap 'kill -INT $logger 2>/dev/null; wait $logger' EXIT\n"
-       << testing::shell_quote(COSMOS_BINARY) << " listen --channel COSMOS_POSE --count "
-       << kPoseCount << " --timeout-s 20 >" << quote(dir_ / "listen.out") << " 2>"
-       << quote(dir_ / "listen.err") << " &\n"
+  body << loopback_with_logger(log) << testing::shell_quote(COSMOS_BINARY)
+       << " listen --channel COSMOS_POSE --count " << kPoseCount << " --timeout-s 20 >"
+       << quote(dir_ / "listen.out") << " 2>" << quote(dir_ / "listen.err") << " &\n"
        << "listener=$!\n"
        // `cosmos listen` says so on stderr once it has subscribed.
        << "tries=0\n"
@@ -298,14 +305,7 @@ TEST_F(LcmNetworkNamespace, LoggerRecordsTheCellsPosesAndStatus) {
            quote(log) + " " + quote(test_binary);
   };
   std::ostringstream body;
-  body << "ip link set lo up || exit 20\n"
-       << "ip route add 224.0.0.0/4 dev lo || exit 21\n"
-       << "lcm-logger --quiet --force --flush-interval=10 --lcm-url="
-       << testing::shell_quote(kDefaultLcmUrl) << " " << quote(log) << " 2>"
-       << quote(dir_ / "logger.err") << " &\n"
-       << "logger=$!\n"
-       << "trap 'kill -INT $logger 2>/dev/null; wait $logger' EXIT\n"
-       << sync_until("ready") << " || exit 22\n"
+  body << loopback_with_logger(log) << sync_until("ready") << " || exit 22\n"
        << "echo logging >> " << stages() << "\n"
        << testing::shell_quote(COSMOS_BINARY) << " cell --config " << quote(config)
        << " --parts 5 --unpaced >" << quote(dir_ / "cell.out") << " 2>" << quote(dir_ / "cell.err")
