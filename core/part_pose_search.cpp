@@ -7,13 +7,6 @@
 
 namespace cosmos {
 
-RegistrationPoints spread_subset(const RegistrationPoints& points, int count) {
-  const int step = std::max(1, points.size() / std::max(count, 1));
-  std::vector<int> indices;
-  for (int i = 0; i < points.size(); i += step) indices.push_back(i);
-  return select_points(points, indices);
-}
-
 std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene,
                                                  const ModelBase& base, int part,
                                                  const RegistrationParameters& registration,

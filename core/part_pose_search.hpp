@@ -36,9 +36,6 @@ struct ViewPoseHypothesis {
   double truncated_mean_square_mm2 = 0;
 };
 
-// Every `step`-th control point, so that about `count` remain (all of them when fewer).
-RegistrationPoints spread_subset(const RegistrationPoints& points, int count);
-
 std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene,
                                                  const ModelBase& base, int part,
                                                  const RegistrationParameters& registration,

@@ -120,11 +120,11 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   const std::vector<SpectralCandidate> selected = selector_.select(analysis.moments);
   result.timings.selection_ms = elapsed_ms(stage);
 
-  const RegistrationPoints ranking_points =
-      spread_subset(scene_points.points, parameters_.ranking_points);
+  ScenePoints points{std::move(scene_points.points), {}};
+  points.coarse = spread_subset(points.all, parameters_.coarse_points);
   for (const SpectralCandidate& candidate : selected) {
-    result.candidates.push_back(verify(analysis, scene_points.points, ranking_points, candidate,
-                                       result.timings.matching_ms, result.timings.registration_ms));
+    result.candidates.push_back(verify(analysis, points, candidate, result.timings.matching_ms,
+                                       result.timings.registration_ms));
     ++result.views_examined;
     if (result.candidates.back().registered &&
         result.candidates.back().inlier_fraction >= parameters_.sufficient_support)
@@ -132,7 +132,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   }
   const RecognitionCandidate* best = best_candidate(result.candidates);
   if (!best || best->inlier_fraction < parameters_.sufficient_support) {
-    search_candidate_parts(analysis, scene_points.points, result);
+    search_candidate_parts(analysis, points, result);
     best = best_candidate(result.candidates);
   }
   if (!best) return finish("no candidate view could be registered");
@@ -159,9 +159,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   return finish("");
 }
 
-RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene,
-                                        const RegistrationPoints& scene_points,
-                                        const RegistrationPoints& ranking_points,
+RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene, const ScenePoints& scene_points,
                                         const SpectralCandidate& selected, double& matching_ms,
                                         double& registration_ms) const {
   const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(selected.view)];
@@ -180,9 +178,9 @@ RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene,
   stage = Clock::now();
   const ModelSurface model(view);
   std::vector<RigidTransform> starts;
-  for (const PoseHypothesis& hypothesis :
-       rank_pose_hypotheses(ranking_points, model.points(), from_patches, parameters_.registration,
-                            {.in_plane_turns = parameters_.in_plane_hypotheses})) {
+  for (const PoseHypothesis& hypothesis : rank_pose_hypotheses(
+           scene_points.coarse, model.points(), from_patches, parameters_.registration,
+           {.in_plane_turns = parameters_.in_plane_hypotheses})) {
     if (starts.size() >= static_cast<std::size_t>(parameters_.registered_hypotheses)) break;
     starts.push_back(hypothesis.T_model_scene);
   }
@@ -191,8 +189,7 @@ RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene,
   return candidate;
 }
 
-void Recognizer::search_candidate_parts(const ViewAnalysis& scene,
-                                        const RegistrationPoints& scene_points,
+void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
                                         RecognitionResult& result) const {
   // Parts in the order of their closest view.
   std::vector<int> parts = selector_.rank_parts(scene.moments);
@@ -203,7 +200,7 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene,
       result.views_examined += view.part_index == part;
     Clock::time_point stage = Clock::now();
     const std::vector<ViewPoseHypothesis> hypotheses = search_part_pose(
-        scene_points, model_base_, part, parameters_.registration, parameters_.search);
+        scene_points.all, model_base_, part, parameters_.registration, parameters_.search);
     result.timings.registration_ms += elapsed_ms(stage);
     for (const ViewPoseHypothesis& hypothesis : hypotheses) {
       const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(hypothesis.view)];
@@ -227,7 +224,7 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene,
   }
 }
 
-void Recognizer::register_candidate(const RegistrationPoints& scene_points,
+void Recognizer::register_candidate(const ScenePoints& scene_points,
                                     const RegistrationPoints& model,
                                     const std::vector<RigidTransform>& starts,
                                     RecognitionCandidate& candidate) const {
@@ -235,19 +232,17 @@ void Recognizer::register_candidate(const RegistrationPoints& scene_points,
   Support best_support;
   // Coarse to fine: the iterations far from the optimum on a spread subset, the last few on
   // every control point (ch. 6's estimate is the fine one).
-  const RegistrationPoints coarse_points =
-      spread_subset(scene_points, parameters_.coarse_registration_points);
   RegistrationParameters fine = parameters_.registration;
   fine.max_iterations = parameters_.fine_registration_iterations;
   for (const RigidTransform& start : starts) {
     RegistrationResult registration =
-        register_views(coarse_points, model, start, parameters_.registration);
+        register_views(scene_points.coarse, model, start, parameters_.registration);
     if (registration.status == RegistrationStatus::invalid_input) continue;
-    registration = register_views(scene_points, model, registration.T_model_scene, fine);
+    registration = register_views(scene_points.all, model, registration.T_model_scene, fine);
     // A degenerate (still planar) result is kept: its support decides.
     if (registration.status == RegistrationStatus::invalid_input) continue;
     const Support support =
-        measure_support(scene_points, model, registration.T_model_scene, parameters_);
+        measure_support(scene_points.all, model, registration.T_model_scene, parameters_);
     if (candidate.registered && support.inlier_fraction <= best_support.inlier_fraction) continue;
     candidate.registered = true;
     best = registration;
@@ -255,7 +250,7 @@ void Recognizer::register_candidate(const RegistrationPoints& scene_points,
   }
   if (!candidate.registered) return;
   const PartSupport support =
-      measure_part_support(scene_points, model_base_, candidate.view, model, best.T_model_scene,
+      measure_part_support(scene_points.all, model_base_, candidate.view, model, best.T_model_scene,
                            parameters_.registration, parameters_.support);
   candidate.registration_status = best.status;
   candidate.T_model_scene = best.T_model_scene;

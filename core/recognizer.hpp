@@ -48,12 +48,10 @@ struct RecognitionParameters {
   int min_dense_scene_points = 600;  // fewer: halve the stride (down to every pixel)
   int in_plane_hypotheses = 12;      // turns about the viewing axis tried per candidate view
   int registered_hypotheses = 2;     // best-scoring initial poses refined per candidate view
-  // Initial poses are ranked on this many evenly spread scene control points (one
-  // correspondence pass each); registration then uses them all.
-  int ranking_points = 300;
-  // Registration runs on this many spread control points until it converges, then at most
-  // fine_registration_iterations more on all of them.
-  int coarse_registration_points = 300;
+  // This many evenly spread scene control points rank the initial poses (one correspondence
+  // pass each), and registration converges on them before at most
+  // fine_registration_iterations passes on all the points.
+  int coarse_points = 300;
   int fine_registration_iterations = 10;
   // Verification stops at the first selected view whose part support reaches this: the
   // others cannot beat it by much, and a wrong part rarely explains 90 % of a scene. Below
@@ -133,16 +131,21 @@ class Recognizer {
   const RecognitionParameters& parameters() const { return parameters_; }
 
  private:
-  RecognitionCandidate verify(const ViewAnalysis& scene, const RegistrationPoints& scene_points,
-                              const RegistrationPoints& ranking_points,
+  // The scene's control points, and the spread subset of coarse_points taken once.
+  struct ScenePoints {
+    RegistrationPoints all;
+    RegistrationPoints coarse;
+  };
+
+  RecognitionCandidate verify(const ViewAnalysis& scene, const ScenePoints& scene_points,
                               const SpectralCandidate& selected, double& matching_ms,
                               double& registration_ms) const;
   // The fallback: every view of the candidates' parts (part_pose_search.hpp).
-  void search_candidate_parts(const ViewAnalysis& scene, const RegistrationPoints& scene_points,
+  void search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
                               RecognitionResult& result) const;
   // Registers from each start, keeps the pose the view supports best, then judges it against
   // the part's views around it (part_support.hpp).
-  void register_candidate(const RegistrationPoints& scene_points, const RegistrationPoints& model,
+  void register_candidate(const ScenePoints& scene_points, const RegistrationPoints& model,
                           const std::vector<RigidTransform>& starts,
                           RecognitionCandidate& candidate) const;
 

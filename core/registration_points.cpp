@@ -186,4 +186,11 @@ RegistrationPoints select_points(const RegistrationPoints& points,
   return subset;
 }
 
+RegistrationPoints spread_subset(const RegistrationPoints& points, int count) {
+  const int step = std::max(1, points.size() / std::max(count, 1));
+  std::vector<int> indices;
+  for (int i = 0; i < points.size(); i += step) indices.push_back(i);
+  return select_points(points, indices);
+}
+
 }  // namespace cosmos

@@ -104,6 +104,9 @@ struct RegistrationPointsResult {
 // The points at `indices` (in that order), as scene points: positions, normals, fits and
 // residuals, without the model-side grid lookup.
 RegistrationPoints select_points(const RegistrationPoints& points, const std::vector<int>& indices);
+// Every `step`-th point, so that about `count` remain (all of them when fewer): an evenly
+// spread subset, since points are in grid order.
+RegistrationPoints spread_subset(const RegistrationPoints& points, int count);
 
 // Fits every stride-th pixel whose full window has data and no depth jump, and keeps the
 // smooth, not-grazing ones (§6.7.1). With `frames`, the normal of a control point
