@@ -1,6 +1,7 @@
 // Speed of the simulated laser-line scanner on a catalog part (bunny, 90 mm, resting pose):
 //   ProfileMode/W     profiles per second of W points (profile mode, the geometry path), over
 //                     the profiles of one scan of the part (2 mm margin each side)
+//   ProfileModePart/NAME  the same at 640 points for every part of the default catalog
 //   CameraMode        frames per second of 1280 × 256 ROI frames, drawing + stripe extraction +
 //                     triangulation + resampling included
 //   ModelViewScan     time per model view (scan of one view-sphere pose, profile mode)
@@ -10,6 +11,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "sim/conveyor_scene.hpp"
 #include "sim/mesh.hpp"
@@ -23,35 +25,50 @@ namespace {
 
 constexpr const char* kPart = "bunny";
 
-// The bench part's mesh, or nullopt when the catalog cache is missing.
-const std::optional<TriangleMesh>& bench_mesh() {
-  static const std::optional<TriangleMesh> mesh = []() -> std::optional<TriangleMesh> {
+// The default catalog, or nullopt when it or its mesh cache is missing.
+const std::optional<PartCatalog>& bench_catalog() {
+  static const std::optional<PartCatalog> catalog = []() -> std::optional<PartCatalog> {
     try {
-      const PartCatalog catalog = read_part_catalog(find_part_catalog());
-      const PartEntry& part = catalog.at(kPart);
-      return load_mesh(part.mesh_path, part.size_mm);
+      return read_part_catalog(find_part_catalog());
     } catch (const std::exception&) {
       return std::nullopt;
     }
   }();
+  return catalog;
+}
+
+std::optional<TriangleMesh> load_part_mesh(const std::string& name) {
+  if (!bench_catalog()) return std::nullopt;
+  try {
+    const PartEntry& part = bench_catalog()->at(name);
+    return load_mesh(part.mesh_path, part.size_mm);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+// The bench part's mesh, or nullopt when the catalog cache is missing.
+const std::optional<TriangleMesh>& bench_mesh() {
+  static const std::optional<TriangleMesh> mesh = load_part_mesh(kPart);
   return mesh;
 }
 
-std::unique_ptr<ConveyorScene> bench_scene(const TriangleMesh& mesh) {
+std::unique_ptr<ConveyorScene> bench_scene(const TriangleMesh& mesh, const std::string& name) {
   auto scene = std::make_unique<ConveyorScene>();
   const int mesh_index = scene->add_mesh(mesh);
-  scene->add_part(kPart, mesh_index, place_on_belt(mesh, resting_rotation(mesh, 1)));
+  scene->add_part(name, mesh_index, place_on_belt(mesh, resting_rotation(mesh, 1)));
   scene->commit();
   return scene;
 }
 
 void scan_profiles(benchmark::State& state, const ScannerParameters& parameters, ScanMode mode,
-                   const char* counter) {
-  if (!bench_mesh()) {
+                   const char* counter, const std::optional<TriangleMesh>& mesh = bench_mesh(),
+                   const std::string& name = kPart) {
+  if (!mesh) {
     state.SkipWithError("catalog meshes missing: run scripts/fetch_catalog.sh");
     return;
   }
-  const auto scene = bench_scene(*bench_mesh());
+  const auto scene = bench_scene(*mesh, name);
   SimulatedScanner scanner(*scene, parameters, mode);
   Profile profile;
   scanner.reserve(profile);
@@ -76,6 +93,18 @@ void ProfileMode(benchmark::State& state) {
   scan_profiles(state, parameters, ScanMode::kProfile, "profiles_per_s");
 }
 BENCHMARK(ProfileMode)->Arg(640)->Arg(1280)->Unit(benchmark::kMicrosecond);
+
+// One benchmark per default catalog part (none when the catalog is missing).
+const bool kPartBenchmarksRegistered = [] {
+  if (!bench_catalog()) return false;
+  for (const PartEntry& part : bench_catalog()->parts) {
+    benchmark::RegisterBenchmark(("ProfileModePart/" + part.name).c_str(), [name = part.name](benchmark::State& state) {
+      const std::optional<TriangleMesh> mesh = load_part_mesh(name);
+      scan_profiles(state, ScannerParameters{}, ScanMode::kProfile, "profiles_per_s", mesh, name);
+    })->Unit(benchmark::kMicrosecond);
+  }
+  return true;
+}();
 
 void CameraMode(benchmark::State& state) {
   ScannerParameters parameters;

@@ -33,22 +33,16 @@ LaserLineScanner::LaserLineScanner(const ConveyorScene& scene, const ScannerPara
   const int margin = parameters.roi_margin_rows();
   min_roi_row_px_ = geometry_.roi_row_offset_px + margin;
   max_roi_row_px_ = geometry_.roi_row_offset_px + geometry_.roi_height_px - 1 - margin;
-  // The belt's image and incidence are the same in every profile: computed once here, they
-  // spare most samples the camera model and a normalization.
-  belt_u_px_.resize(static_cast<std::size_t>(samples));
-  belt_v_px_.resize(static_cast<std::size_t>(samples));
-  belt_projects_.resize(static_cast<std::size_t>(samples));
-  belt_cos_incidence_.resize(static_cast<std::size_t>(samples));
+  // The belt's classification (incidence, image, range, brightness) is the same in every
+  // profile: computed once here, it spares most samples the camera model and a normalization.
+  belt_samples_.resize(static_cast<std::size_t>(samples));
   for (int i = 0; i < samples; ++i) {
-    const auto s = static_cast<std::size_t>(i);
-    Eigen::Vector2d uv(0.0, 0.0);
     const double x_mm = parameters.first_sample_x_mm(samples) + i * parameters.sample_spacing_mm(samples);
-    belt_projects_[s] = geometry_.project_to_image(Eigen::Vector3d(x_mm, 0.0, 0.0), uv) ? 1 : 0;
-    belt_cos_incidence_[s] = parameters.laser_model == LaserModel::kFan
-                                 ? parameters.laser_height_mm / std::hypot(x_mm, parameters.laser_height_mm)
-                                 : 1.0;
-    belt_u_px_[s] = static_cast<float>(uv.x());
-    belt_v_px_[s] = static_cast<float>(uv.y());
+    const double cos_incidence = parameters.laser_model == LaserModel::kFan
+                                     ? parameters.laser_height_mm / std::hypot(x_mm, parameters.laser_height_mm)
+                                     : 1.0;
+    belt_samples_[static_cast<std::size_t>(i)] =
+        classify_lit_point(Eigen::Vector3d(x_mm, 0.0, 0.0), Eigen::Vector3d::UnitZ(), cos_incidence);
   }
   normal_x_.resize(static_cast<std::size_t>(samples));
   normal_y_.resize(static_cast<std::size_t>(samples));
@@ -166,54 +160,64 @@ void LaserLineScanner::sweep_laser_horizon(LaserLine& line) const {
   for (int i = first_right - 1; i >= 0; --i) visit(i, -line.x_mm(i), horizon);
 }
 
+LaserLineScanner::LitPoint LaserLineScanner::classify_lit_point(const Eigen::Vector3d& point_scanner_mm,
+                                                                const Eigen::Vector3d& normal,
+                                                                double cos_incidence) const {
+  LitPoint lit;
+  if (cos_incidence < cos_max_incidence_) {
+    lit.state = LaserSampleState::kGrazing;
+    return lit;
+  }
+  lit.intensity = static_cast<float>(parameters_.reflectivity * cos_incidence);
+  Eigen::Vector2d uv;
+  if (!geometry_.project_to_image(point_scanner_mm, uv)) {
+    lit.state = LaserSampleState::kOutOfRange;
+    return lit;
+  }
+  lit.u_px = static_cast<float>(uv.x());
+  lit.v_px = static_cast<float>(uv.y());
+  const double sensor_last_column = geometry_.camera.width_px - 1;
+  if (!(uv.x() >= 0.0 && uv.x() <= sensor_last_column && uv.y() >= min_roi_row_px_ && uv.y() <= max_roi_row_px_)) {
+    lit.state = LaserSampleState::kOutOfRange;
+  } else if (normal.dot(geometry_.t_scanner_camera_mm - point_scanner_mm) <= 0.0) {
+    lit.state = LaserSampleState::kCameraOccluded;
+  }
+  return lit;
+}
+
 void LaserLineScanner::classify(double y_mm, LaserLine& line) {
   occlusion_candidates_.clear();
   const Eigen::Vector3d source_mm(0.0, y_mm, parameters_.laser_height_mm);
   // The camera rides with the scanner: in the belt frame it is as far upstream of the sheet
   // as in the scanner frame (the sheet is y_scanner = 0, here y_belt = y_mm).
   const Eigen::Vector3d camera_mm = geometry_.t_scanner_camera_mm + Eigen::Vector3d(0.0, y_mm, 0.0);
-  const double sensor_last_column = geometry_.camera.width_px - 1;
+  const auto& parts = scene_.parts();
   belt_sights_.clear();
-  for (const PlacedPart& part : scene_.parts()) belt_sights_.push_back(part.height_bounds.belt_sight(y_mm, camera_mm));
+  for (const PlacedPart& part : parts) belt_sights_.push_back(part.height_bounds.belt_sight(y_mm, camera_mm));
   for (int i = 0; i < samples_; ++i) {
     const auto s = static_cast<std::size_t>(i);
-    line.intensity[s] = 0.0f;
-    line.u_px[s] = kNoData;
-    line.v_px[s] = kNoData;
-    if (line.state[s] != LaserSampleState::kMeasured) continue;
-    const Eigen::Vector3d point_mm(line.x_mm(i), y_mm, line.z_mm[s]);
-    const Eigen::Vector3d normal(normal_x_[s], normal_y_[s], normal_z_[s]);
+    if (line.state[s] != LaserSampleState::kMeasured) {
+      line.intensity[s] = 0.0f;
+      line.u_px[s] = kNoData;
+      line.v_px[s] = kNoData;
+      continue;
+    }
     const bool on_belt = line.z_mm[s] == 0.0f;
-    double cos_incidence = belt_cos_incidence_[s];
+    LitPoint lit = belt_samples_[s];
     if (!on_belt) {
-      const Eigen::Vector3d laser_direction = parameters_.laser_model == LaserModel::kFan
-                                                  ? Eigen::Vector3d((point_mm - source_mm).normalized())
-                                                  : Eigen::Vector3d(0.0, 0.0, -1.0);
-      cos_incidence = -normal.dot(laser_direction);
+      const Eigen::Vector3d normal(normal_x_[s], normal_y_[s], normal_z_[s]);
+      const Eigen::Vector3d point_mm(line.x_mm(i), y_mm, line.z_mm[s]);
+      const double cos_incidence = parameters_.laser_model == LaserModel::kFan
+                                       ? -normal.dot((point_mm - source_mm).normalized())
+                                       : normal.z();
+      lit = classify_lit_point(Eigen::Vector3d(point_mm.x(), 0.0, point_mm.z()), normal, cos_incidence);
     }
-    if (cos_incidence < cos_max_incidence_) {
-      line.state[s] = LaserSampleState::kGrazing;
-      continue;
-    }
-    line.intensity[s] = static_cast<float>(parameters_.reflectivity * cos_incidence);
-    Eigen::Vector2d uv(belt_u_px_[s], belt_v_px_[s]);
-    const bool projects = on_belt ? belt_projects_[s] != 0
-                                  : geometry_.project_to_image(Eigen::Vector3d(point_mm.x(), 0.0, point_mm.z()), uv);
-    if (!projects) {
-      line.state[s] = LaserSampleState::kOutOfRange;
-      continue;
-    }
-    line.u_px[s] = static_cast<float>(uv.x());
-    line.v_px[s] = static_cast<float>(uv.y());
-    if (!(uv.x() >= 0.0 && uv.x() <= sensor_last_column && uv.y() >= min_roi_row_px_ && uv.y() <= max_roi_row_px_)) {
-      line.state[s] = LaserSampleState::kOutOfRange;
-      continue;
-    }
-    if (normal.dot(camera_mm - point_mm) <= 0.0) {
-      line.state[s] = LaserSampleState::kCameraOccluded;
-      continue;
-    }
-    const auto& parts = scene_.parts();
+    line.state[s] = lit.state;
+    line.intensity[s] = lit.intensity;
+    line.u_px[s] = lit.u_px;
+    line.v_px[s] = lit.v_px;
+    if (lit.state != LaserSampleState::kMeasured) continue;
+    const Eigen::Vector3d point_mm(line.x_mm(i), y_mm, line.z_mm[s]);
     for (std::size_t p = 0; p < parts.size(); ++p) {
       if (on_belt && !parts[p].height_bounds.may_block(belt_sights_[p], point_mm.x())) continue;
       if (!parts[p].height_bounds.clears(point_mm, camera_mm)) {

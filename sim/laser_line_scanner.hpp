@@ -26,6 +26,7 @@
 // Rays are traced in packets of 8 in sample order, one thread: the result never depends on
 // timing. After construction nothing allocates.
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "firmware_bridge/triangulation_geometry.hpp"
@@ -76,6 +77,16 @@ class LaserLineScanner {
  private:
   void probe_top_surface(double y_mm, int first, int end, LaserLine& line);
   void sweep_laser_horizon(LaserLine& line) const;
+  // What steps 3-6 make of a lit top point (scanner frame: the sheet is y = 0), camera
+  // occlusion by the parts aside.
+  struct LitPoint {
+    LaserSampleState state = LaserSampleState::kMeasured;
+    float intensity = 0.0f;
+    float u_px = std::numeric_limits<float>::quiet_NaN();
+    float v_px = std::numeric_limits<float>::quiet_NaN();
+  };
+  LitPoint classify_lit_point(const Eigen::Vector3d& point_scanner_mm, const Eigen::Vector3d& normal,
+                              double cos_incidence) const;
   void classify(double y_mm, LaserLine& line);
   void trace_camera_occlusion(double y_mm, LaserLine& line);
 
@@ -86,12 +97,8 @@ class LaserLineScanner {
   double cos_max_incidence_ = 0.0;
   double min_roi_row_px_ = 0.0;
   double max_roi_row_px_ = 0.0;
-  // Camera image of each sample's belt point (the sheet at z = 0), whether it exists, and the
-  // laser's incidence there.
-  std::vector<float> belt_u_px_;
-  std::vector<float> belt_v_px_;
-  std::vector<std::uint8_t> belt_projects_;
-  std::vector<double> belt_cos_incidence_;
+  // Each sample's belt point (the sheet at z = 0) classified once: the same in every profile.
+  std::vector<LitPoint> belt_samples_;
   // Scratch, sized at construction: unit normals (belt frame) of the top points, and the
   // samples whose camera ray must be traced.
   std::vector<float> normal_x_;
