@@ -93,6 +93,52 @@ bool HeightBoundGrid::may_block(const BeltSight& sight, double x_mm) const {
   return std::max(x_a, x_b) >= x0_mm_ && std::min(x_a, x_b) <= x0_mm_ + columns_ * cell_mm_;
 }
 
+void HeightBoundGrid::mark_belt_sights(const BeltSight& sight, double x0_mm, double dx_mm, int samples,
+                                       int* difference) const {
+  if (sight.s_end < sight.s_begin) return;
+  const Eigen::Vector3d& camera = sight.camera_mm;
+  const double dy = camera.y() - sight.y_mm;
+  // A line of sight from (x, y, 0) is over (x (1 - s) + s cx, y + s dy) at height s cz.
+  const auto first_row = static_cast<int>(std::floor((sight.y_mm + std::min(sight.s_begin * dy, sight.s_end * dy) - y0_mm_) / cell_mm_));
+  const auto last_row = static_cast<int>(std::floor((sight.y_mm + std::max(sight.s_begin * dy, sight.s_end * dy) - y0_mm_) / cell_mm_));
+  for (int iy = std::max(first_row, 0); iy <= std::min(last_row, rows_ - 1); ++iy) {
+    const int row_first = first_column_[static_cast<std::size_t>(iy)];
+    if (row_first < 0) continue;
+    double s_low = sight.s_begin;
+    double s_high = sight.s_end;
+    if (dy != 0.0) {
+      const double s0 = (y0_mm_ + iy * cell_mm_ - sight.y_mm) / dy;
+      const double s1 = (y0_mm_ + (iy + 1) * cell_mm_ - sight.y_mm) / dy;
+      s_low = std::max(s_low, std::min(s0, s1));
+      s_high = std::min(s_high, std::max(s0, s1));
+    }
+    if (!(s_low <= s_high) || !(s_high < 1.0)) continue;
+    const double lowest_z = s_low * camera.z();
+    for (int ix = row_first; ix <= last_column_[static_cast<std::size_t>(iy)]; ++ix) {
+      const double height = cell(ix, iy);
+      if (!(height >= lowest_z)) continue;
+      // Over this cell the sight is at height <= the bound for s in [s_low, s_top].
+      const double s_top = std::min(s_high, height / camera.z());
+      const double cell_low = x0_mm_ + ix * cell_mm_;
+      const double cell_high = cell_low + cell_mm_;
+      // x(s) meets [cell_low, cell_high] for some s in [s_low, s_top] iff x lies between these.
+      const double x_low = std::min((cell_low - s_low * camera.x()) / (1.0 - s_low),
+                                    (cell_low - s_top * camera.x()) / (1.0 - s_top));
+      const double x_high = std::max((cell_high - s_low * camera.x()) / (1.0 - s_low),
+                                     (cell_high - s_top * camera.x()) / (1.0 - s_top));
+      // Clamped as doubles: near s = 1 the interval can reach far beyond any int.
+      const auto sample_index = [&](double index) {
+        return static_cast<int>(std::clamp(index, -1.0, static_cast<double>(samples)));
+      };
+      const int first = std::max(0, sample_index(std::floor((x_low - x0_mm) / dx_mm) - 1.0));
+      const int last = std::min(samples - 1, sample_index(std::ceil((x_high - x0_mm) / dx_mm) + 1.0));
+      if (first > last) continue;
+      ++difference[first];
+      --difference[last + 1];
+    }
+  }
+}
+
 bool HeightBoundGrid::clears(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const {
   if (heights_.empty()) return true;
   // Clip to the grid's box (z up to the part's top) first: a line of sight from far away

@@ -37,6 +37,14 @@ class HeightBoundGrid {
   BeltSight belt_sight(double y_mm, const Eigen::Vector3d& camera_mm) const;
   // False when the line of sight from belt point (x_mm, sight.y_mm, 0) certainly misses the box.
   bool may_block(const BeltSight& sight, double x_mm) const;
+  // The belt points of one laser line (sample i at x0_mm + i dx_mm) whose line of sight may
+  // pass over a cell no higher than the part's bound there: the only ones for which clears()
+  // can be false. Adds 1 at difference[first] and -1 at difference[last + 1] for each such
+  // run of samples (difference has samples + 1 entries), widened by a sample each side
+  // against rounding. Per cell under the sight lines, not per sample: the lines share y(s)
+  // and z(s), so each cell holds back one interval of x.
+  void mark_belt_sights(const BeltSight& sight, double x0_mm, double dx_mm, int samples,
+                        int* difference) const;
 
   // The x interval [x_low, x_high] the part can occupy at belt y; false when it is absent there.
   bool x_extent(double y_mm, double& x_low, double& x_high) const;

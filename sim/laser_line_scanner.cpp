@@ -48,6 +48,7 @@ LaserLineScanner::LaserLineScanner(const ConveyorScene& scene, const ScannerPara
   normal_y_.resize(static_cast<std::size_t>(samples));
   normal_z_.resize(static_cast<std::size_t>(samples));
   occlusion_candidates_.reserve(static_cast<std::size_t>(samples));
+  belt_sight_marks_.resize(static_cast<std::size_t>(samples) + 1);
   belt_sights_.reserve(scene.parts().size());
 }
 
@@ -193,9 +194,16 @@ void LaserLineScanner::classify(double y_mm, LaserLine& line) {
   const Eigen::Vector3d camera_mm = geometry_.t_scanner_camera_mm + Eigen::Vector3d(0.0, y_mm, 0.0);
   const auto& parts = scene_.parts();
   belt_sights_.clear();
-  for (const PlacedPart& part : parts) belt_sights_.push_back(part.height_bounds.belt_sight(y_mm, camera_mm));
+  std::fill(belt_sight_marks_.begin(), belt_sight_marks_.end(), 0);
+  for (const PlacedPart& part : parts) {
+    belt_sights_.push_back(part.height_bounds.belt_sight(y_mm, camera_mm));
+    part.height_bounds.mark_belt_sights(belt_sights_.back(), line.x0_mm, line.dx_mm, samples_,
+                                        belt_sight_marks_.data());
+  }
+  int belt_sight_marked = 0;  // running sum of the marks: > 0 where a part may hide the belt
   for (int i = 0; i < samples_; ++i) {
     const auto s = static_cast<std::size_t>(i);
+    belt_sight_marked += belt_sight_marks_[s];
     if (line.state[s] != LaserSampleState::kMeasured) {
       line.intensity[s] = 0.0f;
       line.u_px[s] = kNoData;
@@ -216,7 +224,7 @@ void LaserLineScanner::classify(double y_mm, LaserLine& line) {
     line.intensity[s] = lit.intensity;
     line.u_px[s] = lit.u_px;
     line.v_px[s] = lit.v_px;
-    if (lit.state != LaserSampleState::kMeasured) continue;
+    if (lit.state != LaserSampleState::kMeasured || (on_belt && belt_sight_marked == 0)) continue;
     const Eigen::Vector3d point_mm(line.x_mm(i), y_mm, line.z_mm[s]);
     for (std::size_t p = 0; p < parts.size(); ++p) {
       if (on_belt && !parts[p].height_bounds.may_block(belt_sights_[p], point_mm.x())) continue;

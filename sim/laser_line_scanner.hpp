@@ -106,6 +106,7 @@ class LaserLineScanner {
   std::vector<float> normal_z_;
   std::vector<int> occlusion_candidates_;
   std::vector<HeightBoundGrid::BeltSight> belt_sights_;  // per part, for the current line
+  std::vector<int> belt_sight_marks_;  // difference array of HeightBoundGrid::mark_belt_sights
 };
 
 }  // namespace cosmos
