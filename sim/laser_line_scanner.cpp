@@ -225,9 +225,14 @@ void LaserLineScanner::classify(double y_mm, LaserLine& line) {
     line.u_px[s] = lit.u_px;
     line.v_px[s] = lit.v_px;
     if (lit.state != LaserSampleState::kMeasured || (on_belt && belt_sight_marked == 0)) continue;
-    const Eigen::Vector3d point_mm(line.x_mm(i), y_mm, line.z_mm[s]);
+    // A part point lies under its own cell's height bound, so the walk could never clear it.
+    if (!on_belt) {
+      occlusion_candidates_.push_back(i);
+      continue;
+    }
+    const Eigen::Vector3d point_mm(line.x_mm(i), y_mm, 0.0);
     for (std::size_t p = 0; p < parts.size(); ++p) {
-      if (on_belt && !parts[p].height_bounds.may_block(belt_sights_[p], point_mm.x())) continue;
+      if (!parts[p].height_bounds.may_block(belt_sights_[p], point_mm.x())) continue;
       if (!parts[p].height_bounds.clears(point_mm, camera_mm)) {
         occlusion_candidates_.push_back(i);
         break;

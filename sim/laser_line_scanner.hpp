@@ -17,9 +17,9 @@
 //      top point, so this needs no extra ray; it resolves shadow edges to one sample.
 //   3. Incidence (laser ray vs surface normal) beyond max_incidence_deg: dropout.
 //   4. Camera occlusion: a surface facing away from the camera, or an Embree occlusion ray
-//      from the point to the camera centre that meets a part, hides the point. Rays whose
-//      segment clears every part's coarse height bounds (height_bound_grid.hpp) are not
-//      traced.
+//      from the point to the camera centre that meets a part, hides the point. Belt points
+//      whose line of sight clears every part's coarse height bounds (height_bound_grid.hpp)
+//      need no ray.
 //   5. Measuring range: the camera's projection of the point must fall on the sensor
 //      columns and inside the ROI rows, clear of the stripe half-width at the edges.
 //   6. Reflected intensity reflectivity · cos(incidence) below the minimum: dark.
