@@ -114,22 +114,25 @@ void HeightBoundGrid::mark_belt_sights(const BeltSight& sight, double x0_mm, dou
     }
     if (!(s_low <= s_high) || !(s_high < 1.0)) continue;
     const double lowest_z = s_low * camera.z();
+    const double inverse_low = 1.0 / (1.0 - s_low);
+    const double inverse_camera_z = 1.0 / camera.z();
+    // Clamped as doubles: near s = 1 the interval can reach far beyond any int.
+    const auto sample_index = [&](double index) {
+      return static_cast<int>(std::clamp(index, -1.0, static_cast<double>(samples)));
+    };
     for (int ix = row_first; ix <= last_column_[static_cast<std::size_t>(iy)]; ++ix) {
       const double height = cell(ix, iy);
       if (!(height >= lowest_z)) continue;
       // Over this cell the sight is at height <= the bound for s in [s_low, s_top].
-      const double s_top = std::min(s_high, height / camera.z());
+      const double s_top = std::min(s_high, height * inverse_camera_z);
+      const double inverse_top = 1.0 / (1.0 - s_top);
       const double cell_low = x0_mm_ + ix * cell_mm_;
       const double cell_high = cell_low + cell_mm_;
       // x(s) meets [cell_low, cell_high] for some s in [s_low, s_top] iff x lies between these.
-      const double x_low = std::min((cell_low - s_low * camera.x()) / (1.0 - s_low),
-                                    (cell_low - s_top * camera.x()) / (1.0 - s_top));
-      const double x_high = std::max((cell_high - s_low * camera.x()) / (1.0 - s_low),
-                                     (cell_high - s_top * camera.x()) / (1.0 - s_top));
-      // Clamped as doubles: near s = 1 the interval can reach far beyond any int.
-      const auto sample_index = [&](double index) {
-        return static_cast<int>(std::clamp(index, -1.0, static_cast<double>(samples)));
-      };
+      const double x_low = std::min((cell_low - s_low * camera.x()) * inverse_low,
+                                    (cell_low - s_top * camera.x()) * inverse_top);
+      const double x_high = std::max((cell_high - s_low * camera.x()) * inverse_low,
+                                     (cell_high - s_top * camera.x()) * inverse_top);
       const int first = std::max(0, sample_index(std::floor((x_low - x0_mm) / dx_mm) - 1.0));
       const int last = std::min(samples - 1, sample_index(std::ceil((x_high - x0_mm) / dx_mm) + 1.0));
       if (first > last) continue;
