@@ -18,18 +18,6 @@ FrameValues frame_at(const DarbouxFrameField& field, std::size_t pixel) {
   return values;
 }
 
-void principal_values(const FrameValues& f, float& kappa1, float& kappa2) {
-  // W is tangent to n, so its eigenvalues are k1, k2 and 0: from its trace and the sum of its
-  // principal 2x2 minors, k1 + k2 and k1 k2.
-  const float trace = f[kWxx] + f[kWyy] + f[kWzz];
-  const float minors = f[kWxx] * f[kWyy] - f[kWxy] * f[kWxy] + f[kWxx] * f[kWzz] - f[kWxz] * f[kWxz] +
-                       f[kWyy] * f[kWzz] - f[kWyz] * f[kWyz];
-  const float mean = 0.5f * trace;
-  const float radius = std::sqrt(std::max(0.0f, mean * mean - minors));
-  kappa1 = mean + radius;
-  kappa2 = mean - radius;
-}
-
 PrincipalCurvatures principal_curvatures(const FrameValues& f) {
   const float nx = f[kNx], ny = f[kNy], nz = f[kNz];
   // Tangent basis: t1 is the x axis projected onto the tangent plane; |t1|^2 = 1 - nx^2 > 0

@@ -5,7 +5,9 @@
 // Curvature is stored as the 3D Weingarten tensor W (symmetric, tangent to the normal):
 // W = k1 e1 e1^T + k2 e2 e2^T, with the sign convention "bulging towards the sensor is
 // convex and positive", so that moving by a tangent step d turns the normal by W d.
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 #include "core/pixel_grid.hpp"
@@ -47,7 +49,20 @@ PrincipalCurvatures principal_curvatures(const FrameValues& frame);
 FrameValues frame_at(const DarbouxFrameField& field, std::size_t pixel);
 
 // The principal curvatures alone (no directions): cheaper, for per-pixel classification.
-void principal_values(const FrameValues& frame, float& kappa1, float& kappa2);
+// W is tangent to n, so its eigenvalues are k1, k2 and 0: from its trace and the sum of its
+// principal 2x2 minors, k1 + k2 and k1 k2. Inline and branch-free so per-pixel loops vectorize.
+inline void principal_values(float wxx, float wxy, float wxz, float wyy, float wyz, float wzz,
+                             float& kappa1, float& kappa2) {
+  const float trace = wxx + wyy + wzz;
+  const float minors = wxx * wyy - wxy * wxy + wxx * wzz - wxz * wxz + wyy * wzz - wyz * wyz;
+  const float mean = 0.5f * trace;
+  const float radius = std::sqrt(std::max(0.0f, mean * mean - minors));
+  kappa1 = mean + radius;
+  kappa2 = mean - radius;
+}
+inline void principal_values(const FrameValues& f, float& kappa1, float& kappa2) {
+  principal_values(f[kWxx], f[kWxy], f[kWxz], f[kWyy], f[kWyz], f[kWzz], kappa1, kappa2);
+}
 
 PrincipalCurvatures principal_curvatures(const DarbouxFrameField& field, std::size_t pixel);
 

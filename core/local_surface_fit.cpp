@@ -106,6 +106,11 @@ LocalSurfaceFitter::LocalSurfaceFitter(const SurfaceFitParameters& parameters,
   for (int ov = -half_window_; ov <= half_window_; ++ov)
     for (int ou = -half_window_; ou <= half_window_; ++ou)
       offset_kernels_.emplace_back(taylor_rows(-ou, -ov).leftCols(basis_size_) * pseudo_inverse);
+  for (int k = 0; k < samples; ++k) {
+    const Eigen::Matrix<double, kBicubicTerms, 1> m = monomials(k % side_ - half_window_, k / side_ - half_window_);
+    window_monomials_.push_back(m);
+    window_outer_.push_back(m * m.transpose());
+  }
   const Eigen::HouseholderQR<Eigen::MatrixXd> qr(design);
   residual_basis_ =
       (qr.householderQ() * Eigen::MatrixXd::Identity(samples, basis_size_)).transpose();
@@ -217,15 +222,15 @@ bool LocalSurfaceFitter::fit_partial_window(const RangeImage& image, int column,
       Eigen::Matrix<double, kBicubicTerms, kBicubicTerms>::Zero();
   Eigen::Matrix<double, kBicubicTerms, 1> right_side = Eigen::Matrix<double, kBicubicTerms, 1>::Zero();
   int samples = 0;
-  for (int dv = -h; dv <= h; ++dv) {
-    for (int du = -h; du <= h; ++du) {
+  for (int dv = -h, k = 0; dv <= h; ++dv) {
+    for (int du = -h; du <= h; ++du, ++k) {
       if (!image.z_mm.contains(column + du, row + dv)) continue;
       const float z = image.z_mm(column + du, row + dv);
       const int steps = std::max(std::abs(du), std::abs(dv));
       if (!(std::abs(z - center) <= parameters_.depth_jump_mm * steps)) continue;
-      const auto m = monomials(du, dv);
-      normal_matrix.selfadjointView<Eigen::Lower>().rankUpdate(m);
-      right_side += m * (z - center);
+      // The window's outer products are precomputed: a sample adds a fixed matrix.
+      normal_matrix += window_outer_[static_cast<std::size_t>(k)];
+      right_side += window_monomials_[static_cast<std::size_t>(k)] * (z - center);
       ++samples;
     }
   }

@@ -54,7 +54,16 @@ class SeparableWindowFit {
   std::vector<float> row_min_, row_max_;  // slot x column: depth range of the window's row
   std::vector<double> quadric_[kQuadricTerms];
   std::vector<double> residual_;
-  std::vector<double> dot_;
+  // The fit's coefficient pairs (i, j), i + j <= degree, and the nonzero contributions of
+  // their dot products to the quadric terms: q[term] += coefficient * dot[pair].
+  std::vector<std::array<int, 2>> pairs_;
+  struct TaylorTerm {
+    int pair;
+    int quadric_term;
+    double coefficient;
+  };
+  std::vector<TaylorTerm> taylor_terms_;
+  std::vector<double> dot_;  // pair x column
   std::vector<float> range_low_, range_high_;
   std::vector<std::uint8_t> complete_;
 };

@@ -1,5 +1,6 @@
 #include "core/shape_index.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -16,20 +17,57 @@ inline float atan_unit(float t) {
               t2 * (0.05265332f + t2 * -0.01172120f)))));
 }
 
-}  // namespace
-
-float shape_index(float kappa1, float kappa2) {
-  // Eq. 3.2 is written for the thesis's sign convention, where convex surfaces have negative
-  // curvatures; with convex positive the same value is 1/2 + atan2(k1 + k2, k1 - k2)/pi, and
-  // k1 - k2 >= 0 keeps the angle in [-pi/2, pi/2].
+// Eq. 3.2 is written for the thesis's sign convention, where convex surfaces have negative
+// curvatures; with convex positive the same value is 1/2 + atan2(k1 + k2, k1 - k2)/pi, and
+// k1 - k2 >= 0 keeps the angle in [-pi/2, pi/2]. Selects, no branches.
+inline float shape_index_of(float kappa1, float kappa2) {
   const float y = kappa1 + kappa2, x = kappa1 - kappa2;
   const float ay = std::abs(y);
   const bool steep = ay > x;
-  const float ratio = steep ? x / ay : (x > 0 ? y / x : 0.0f);
+  // One unconditional division: when x = 0 and not steep, y = 0 too.
+  const float denominator = steep ? ay : x;
+  const float ratio = (steep ? x : y) / (denominator > 0.0f ? denominator : 1.0f);
   const float angle = steep ? std::copysign(0.5f * std::numbers::pi_v<float> - atan_unit(ratio), y)
                             : atan_unit(ratio);
   return 0.5f + angle / std::numbers::pi_v<float>;
 }
+
+// One span of pixels, floats only (the caller widens and narrows the bytes), so that the
+// loop vectorizes. label_code receives the SurfaceLabel value.
+struct ClassifyConstants {
+  float min_normal_z;
+  float cell_area_mm2;
+  float planar_factor;  // pi * planar sensitivity threshold
+};
+
+void classify_span(int count, const ClassifyConstants& k, const float* __restrict usable_in,
+                   const float* __restrict nz, const float* __restrict wxx,
+                   const float* __restrict wxy, const float* __restrict wxz,
+                   const float* __restrict wyy, const float* __restrict wyz,
+                   const float* __restrict wzz, float* __restrict label_code,
+                   float* __restrict shape, float* __restrict curved, float* __restrict area) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (int i = 0; i < count; ++i) {
+    const float normal_z = nz[i];
+    const bool usable = (usable_in[i] != 0.0f) & (normal_z >= k.min_normal_z);
+    float kappa1, kappa2;
+    principal_values(wxx[i], wxy[i], wxz[i], wyy[i], wyz[i], wzz[i], kappa1, kappa2);
+    const float magnitude2 = kappa1 * kappa1 + kappa2 * kappa2;
+    // Planar (Eqs. 3.21-3.22): sensitivity 1 / (pi |k|) above the threshold, i.e.
+    // pi |k| threshold < 1, which also holds for |k| = 0.
+    const bool planar = k.planar_factor * std::sqrt(magnitude2) < 1.0f;
+    const float curved_shape_index = shape_index_of(kappa1, kappa2);
+    label_code[i] = usable ? (planar ? 2.0f : 1.0f) : 0.0f;  // kPlanar, kCurved, kInvalid
+    shape[i] = usable ? (planar ? kPlanarShapeIndex : curved_shape_index) : nan;
+    curved[i] = usable ? std::sqrt(0.5f * magnitude2) : 0.0f;  // Eq. 3.3
+    // The cell's true surface area: its footprint divided by cos(tilt) = n_z.
+    area[i] = usable ? k.cell_area_mm2 / normal_z : 0.0f;
+  }
+}
+
+}  // namespace
+
+float shape_index(float kappa1, float kappa2) { return shape_index_of(kappa1, kappa2); }
 
 float curvedness(float kappa1, float kappa2) {
   return std::sqrt(0.5f * (kappa1 * kappa1 + kappa2 * kappa2));  // Eq. 3.3
@@ -55,30 +93,29 @@ ShapeIndexField make_shape_index_field(int width, int height) {
 void classify_row(const DarbouxFrameField& frames, int row, double pixel_size_x_mm,
                   double pixel_size_y_mm, const ShapeIndexParameters& parameters,
                   ShapeIndexField& out) {
-  const float min_normal_z =
-      static_cast<float>(std::cos(parameters.max_tilt_deg * std::numbers::pi / 180.0));
-  const float cell_area_mm2 = static_cast<float>(pixel_size_x_mm * pixel_size_y_mm);
-  const float planar_sensitivity = static_cast<float>(parameters.planar_sensitivity_mm);
-  for (int column = 0; column < frames.width(); ++column) {
-    const std::size_t i = frames.valid.index(column, row);
-    const float normal_z = frames.frame[kNz][i];
-    if (!frames.valid[i] || !(normal_z >= min_normal_z)) {
-      out.label[i] = SurfaceLabel::kInvalid;
-      out.shape_index[i] = std::numeric_limits<float>::quiet_NaN();
-      out.curvedness_per_mm[i] = 0;
-      out.area_mm2[i] = 0;
-      out.same_side[i] = 0;
-      continue;
+  const ClassifyConstants constants{
+      static_cast<float>(std::cos(parameters.max_tilt_deg * std::numbers::pi / 180.0)),
+      static_cast<float>(pixel_size_x_mm * pixel_size_y_mm),
+      static_cast<float>(std::numbers::pi * parameters.planar_sensitivity_mm)};
+  const std::size_t first = frames.valid.index(0, row);
+  const int width = frames.width();
+  // Chunks of the row: bytes are widened to floats first and the labels narrowed after.
+  constexpr int kChunk = 256;
+  float usable_chunk[kChunk];
+  float label_chunk[kChunk];
+  for (int chunk = 0; chunk < width; chunk += kChunk) {
+    const int count = std::min(kChunk, width - chunk);
+    const std::size_t at = first + static_cast<std::size_t>(chunk);
+    for (int k = 0; k < count; ++k) usable_chunk[k] = frames.valid[at + k] != 0 ? 1.0f : 0.0f;
+    classify_span(count, constants, usable_chunk, &frames.frame[kNz][at], &frames.frame[kWxx][at],
+                  &frames.frame[kWxy][at], &frames.frame[kWxz][at], &frames.frame[kWyy][at],
+                  &frames.frame[kWyz][at], &frames.frame[kWzz][at], label_chunk,
+                  &out.shape_index[at], &out.curvedness_per_mm[at], &out.area_mm2[at]);
+    for (int k = 0; k < count; ++k) {
+      const auto code = static_cast<std::uint8_t>(label_chunk[k]);
+      out.label[at + k] = static_cast<SurfaceLabel>(code);
+      out.same_side[at + k] = static_cast<std::uint8_t>(frames.same_side[at + k] * (code != 0));
     }
-    float kappa1, kappa2;
-    principal_values(frame_at(frames, i), kappa1, kappa2);
-    const bool planar = shape_index_sensitivity_mm(kappa1, kappa2) > planar_sensitivity;
-    out.label[i] = planar ? SurfaceLabel::kPlanar : SurfaceLabel::kCurved;
-    out.shape_index[i] = planar ? kPlanarShapeIndex : shape_index(kappa1, kappa2);
-    out.curvedness_per_mm[i] = curvedness(kappa1, kappa2);
-    // The cell's true surface area: its footprint divided by cos(tilt) = n_z.
-    out.area_mm2[i] = cell_area_mm2 / normal_z;
-    out.same_side[i] = frames.same_side[i];
   }
 }
 
