@@ -56,7 +56,8 @@ Eigen::Matrix<double, 6, kBicubicTerms> taylor_rows(double u, double v) {
 // [[1,0],[0,1],[p,q]], the shape operator as a 3D tensor. Branch-free, so loops over a row of
 // pixels vectorize.
 template <class Real>
-inline void graph_surface_frame(Real p, Real q, Real zxx, Real zxy, Real zyy, float* f) {
+inline FrameValues graph_surface_frame(Real p, Real q, Real zxx, Real zxy, Real zyy) {
+  FrameValues f;
   const Real w2 = 1 + p * p + q * q;
   const Real inv_w = 1 / std::sqrt(w2);
   const Real inv_w2 = inv_w * inv_w;
@@ -76,14 +77,45 @@ inline void graph_surface_frame(Real p, Real q, Real zxx, Real zxy, Real zyy, fl
   f[kWyy] = static_cast<float>(m22);
   f[kWyz] = static_cast<float>(wyz);
   f[kWzz] = static_cast<float>(p * wxz + q * wyz);
+  return f;
 }
 
 constexpr float kNeutralFrame[kFrameComponents] = {0, 0, 1, 0, 0, 0, 0, 0, 0};
 
+// Frames of a row from the separable fit's quadric terms (pixel units) where fits[c] is 1,
+// the neutral frame elsewhere. Every array is a restrict parameter: GCC 12 does not vectorize
+// through restrict pointers loaded from an array.
+void frames_from_quadrics(int width, float inv_dx, float inv_dy, const float* __restrict fits,
+                          const float* __restrict q0, const float* __restrict q1,
+                          const float* __restrict q2, const float* __restrict q3,
+                          const float* __restrict q4, const float* __restrict q5,
+                          float* __restrict nx, float* __restrict ny, float* __restrict nz,
+                          float* __restrict wxx, float* __restrict wxy, float* __restrict wxz,
+                          float* __restrict wyy, float* __restrict wyz, float* __restrict wzz,
+                          float* __restrict z_row) {
+  for (int c = 0; c < width; ++c) {
+    const bool fit = fits[c] != 0.0f;
+    const FrameValues f = graph_surface_frame(
+        q1[c] * inv_dx, q2[c] * inv_dy, 2 * q3[c] * inv_dx * inv_dx, q4[c] * inv_dx * inv_dy,
+        2 * q5[c] * inv_dy * inv_dy);
+    nx[c] = fit ? f[kNx] : kNeutralFrame[kNx];
+    ny[c] = fit ? f[kNy] : kNeutralFrame[kNy];
+    nz[c] = fit ? f[kNz] : kNeutralFrame[kNz];
+    wxx[c] = fit ? f[kWxx] : 0.0f;
+    wxy[c] = fit ? f[kWxy] : 0.0f;
+    wxz[c] = fit ? f[kWxz] : 0.0f;
+    wyy[c] = fit ? f[kWyy] : 0.0f;
+    wyz[c] = fit ? f[kWyz] : 0.0f;
+    wzz[c] = fit ? f[kWzz] : 0.0f;
+    z_row[c] = fit ? q0[c] : 0.0f;
+  }
+}
+
 }  // namespace
 
 void darboux_frame_from_derivatives(const SurfaceDerivatives& d, float* f) {
-  graph_surface_frame(d.zx, d.zy, d.zxx, d.zxy, d.zyy, f);
+  const FrameValues values = graph_surface_frame(d.zx, d.zy, d.zxx, d.zxy, d.zyy);
+  std::copy(values.begin(), values.end(), f);
 }
 
 LocalSurfaceFitter::LocalSurfaceFitter(const SurfaceFitParameters& parameters,
@@ -95,7 +127,8 @@ LocalSurfaceFitter::LocalSurfaceFitter(const SurfaceFitParameters& parameters,
       half_window_(std::clamp(parameters.window_size / 2, 1, kMaxWindowSize / 2)),
       side_(2 * half_window_ + 1),
       basis_size_(parameters.bicubic ? kBicubicTerms : kBiquadraticTerms),
-      separable_(half_window_, parameters.bicubic ? 3 : 2, max_width) {
+      separable_(half_window_, parameters.bicubic ? 3 : 2, max_width),
+      fits_(static_cast<std::size_t>(std::max(max_width, 1)), 0.0f) {
   const int samples = side_ * side_;
   Eigen::MatrixXd design(samples, basis_size_);
   for (int dv = -half_window_, k = 0; dv <= half_window_; ++dv)
@@ -248,42 +281,33 @@ bool LocalSurfaceFitter::fit_partial_window(const RangeImage& image, int column,
 
 void LocalSurfaceFitter::fit_row(const RangeImage& image, int row, DarbouxFrameField& out) {
   separable_.fit_row(image, row, parameters_.depth_jump_mm);
-  const std::uint8_t* complete = separable_.complete();
-  const double* rss = separable_.residual_sum_of_squares();
   const double crease_rss =
       parameters_.crease_residual_mm * parameters_.crease_residual_mm * side_ * side_;
+  const double* rss = separable_.residual_sum_of_squares();
+  const std::uint8_t* complete = separable_.complete();
   auto separable_fits = [&](int column) {
     return complete[column] && (crease_rss <= 0 || rss[column] <= crease_rss);
   };
   const int width = image.width();
   float* frame_row[kFrameComponents];
   for (int m = 0; m < kFrameComponents; ++m) frame_row[m] = out.frame[m].row(row);
-  float* x_row = out.position_mm[0].row(row);
-  float* y_row = out.position_mm[1].row(row);
   float* z_row = out.position_mm[2].row(row);
   std::uint8_t* valid_row = out.valid.row(row);
-  const double* q[SeparableWindowFit::kQuadricTerms];
+  float* x_row = out.position_mm[0].row(row);
+  for (int column = 0; column < width; ++column) x_row[column] = static_cast<float>(image.x_mm(column));
+  std::fill(out.position_mm[1].row(row), out.position_mm[1].row(row) + width, static_cast<float>(image.y_mm(row)));
+  // Complete, crease-free windows: the separable fit, in a vectorized kernel over the row.
+  for (int column = 0; column < width; ++column) fits_[column] = separable_fits(column) ? 1.0f : 0.0f;
+  const float* q[SeparableWindowFit::kQuadricTerms];
   for (int t = 0; t < SeparableWindowFit::kQuadricTerms; ++t) q[t] = separable_.quadric(t);
-  const float inv_dx = static_cast<float>(1 / pixel_size_x_mm_), inv_dy = static_cast<float>(1 / pixel_size_y_mm_);
-  const float y_mm = static_cast<float>(image.y_mm(row));
-  // Complete, crease-free windows: the separable fit, in a branch-free loop over the row.
-#pragma GCC ivdep
-  for (int column = 0; column < width; ++column) {
-    const bool fits = separable_fits(column);
-    float frame[kFrameComponents];
-    graph_surface_frame(static_cast<float>(q[1][column]) * inv_dx, static_cast<float>(q[2][column]) * inv_dy,
-                        2 * static_cast<float>(q[3][column]) * inv_dx * inv_dx,
-                        static_cast<float>(q[4][column]) * inv_dx * inv_dy,
-                        2 * static_cast<float>(q[5][column]) * inv_dy * inv_dy, frame);
-    for (int m = 0; m < kFrameComponents; ++m) frame_row[m][column] = fits ? frame[m] : kNeutralFrame[m];
-    x_row[column] = static_cast<float>(image.x_mm(column));
-    y_row[column] = y_mm;
-    z_row[column] = fits ? static_cast<float>(q[0][column]) : 0.0f;
-    valid_row[column] = fits ? 1 : 0;
-  }
+  frames_from_quadrics(width, static_cast<float>(1 / pixel_size_x_mm_), static_cast<float>(1 / pixel_size_y_mm_),
+                       fits_.data(), q[0], q[1], q[2], q[3], q[4], q[5], frame_row[kNx], frame_row[kNy],
+                       frame_row[kNz], frame_row[kWxx], frame_row[kWxy], frame_row[kWxz], frame_row[kWyy],
+                       frame_row[kWyz], frame_row[kWzz], z_row);
+  for (int column = 0; column < width; ++column) valid_row[column] = fits_[column] != 0.0f ? 1 : 0;
   // The rest (borders, holes, depth jumps, creases) pixel by pixel.
   for (int column = 0; column < width; ++column) {
-    if (separable_fits(column)) continue;
+    if (fits_[column] != 0.0f) continue;
     SurfaceDerivatives d;
     if (!fit_pixel(image, column, row, d)) continue;
     float frame[kFrameComponents];
@@ -321,12 +345,17 @@ void LocalSurfaceFitter::link_row(const RangeImage& image, int row, DarbouxFrame
   }
 }
 
-DarbouxFrameField fit_local_surfaces(const RangeImage& image,
-                                     const SurfaceFitParameters& parameters) {
-  DarbouxFrameField field(image.width(), image.height());
+void fit_local_surfaces(const RangeImage& image, const SurfaceFitParameters& parameters,
+                        DarbouxFrameField& field) {
   LocalSurfaceFitter fitter(parameters, image.pixel_size_x_mm, image.pixel_size_y_mm, image.width());
   for (int row = 0; row < image.height(); ++row) fitter.fit_row(image, row, field);
   for (int row = 0; row < image.height(); ++row) fitter.link_row(image, row, field);
+}
+
+DarbouxFrameField fit_local_surfaces(const RangeImage& image,
+                                     const SurfaceFitParameters& parameters) {
+  DarbouxFrameField field(image.width(), image.height());
+  fit_local_surfaces(image, parameters, field);
   return field;
 }
 

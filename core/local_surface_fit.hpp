@@ -73,9 +73,13 @@ class LocalSurfaceFitter {
   // Orthonormal basis of the polynomial space over the window (rows): residual = |z|^2 - |Q z|^2.
   Eigen::MatrixXd residual_basis_;
   SeparableWindowFit separable_;
+  std::vector<float> fits_;  // per column of the current row: 1 where the separable fit holds
 };
 
 DarbouxFrameField fit_local_surfaces(const RangeImage& image,
                                      const SurfaceFitParameters& parameters);
+// Into a field of the image's size (every pixel is written): no allocation of the field.
+void fit_local_surfaces(const RangeImage& image, const SurfaceFitParameters& parameters,
+                        DarbouxFrameField& field);
 
 }  // namespace cosmos

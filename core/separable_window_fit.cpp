@@ -26,6 +26,7 @@ SeparableWindowFit::SeparableWindowFit(int half_window, int degree, int max_widt
       range_high_(max_width_, 0.0f),
       complete_(max_width_, 0) {
   for (auto& q : quadric_) q.assign(max_width_, 0.0);
+  for (auto& q : quadric_float_) q.assign(max_width_, 0.0f);
   // Gram-Schmidt of 1, u, u^2, ... over the window's sample positions.
   for (int i = 0; i <= degree_; ++i) {
     monomial_[i * (degree_ + 1) + i] = 1.0;
@@ -110,6 +111,7 @@ void SeparableWindowFit::fit_row(const RangeImage& image, int row, double max_de
   const int width = image.width();
   std::fill(complete_.begin(), complete_.begin() + width, 0);
   for (auto& q : quadric_) std::fill(q.begin(), q.begin() + width, 0.0);
+  for (auto& q : quadric_float_) std::fill(q.begin(), q.begin() + width, 0.0f);
   if (row < half_ || row + half_ >= image.height()) return;
   int slots[kMaxSide];
   for (int dv = -half_; dv <= half_; ++dv) {
@@ -163,6 +165,11 @@ void SeparableWindowFit::fit_row(const RangeImage& image, int row, double max_de
     const double* __restrict dot = &dot_[term.pair * static_cast<std::size_t>(max_width_)];
     double* __restrict q = quadric_[term.quadric_term].data();
     for (int c = begin; c < end; ++c) q[c] += term.coefficient * dot[c];
+  }
+  for (int t = 0; t < kQuadricTerms; ++t) {
+    const double* __restrict q = quadric_[t].data();
+    float* __restrict q_float = quadric_float_[t].data();
+    for (int c = begin; c < end; ++c) q_float[c] = static_cast<float>(q[c]);
   }
   for (int c = begin; c < end; ++c) {
     complete_[c] = std::isfinite(squares[c]) && high[c] - low[c] <= max_depth_range_mm;

@@ -28,7 +28,8 @@ class SeparableWindowFit {
   // Forgets the cached row filters (a new image reuses the buffers).
   void reset();
 
-  const double* quadric(int term) const { return quadric_[term].data(); }
+  // The Taylor terms in float (what the frames are computed in); 0 where incomplete.
+  const float* quadric(int term) const { return quadric_float_[term].data(); }
   const double* residual_sum_of_squares() const { return residual_.data(); }
   const std::uint8_t* complete() const { return complete_.data(); }
 
@@ -53,6 +54,7 @@ class SeparableWindowFit {
   std::vector<double> filtered_;          // slot x filter x column
   std::vector<float> row_min_, row_max_;  // slot x column: depth range of the window's row
   std::vector<double> quadric_[kQuadricTerms];
+  std::vector<float> quadric_float_[kQuadricTerms];
   std::vector<double> residual_;
   // The fit's coefficient pairs (i, j), i + j <= degree, and the nonzero contributions of
   // their dot products to the quadric terms: q[term] += coefficient * dot[pair].

@@ -119,11 +119,17 @@ void classify_row(const DarbouxFrameField& frames, int row, double pixel_size_x_
   }
 }
 
+void classify_surface(const DarbouxFrameField& frames, double pixel_size_x_mm,
+                      double pixel_size_y_mm, const ShapeIndexParameters& parameters,
+                      ShapeIndexField& field) {
+  for (int row = 0; row < frames.height(); ++row)
+    classify_row(frames, row, pixel_size_x_mm, pixel_size_y_mm, parameters, field);
+}
+
 ShapeIndexField classify_surface(const DarbouxFrameField& frames, double pixel_size_x_mm,
                                  double pixel_size_y_mm, const ShapeIndexParameters& parameters) {
   ShapeIndexField field = make_shape_index_field(frames.width(), frames.height());
-  for (int row = 0; row < frames.height(); ++row)
-    classify_row(frames, row, pixel_size_x_mm, pixel_size_y_mm, parameters, field);
+  classify_surface(frames, pixel_size_x_mm, pixel_size_y_mm, parameters, field);
   return field;
 }
 

@@ -42,5 +42,9 @@ void classify_row(const DarbouxFrameField& frames, int row, double pixel_size_x_
                   ShapeIndexField& out);
 ShapeIndexField classify_surface(const DarbouxFrameField& frames, double pixel_size_x_mm,
                                  double pixel_size_y_mm, const ShapeIndexParameters& parameters);
+// Into a field of the frames' size (every pixel is written).
+void classify_surface(const DarbouxFrameField& frames, double pixel_size_x_mm,
+                      double pixel_size_y_mm, const ShapeIndexParameters& parameters,
+                      ShapeIndexField& field);
 
 }  // namespace cosmos
