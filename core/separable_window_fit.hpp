@@ -17,7 +17,8 @@ namespace cosmos {
 class SeparableWindowFit {
  public:
   static constexpr int kQuadricTerms = 6;  // z, z_u, z_v, z_uu/2, z_uv, z_vv/2 (pixel units)
-  static constexpr int kMaxSide = 15;
+  static constexpr int kMaxSide = 11;
+  static constexpr int kMaxDegree = 3;
 
   SeparableWindowFit(int half_window, int degree, int max_width);
 
@@ -33,8 +34,18 @@ class SeparableWindowFit {
   const double* residual_sum_of_squares() const { return residual_.data(); }
   const std::uint8_t* complete() const { return complete_.data(); }
 
+  // Per window row k (0..side-1): its row filters (degree + 1 polynomials, then the sum of
+  // squares) and the depth range of its window rows.
+  struct ColumnPassInputs {
+    const double* filtered[kMaxSide][kMaxDegree + 2];
+    const float* low[kMaxSide];
+    const float* high[kMaxSide];
+  };
+
  private:
   void filter_image_row(const RangeImage& image, int image_row, int slot);
+  template <int Side, int Degree>
+  void fit_column_range(const ColumnPassInputs& in, int begin, int end, double max_range_mm);
   double& filtered(int slot, int filter, int column) {
     return filtered_[(static_cast<std::size_t>(slot) * filters_ + filter) * max_width_ + column];
   }
@@ -53,20 +64,12 @@ class SeparableWindowFit {
   std::vector<std::array<int, 2>> slot_columns_;
   std::vector<double> filtered_;          // slot x filter x column
   std::vector<float> row_min_, row_max_;  // slot x column: depth range of the window's row
-  std::vector<double> quadric_[kQuadricTerms];
+  // Per coefficient pair (i, j), i + j <= degree, in order: 1 / (|p_i|^2 |p_j|^2); and the
+  // centre's Taylor terms as [term][pair] multiples of the pair dot products.
+  std::vector<double> pair_inverse_norm_;
+  std::vector<double> taylor_table_;
   std::vector<float> quadric_float_[kQuadricTerms];
   std::vector<double> residual_;
-  // The fit's coefficient pairs (i, j), i + j <= degree, and the nonzero contributions of
-  // their dot products to the quadric terms: q[term] += coefficient * dot[pair].
-  std::vector<std::array<int, 2>> pairs_;
-  struct TaylorTerm {
-    int pair;
-    int quadric_term;
-    double coefficient;
-  };
-  std::vector<TaylorTerm> taylor_terms_;
-  std::vector<double> dot_;  // pair x column
-  std::vector<float> range_low_, range_high_;
   std::vector<std::uint8_t> complete_;
 };
 
