@@ -44,6 +44,7 @@ struct EvaluationRecord {
   bool truth_symmetric = false;     // catalog flag: rotation error not meaningful
   double diameter_mm = 0;           // part diameter (largest vertex distance) for ADD-S
   bool rejected = false;
+  std::string rejection_reason;  // the recognizer's reason when rejected
   int predicted_part = -1;  // catalog index, -1 when rejected
   std::string predicted_name;
   // Rank (0-based) of the first cluster of the true part in the spectral cluster ranking

@@ -229,7 +229,7 @@ std::string report_html(std::span<const EvaluationRecord> records, const Evaluat
          << "</td></tr>\n";
   html << "</table>\n<h2>Tests</h2>\n<table>\n<tr><th>#</th><th>truth</th><th>predicted</th>"
           "<th>status</th><th>rotation error (deg)</th><th>translation error (mm)</th>"
-          "<th>ADD-S / diameter</th><th>time (ms)</th></tr>\n";
+          "<th>ADD-S / diameter</th><th>time (ms)</th><th>rejected because</th></tr>\n";
   for (std::size_t i = 0; i < records.size(); ++i) {
     const EvaluationRecord& record = records[i];
     const RecordOutcome& outcome = metrics.outcomes[i];
@@ -244,7 +244,8 @@ std::string report_html(std::span<const EvaluationRecord> records, const Evaluat
          << (symmetric_correct ? "symmetric" : format_or_dash(outcome.rotation_error_deg, "%.3f"))
          << "</td><td>" << format_or_dash(outcome.translation_error_mm, "%.3f") << "</td><td>"
          << format_or_dash(outcome.add_s_over_diameter, "%.4f") << "</td><td>"
-         << format("%.2f", record.recognition_ms) << "</td></tr>\n";
+         << format("%.2f", record.recognition_ms) << "</td><td>"
+         << html_escape(record.rejection_reason) << "</td></tr>\n";
   }
   html << "</table>\n</body></html>\n";
   return html.str();

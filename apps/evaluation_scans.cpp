@@ -107,6 +107,7 @@ EvaluationRecord run_evaluation_test(const EvaluationTest& test,
   record.truth_symmetric = part.symmetric;
   record.diameter_mm = part.diameter_mm;
   record.rejected = result.status != RecognitionStatus::kOk;
+  if (record.rejected) record.rejection_reason = result.reason;
   if (!record.rejected) {
     const std::string& name = base.parts[static_cast<std::size_t>(result.part)].name;
     for (const EvaluationPart& candidate : parts)
