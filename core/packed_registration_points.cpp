@@ -115,22 +115,27 @@ RegistrationPoints unpack_registration_points(const PackedRegistrationPoints& pa
   points.residual_rms_mm.resize(n);
   const std::size_t cells = static_cast<std::size_t>(packed.grid_width) * static_cast<std::size_t>(packed.grid_height);
   points.cell_point.assign(cells, -1);
+  // The occupied cells are sparse in the grid: whole empty bytes are skipped, and the set bits
+  // of the others visited in increasing order.
   int i = 0;
-  for (std::size_t cell = 0; cell < cells && i < n; ++cell) {
-    if (((packed.occupied_cells[cell / 8] >> (cell % 8)) & 1u) == 0) continue;
-    const std::size_t k = static_cast<std::size_t>(i);
-    points.cell_point[cell] = i;
-    for (int c = 0; c < kPlaneValues; ++c) points.surface(c, i) = packed.plane[k * kPlaneValues + static_cast<std::size_t>(c)];
-    for (int c = 0; c < kCurvatureValues; ++c)
-      points.surface(kCurveXX + c, i) = packed.curvature_step * packed.curvature[k * kCurvatureValues + static_cast<std::size_t>(c)];
-    const int u = static_cast<int>(cell % static_cast<std::size_t>(packed.grid_width));
-    const int v = static_cast<int>(cell / static_cast<std::size_t>(packed.grid_width));
-    points.position_mm.col(i) << packed.origin_x_mm + u * packed.spacing_x_mm,
-        packed.origin_y_mm + v * packed.spacing_y_mm, points.surface(kHeight, i);
-    const double nx = packed.normal_xy[2 * k] / kNormalUnitsPerOne, ny = packed.normal_xy[2 * k + 1] / kNormalUnitsPerOne;
-    points.normal.col(i) = Eigen::Vector3d(nx, ny, std::sqrt(std::max(0.0, 1.0 - nx * nx - ny * ny))).normalized();
-    points.residual_rms_mm(i) = packed.residual_step_mm * packed.residual[k];
-    ++i;
+  for (std::size_t byte = 0; byte < packed.occupied_cells.size() && i < n; ++byte) {
+    for (unsigned bits = packed.occupied_cells[byte]; bits != 0 && i < n; bits &= bits - 1) {
+      const std::size_t cell = byte * 8 + static_cast<std::size_t>(std::countr_zero(bits));
+      if (cell >= cells) break;
+      const std::size_t k = static_cast<std::size_t>(i);
+      points.cell_point[cell] = i;
+      for (int c = 0; c < kPlaneValues; ++c) points.surface(c, i) = packed.plane[k * kPlaneValues + static_cast<std::size_t>(c)];
+      for (int c = 0; c < kCurvatureValues; ++c)
+        points.surface(kCurveXX + c, i) = packed.curvature_step * packed.curvature[k * kCurvatureValues + static_cast<std::size_t>(c)];
+      const int u = static_cast<int>(cell % static_cast<std::size_t>(packed.grid_width));
+      const int v = static_cast<int>(cell / static_cast<std::size_t>(packed.grid_width));
+      points.position_mm.col(i) << packed.origin_x_mm + u * packed.spacing_x_mm,
+          packed.origin_y_mm + v * packed.spacing_y_mm, points.surface(kHeight, i);
+      const double nx = packed.normal_xy[2 * k] / kNormalUnitsPerOne, ny = packed.normal_xy[2 * k + 1] / kNormalUnitsPerOne;
+      points.normal.col(i) = Eigen::Vector3d(nx, ny, std::sqrt(std::max(0.0, 1.0 - nx * nx - ny * ny))).normalized();
+      points.residual_rms_mm(i) = packed.residual_step_mm * packed.residual[k];
+      ++i;
+    }
   }
   return points;
 }
