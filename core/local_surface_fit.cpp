@@ -20,23 +20,6 @@ Eigen::Matrix<double, kBicubicTerms, 1> monomials(double u, double v) {
   return m;
 }
 
-// Solves the leading Terms x Terms block with fixed-size matrices (no allocation); false when
-// the samples do not determine the surface (e.g. all on one line).
-template <int Terms>
-bool solve_normal_equations(const Eigen::Matrix<double, kBicubicTerms, kBicubicTerms>& lower,
-                            const Eigen::Matrix<double, kBicubicTerms, 1>& right_side,
-                            Eigen::Matrix<double, 6, 1>& quadric_coefficients) {
-  const Eigen::Matrix<double, Terms, Terms> a =
-      lower.template topLeftCorner<Terms, Terms>().template selfadjointView<Eigen::Lower>();
-  const Eigen::LDLT<Eigen::Matrix<double, Terms, Terms>> solver(a);
-  const auto diagonal = solver.vectorD();
-  if (solver.info() != Eigen::Success || diagonal.minCoeff() <= 1e-9 * diagonal.maxCoeff())
-    return false;
-  const Eigen::Matrix<double, Terms, 1> c = solver.solve(right_side.template head<Terms>());
-  quadric_coefficients = c.template head<6>();
-  return true;
-}
-
 // Derivatives at (u, v) of the monomials, as rows z, z_u, z_v, z_uu/2, z_uv, z_vv/2 (the
 // quadric coefficients of the Taylor expansion at that point).
 Eigen::Matrix<double, 6, kBicubicTerms> taylor_rows(double u, double v) {
@@ -128,6 +111,7 @@ LocalSurfaceFitter::LocalSurfaceFitter(const SurfaceFitParameters& parameters,
       side_(2 * half_window_ + 1),
       basis_size_(parameters.bicubic ? kBicubicTerms : kBiquadraticTerms),
       separable_(half_window_, parameters.bicubic ? 3 : 2, max_width),
+      partial_kernels_(side_, parameters.bicubic),
       fits_(static_cast<std::size_t>(std::max(max_width, 1)), 0.0f) {
   const int samples = side_ * side_;
   Eigen::MatrixXd design(samples, basis_size_);
@@ -139,11 +123,6 @@ LocalSurfaceFitter::LocalSurfaceFitter(const SurfaceFitParameters& parameters,
   for (int ov = -half_window_; ov <= half_window_; ++ov)
     for (int ou = -half_window_; ou <= half_window_; ++ou)
       offset_kernels_.emplace_back(taylor_rows(-ou, -ov).leftCols(basis_size_) * pseudo_inverse);
-  for (int k = 0; k < samples; ++k) {
-    const Eigen::Matrix<double, kBicubicTerms, 1> m = monomials(k % side_ - half_window_, k / side_ - half_window_);
-    window_monomials_.push_back(m);
-    window_outer_.push_back(m * m.transpose());
-  }
   const Eigen::HouseholderQR<Eigen::MatrixXd> qr(design);
   residual_basis_ =
       (qr.householderQ() * Eigen::MatrixXd::Identity(samples, basis_size_)).transpose();
@@ -251,29 +230,27 @@ bool LocalSurfaceFitter::fit_partial_window(const RangeImage& image, int column,
                                             SurfaceDerivatives& d) const {
   const float center = image.z_mm(column, row);
   const int h = half_window_;
-  Eigen::Matrix<double, kBicubicTerms, kBicubicTerms> normal_matrix =
-      Eigen::Matrix<double, kBicubicTerms, kBicubicTerms>::Zero();
-  Eigen::Matrix<double, kBicubicTerms, 1> right_side = Eigen::Matrix<double, kBicubicTerms, 1>::Zero();
-  int samples = 0;
+  WindowSamples samples;
+  PartialWindowKernels::Mask valid{};
+  int count = 0;
   for (int dv = -h, k = 0; dv <= h; ++dv) {
     for (int du = -h; du <= h; ++du, ++k) {
+      samples[static_cast<std::size_t>(k)] = 0.0;
       if (!image.z_mm.contains(column + du, row + dv)) continue;
       const float z = image.z_mm(column + du, row + dv);
       const int steps = std::max(std::abs(du), std::abs(dv));
       if (!(std::abs(z - center) <= parameters_.depth_jump_mm * steps)) continue;
-      // The window's outer products are precomputed: a sample adds a fixed matrix.
-      normal_matrix += window_outer_[static_cast<std::size_t>(k)];
-      right_side += window_monomials_[static_cast<std::size_t>(k)] * (z - center);
-      ++samples;
+      samples[static_cast<std::size_t>(k)] = static_cast<double>(z) - center;
+      valid[static_cast<std::size_t>(k / 64)] |= std::uint64_t{1} << (k % 64);
+      ++count;
     }
   }
-  if (samples < parameters_.min_samples) return false;
-  // A cubic needs more support than a quadric; sparse windows fall back to the quadric.
-  QuadricCoefficients coefficients;
-  const bool solved = (basis_size_ == kBicubicTerms && samples >= 16)
-                          ? solve_normal_equations<kBicubicTerms>(normal_matrix, right_side, coefficients)
-                          : solve_normal_equations<kBiquadraticTerms>(normal_matrix, right_side, coefficients);
-  if (!solved) return false;
+  if (count < parameters_.min_samples) return false;
+  const PartialWindowKernels::Kernel* kernel = partial_kernels_.kernel(valid, count);
+  if (kernel == nullptr) return false;
+  QuadricCoefficients coefficients = QuadricCoefficients::Zero();
+  for (int k = 0; k < side_ * side_; ++k)
+    coefficients += kernel->col(k) * samples[static_cast<std::size_t>(k)];
   coefficients[0] += center;
   d = to_metric(coefficients);
   return true;

@@ -12,6 +12,7 @@
 
 #include "core/cosmos_parameters.hpp"
 #include "core/darboux_frame_field.hpp"
+#include "core/partial_window_kernels.hpp"
 #include "core/range_image.hpp"
 #include "core/separable_window_fit.hpp"
 
@@ -66,13 +67,11 @@ class LocalSurfaceFitter {
   // Per window offset (window centre - pixel): rows give z, z_u, z_v, z_uu/2, z_uv, z_vv/2
   // at the pixel (u, v in pixel steps); columns are the window samples.
   std::vector<Eigen::Matrix<double, 6, Eigen::Dynamic>> offset_kernels_;
-  // Per window sample (row-major, u fastest): its bicubic monomials m and m m^T, what a valid
-  // sample adds to the normal equations of a partial window.
-  std::vector<Eigen::Matrix<double, 10, 1>> window_monomials_;
-  std::vector<Eigen::Matrix<double, 10, 10>> window_outer_;
   // Orthonormal basis of the polynomial space over the window (rows): residual = |z|^2 - |Q z|^2.
   Eigen::MatrixXd residual_basis_;
   SeparableWindowFit separable_;
+  // Logically const: a cache whose contents never change a result.
+  mutable PartialWindowKernels partial_kernels_;
   std::vector<float> fits_;  // per column of the current row: 1 where the separable fit holds
 };
 

@@ -1,0 +1,46 @@
+#pragma once
+// The least-squares window fit of §3.5.1 where some samples are missing or lie across a depth
+// jump: once it is known which samples are valid, the fit is linear in them, so one kernel
+// per validity pattern (6 x window samples) gives the quadric Taylor terms at the centre.
+// Silhouettes, borders and holes repeat few patterns, so kernels are kept in a fixed
+// direct-mapped table: nothing is allocated after construction, and a result never depends
+// on what happened to be cached (a kernel is a function of its pattern alone).
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace cosmos {
+
+class PartialWindowKernels {
+ public:
+  static constexpr int kMaxSamples = 128;
+  using Mask = std::array<std::uint64_t, kMaxSamples / 64>;  // bit k: sample k valid
+  using Kernel = Eigen::Matrix<double, 6, Eigen::Dynamic>;
+
+  // side x side windows (side <= 11), row-major samples with u fastest; the bicubic needs 16
+  // valid samples, below that the biquadratic is fitted.
+  PartialWindowKernels(int side, bool bicubic);
+
+  // The kernel of `mask` (its `valid_count` set bits), zero in the columns of invalid
+  // samples; nullptr when the valid samples do not determine the surface (e.g. on one line).
+  const Kernel* kernel(const Mask& mask, int valid_count);
+
+ private:
+  struct Entry {
+    Mask mask{};
+    bool filled = false;
+    bool solvable = false;
+    Kernel kernel;
+  };
+  template <int Terms>
+  bool solve(const Mask& mask, Kernel& kernel) const;
+
+  int side_;
+  bool bicubic_;
+  std::vector<Eigen::Matrix<double, 10, 1>> monomials_;       // per sample
+  std::vector<Eigen::Matrix<double, 10, 10>> outer_products_;  // per sample, m m^T
+  std::vector<Entry> entries_;
+};
+
+}  // namespace cosmos
