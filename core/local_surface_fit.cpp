@@ -295,30 +295,40 @@ void LocalSurfaceFitter::fit_row(const RangeImage& image, int row, DarbouxFrameF
   }
 }
 
+namespace {
+
+// Bit `bit` of mask[c] for the columns [begin, end) whose neighbour at c + dc (in the row
+// `z_neighbor`, `valid_neighbor`) is valid and within `jump` of the pixel. Plain restrict
+// parameters and a column-inner loop, so it vectorizes.
+void link_direction(int begin, int end, int dc, float jump, std::uint8_t bit,
+                    const float* __restrict z_center, const std::uint8_t* __restrict valid_center,
+                    const float* __restrict z_neighbor,
+                    const std::uint8_t* __restrict valid_neighbor,
+                    std::uint8_t* __restrict mask) {
+  for (int c = begin; c < end; ++c) {
+    const bool linked = (valid_center[c] != 0) & (valid_neighbor[c + dc] != 0) &
+                        (std::abs(z_neighbor[c + dc] - z_center[c]) <= jump);
+    mask[c] = static_cast<std::uint8_t>(mask[c] | (linked ? bit : 0));
+  }
+}
+
+}  // namespace
+
 void LocalSurfaceFitter::link_row(const RangeImage& image, int row, DarbouxFrameField& out) const {
   const int width = image.width(), height = image.height();
   const float jump = static_cast<float>(parameters_.depth_jump_mm);
-  const float* z[3];
-  const std::uint8_t* valid[3];
-  for (int r = 0; r < 3; ++r) {
-    // A missing row points at this one with its validity masked off below.
-    const int source = std::clamp(row + r - 1, 0, height - 1);
-    z[r] = image.z_mm.row(source);
-    valid[r] = out.valid.row(source);
-  }
-  const bool row_exists[3] = {row > 0, true, row + 1 < height};
   std::uint8_t* mask_row = out.same_side.row(row);
-  for (int column = 0; column < width; ++column) {
-    std::uint8_t mask = 0;
-    if (valid[1][column]) {
-      const float center = z[1][column];
-      for (int k = 0; k < 8; ++k) {
-        const int r = kNeighborOffsets[k].row + 1, c = column + kNeighborOffsets[k].column;
-        if (!row_exists[r] || c < 0 || c >= width || !valid[r][c]) continue;
-        if (std::abs(z[r][c] - center) <= jump) mask |= static_cast<std::uint8_t>(1u << k);
-      }
-    }
-    mask_row[column] = mask;
+  std::fill(mask_row, mask_row + width, 0);
+  const float* z_center = image.z_mm.row(row);
+  const std::uint8_t* valid_center = out.valid.row(row);
+  for (int k = 0; k < 8; ++k) {
+    const int neighbor_row = row + kNeighborOffsets[k].row, dc = kNeighborOffsets[k].column;
+    if (neighbor_row < 0 || neighbor_row >= height) continue;
+    // Columns whose neighbour in this direction lies inside the image.
+    const int begin = std::max(0, -dc), end = std::min(width, width - dc);
+    link_direction(begin, end, dc, jump, static_cast<std::uint8_t>(1u << k), z_center,
+                   valid_center, image.z_mm.row(neighbor_row), out.valid.row(neighbor_row),
+                   mask_row);
   }
 }
 

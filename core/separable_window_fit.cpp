@@ -5,6 +5,7 @@
 #include <cstring>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace cosmos {
 
@@ -69,47 +70,6 @@ SeparableWindowFit::SeparableWindowFit(int half_window, int degree, int max_widt
 }
 
 void SeparableWindowFit::reset() { std::fill(slot_row_.begin(), slot_row_.end(), -1); }
-
-void SeparableWindowFit::filter_image_row(const RangeImage& image, int image_row, int slot) {
-  slot_row_[slot] = image_row;
-  const int width = image.width();
-  const float* z = image.z_mm.row(image_row);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  // A part rarely fills the row: only windows within its first and last sample can be
-  // complete (a NaN inside the span still makes its windows NaN, as before).
-  int first = 0, last = width;
-  while (first < last && std::isnan(z[first])) ++first;
-  while (last > first && std::isnan(z[last - 1])) --last;
-  const int begin = std::max(half_, first + half_), end = std::min(width - half_, last - half_);
-  slot_columns_[static_cast<std::size_t>(slot)] = {begin, std::max(begin, end)};
-  float* __restrict low = &row_min_[static_cast<std::size_t>(slot) * max_width_];
-  float* __restrict high = &row_max_[static_cast<std::size_t>(slot) * max_width_];
-  for (int f = 0; f < filters_; ++f) {
-    double* __restrict out = &filtered(slot, f, 0);
-    std::fill(out, out + width, nan);  // columns whose window leaves the image or the data
-    for (int c = begin; c < end; ++c) out[c] = 0.0;
-  }
-  for (int c = begin; c < end; ++c) {
-    low[c] = std::numeric_limits<float>::infinity();
-    high[c] = -std::numeric_limits<float>::infinity();
-  }
-  // Tap by tap over the columns (column-inner loops vectorize); NaN samples make NaN sums.
-  for (int k = 0; k < side_; ++k) {
-    const float* __restrict shifted = z + k - half_;
-    for (int f = 0; f <= degree_; ++f) {
-      double* __restrict out = &filtered(slot, f, 0);
-      const double weight = polynomial_[f * side_ + k];
-      for (int c = begin; c < end; ++c) out[c] += weight * static_cast<double>(shifted[c]);
-    }
-    double* __restrict squares = &filtered(slot, filters_ - 1, 0);
-    for (int c = begin; c < end; ++c) {
-      const double value = shifted[c];
-      squares[c] += value * value;
-      low[c] = std::min(low[c], shifted[c]);
-      high[c] = std::max(high[c], shifted[c]);
-    }
-  }
-}
 
 namespace {
 
@@ -244,11 +204,102 @@ void SeparableWindowFit::fit_column_range(const ColumnPassInputs& in, int begin,
   for (; c < end; ++c) fit_columns<Side, Degree, double>(in, t, c, max_range_mm);
 }
 
+namespace {
+
+// The row filters of one image row for columns [c, c + lanes): the degree + 1 polynomial
+// filters and the sum of squares over the window's columns, and the depth range.
+template <int Side, int Degree, class V>
+[[gnu::always_inline]] inline void filter_columns(const float* z, const double (&polynomial)[Degree + 1][Side],
+                                                  double* const* out, float* low, float* high,
+                                                  int c) {
+  using L = Lanes<V>;
+  constexpr int kHalf = Side / 2;
+  V filters[Degree + 1];
+  for (V& f : filters) f = L::broadcast(0.0);
+  V squares = L::broadcast(0.0);
+  auto lowest = L::load(z + c - kHalf), highest = lowest;
+  for (int k = 0; k < Side; ++k) {
+    const auto samples = L::load(z + c + k - kHalf);
+    const V value = L::widen(samples);
+    for (int i = 0; i <= Degree; ++i) filters[i] += polynomial[i][k] * value;
+    squares += value * value;
+    lowest = L::min(lowest, samples);
+    highest = L::max(highest, samples);
+  }
+  for (int i = 0; i <= Degree; ++i) L::store(out[i] + c, filters[i]);
+  L::store(out[Degree + 1] + c, squares);
+  L::store(low + c, lowest);
+  L::store(high + c, highest);
+}
+
+}  // namespace
+
+template <int Side, int Degree>
+void SeparableWindowFit::filter_column_range(const float* z, int slot, int begin, int end) {
+  double polynomial[Degree + 1][Side];
+  for (int i = 0; i <= Degree; ++i)
+    for (int k = 0; k < Side; ++k) polynomial[i][k] = polynomial_[i * Side + k];
+  double* out[Degree + 2];
+  for (int f = 0; f < Degree + 2; ++f) out[f] = &filtered(slot, f, 0);
+  float* low = &row_min_[static_cast<std::size_t>(slot) * max_width_];
+  float* high = &row_max_[static_cast<std::size_t>(slot) * max_width_];
+  int c = begin;
+  for (; c + 4 <= end; c += 4) filter_columns<Side, Degree, Double4>(z, polynomial, out, low, high, c);
+  for (; c < end; ++c) filter_columns<Side, Degree, double>(z, polynomial, out, low, high, c);
+}
+
+// Calls run.template operator()<Side, Degree>() for the window's shape.
+template <class Run>
+void SeparableWindowFit::with_window_shape(Run&& run) const {
+  switch (side_ * 10 + degree_) {
+    case 32: run.template operator()<3, 2>(); break;
+    case 33: run.template operator()<3, 3>(); break;
+    case 52: run.template operator()<5, 2>(); break;
+    case 53: run.template operator()<5, 3>(); break;
+    case 72: run.template operator()<7, 2>(); break;
+    case 73: run.template operator()<7, 3>(); break;
+    case 92: run.template operator()<9, 2>(); break;
+    case 93: run.template operator()<9, 3>(); break;
+    case 112: run.template operator()<11, 2>(); break;
+    default: run.template operator()<11, 3>(); break;
+  }
+}
+
+void SeparableWindowFit::filter_image_row(const RangeImage& image, int image_row, int slot) {
+  slot_row_[slot] = image_row;
+  const int width = image.width();
+  const float* z = image.z_mm.row(image_row);
+  // A part rarely fills the row: only windows within its first and last sample can be
+  // complete (a NaN inside the span still makes its windows NaN, as before).
+  int first = 0, last = width;
+  while (first < last && std::isnan(z[first])) ++first;
+  while (last > first && std::isnan(z[last - 1])) --last;
+  const int begin = std::min(width, std::max(half_, first + half_));
+  const int end = std::max(begin, std::min(width - half_, last - half_));
+  slot_columns_[static_cast<std::size_t>(slot)] = {begin, end};
+  // Columns whose window leaves the image or the data: NaN (never complete).
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int f = 0; f < filters_; ++f) {
+    double* out = &filtered(slot, f, 0);
+    std::fill(out, out + begin, nan);
+    std::fill(out + end, out + width, nan);
+  }
+  with_window_shape([&]<int Side, int Degree>() { filter_column_range<Side, Degree>(z, slot, begin, end); });
+}
+
 void SeparableWindowFit::fit_row(const RangeImage& image, int row, double max_depth_range_mm) {
   const int width = image.width();
-  std::fill(complete_.begin(), complete_.begin() + width, 0);
-  for (auto& q : quadric_float_) std::fill(q.begin(), q.begin() + width, 0.0f);
-  if (row < half_ || row + half_ >= image.height()) return;
+  // Columns outside [begin, end) are incomplete, with quadric 0; the column pass writes the rest.
+  const auto clear_outside = [&](int begin, int end) {
+    for (const auto& [from, to] : {std::pair{0, begin}, std::pair{end, width}}) {
+      std::fill(complete_.begin() + from, complete_.begin() + to, 0);
+      for (auto& q : quadric_float_) std::fill(q.begin() + from, q.begin() + to, 0.0f);
+    }
+  };
+  if (row < half_ || row + half_ >= image.height()) {
+    clear_outside(width, width);
+    return;
+  }
   int slots[kMaxSide];
   for (int dv = -half_; dv <= half_; ++dv) {
     const int image_row = row + dv;
@@ -267,19 +318,12 @@ void SeparableWindowFit::fit_row(const RangeImage& image, int row, double max_de
     in.low[k] = &row_min_[slot * max_width_];
     in.high[k] = &row_max_[slot * max_width_];
   }
-  if (begin >= end) return;
-  switch (side_ * 10 + degree_) {
-    case 32: fit_column_range<3, 2>(in, begin, end, max_depth_range_mm); break;
-    case 33: fit_column_range<3, 3>(in, begin, end, max_depth_range_mm); break;
-    case 52: fit_column_range<5, 2>(in, begin, end, max_depth_range_mm); break;
-    case 53: fit_column_range<5, 3>(in, begin, end, max_depth_range_mm); break;
-    case 72: fit_column_range<7, 2>(in, begin, end, max_depth_range_mm); break;
-    case 73: fit_column_range<7, 3>(in, begin, end, max_depth_range_mm); break;
-    case 92: fit_column_range<9, 2>(in, begin, end, max_depth_range_mm); break;
-    case 93: fit_column_range<9, 3>(in, begin, end, max_depth_range_mm); break;
-    case 112: fit_column_range<11, 2>(in, begin, end, max_depth_range_mm); break;
-    default: fit_column_range<11, 3>(in, begin, end, max_depth_range_mm); break;
-  }
+  end = std::max(begin, end);
+  clear_outside(begin, end);
+  if (begin == end) return;
+  with_window_shape([&]<int Side, int Degree>() {
+    fit_column_range<Side, Degree>(in, begin, end, max_depth_range_mm);
+  });
 }
 
 }  // namespace cosmos

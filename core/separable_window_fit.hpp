@@ -46,6 +46,10 @@ class SeparableWindowFit {
   void filter_image_row(const RangeImage& image, int image_row, int slot);
   template <int Side, int Degree>
   void fit_column_range(const ColumnPassInputs& in, int begin, int end, double max_range_mm);
+  template <int Side, int Degree>
+  void filter_column_range(const float* z, int slot, int begin, int end);
+  template <class Run>
+  void with_window_shape(Run&& run) const;
   double& filtered(int slot, int filter, int column) {
     return filtered_[(static_cast<std::size_t>(slot) * filters_ + filter) * max_width_ + column];
   }
