@@ -172,10 +172,23 @@ template <int Side, int Degree, class V>
   V residual = squares;
   for (int pair = 0; pair < kPairs; ++pair)
     residual -= t.inverse_norm[pair] * dots[pair] * dots[pair];
+  // On the symmetric window p_i has the parity of i and degree i, so the u^a coefficient of
+  // p_i can be nonzero only for a <= i of i's parity: after unrolling, the zero products of
+  // the table are known at compile time and dropped.
+  constexpr int kOrders[SeparableWindowFit::kQuadricTerms][2] = {{0, 0}, {1, 0}, {0, 1},
+                                                                  {2, 0}, {1, 1}, {0, 2}};
+#pragma GCC unroll 6
   for (int term = 0; term < SeparableWindowFit::kQuadricTerms; ++term) {
+    const int a = kOrders[term][0], b = kOrders[term][1];
     V q = L::broadcast(0.0);
-    for (int pair = 0; pair < kPairs; ++pair)
-      if (t.taylor[term][pair] != 0.0) q += t.taylor[term][pair] * dots[pair];
+    int pair = 0;
+#pragma GCC unroll 4
+    for (int i = 0; i <= Degree; ++i) {
+#pragma GCC unroll 4
+      for (int j = 0; i + j <= Degree; ++j, ++pair)
+        if (a <= i && (i - a) % 2 == 0 && b <= j && (j - b) % 2 == 0)
+          q += t.taylor[term][pair] * dots[pair];
+    }
     L::store(t.quadric[term] + c, L::narrow(q));
   }
   L::store(t.residual + c, L::max(residual, L::broadcast(0.0)));
