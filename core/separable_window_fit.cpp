@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <utility>
 
+#include "core/window_lanes.hpp"
+
 namespace cosmos {
+
+using window_lanes::Double4;
+using window_lanes::Lanes;
 
 SeparableWindowFit::SeparableWindowFit(int half_window, int degree, int max_width)
     : half_(half_window),
@@ -71,62 +75,6 @@ SeparableWindowFit::SeparableWindowFit(int half_window, int degree, int max_widt
 
 void SeparableWindowFit::reset() { std::fill(slot_row_.begin(), slot_row_.end(), -1); }
 
-namespace {
-
-// Four columns at a time (GCC vector extensions: AVX2 registers when compiled for them, SSE2
-// pairs otherwise), or one (plain scalars) for the row's last columns.
-using Double4 = double __attribute__((vector_size(32)));
-using Float4 = float __attribute__((vector_size(16)));
-
-template <class V>
-struct Lanes;
-template <>
-struct Lanes<double> {
-  static constexpr int kCount = 1;
-  using Floats = float;
-  static double load(const double* p) { return *p; }
-  static float load(const float* p) { return *p; }
-  static double widen(float v) { return v; }
-  static float narrow(double v) { return static_cast<float>(v); }
-  static double broadcast(double v) { return v; }
-  static double max(double a, double b) { return a > b ? a : b; }
-  static float min(float a, float b) { return a < b ? a : b; }
-  static float max(float a, float b) { return a > b ? a : b; }
-  static void store(float* p, float v) { *p = v; }
-  static void store(double* p, double v) { *p = v; }
-  static void store_complete(std::uint8_t* p, double residual, double range, double limit) {
-    *p = std::isfinite(residual) && range <= limit;
-  }
-};
-template <>
-struct Lanes<Double4> {
-  static constexpr int kCount = 4;
-  using Floats = Float4;
-  static Double4 load(const double* p) {
-    Double4 v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-  }
-  static Float4 load(const float* p) {
-    Float4 v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-  }
-  static Double4 widen(Float4 v) { return __builtin_convertvector(v, Double4); }
-  static Float4 narrow(Double4 v) { return __builtin_convertvector(v, Float4); }
-  static Double4 broadcast(double v) { return Double4{v, v, v, v}; }
-  static Double4 max(Double4 a, Double4 b) { return a > b ? a : b; }
-  static Float4 min(Float4 a, Float4 b) { return a < b ? a : b; }
-  static Float4 max(Float4 a, Float4 b) { return a > b ? a : b; }
-  static void store(float* p, Float4 v) { std::memcpy(p, &v, sizeof v); }
-  static void store(double* p, Double4 v) { std::memcpy(p, &v, sizeof v); }
-  static void store_complete(std::uint8_t* p, Double4 residual, Double4 range, double limit) {
-    for (int lane = 0; lane < 4; ++lane)
-      p[lane] = std::isfinite(residual[lane]) && range[lane] <= limit;
-  }
-};
-
-}  // namespace
 
 // The column pass's constants and outputs, copied out of the members so that the compiler
 // sees they do not alias the outputs (and keeps the constants in registers).
