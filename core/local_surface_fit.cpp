@@ -6,19 +6,10 @@
 #include <cstdlib>
 #include <limits>
 
+#include "core/window_monomials.hpp"
+
 namespace cosmos {
 namespace {
-
-constexpr int kBicubicTerms = 10;
-constexpr int kBiquadraticTerms = 6;
-
-// Monomials 1, u, v, u^2, uv, v^2, u^3, u^2 v, u v^2, v^3 in pixel steps (conditioning does
-// not depend on the pixel size; to_metric() rescales).
-Eigen::Matrix<double, kBicubicTerms, 1> monomials(double u, double v) {
-  Eigen::Matrix<double, kBicubicTerms, 1> m;
-  m << 1, u, v, u * u, u * v, v * v, u * u * u, u * u * v, u * v * v, v * v * v;
-  return m;
-}
 
 // Derivatives at (u, v) of the monomials, as rows z, z_u, z_v, z_uu/2, z_uv, z_vv/2 (the
 // quadric coefficients of the Taylor expansion at that point).
@@ -117,7 +108,7 @@ LocalSurfaceFitter::LocalSurfaceFitter(const SurfaceFitParameters& parameters,
   Eigen::MatrixXd design(samples, basis_size_);
   for (int dv = -half_window_, k = 0; dv <= half_window_; ++dv)
     for (int du = -half_window_; du <= half_window_; ++du, ++k)
-      design.row(k) = monomials(du, dv).head(basis_size_).transpose();
+      design.row(k) = window_monomials(du, dv).head(basis_size_).transpose();
   const Eigen::MatrixXd pseudo_inverse =
       (design.transpose() * design).ldlt().solve(design.transpose());
   for (int ov = -half_window_; ov <= half_window_; ++ov)

@@ -3,11 +3,11 @@
 #include <Eigen/Dense>
 #include <stdexcept>
 
+#include "core/window_monomials.hpp"
+
 namespace cosmos {
 namespace {
 
-constexpr int kBicubicTerms = 10;
-constexpr int kBiquadraticTerms = 6;
 constexpr int kMinBicubicSamples = 16;
 constexpr int kEntriesLog2 = 8;
 
@@ -23,10 +23,7 @@ PartialWindowKernels::PartialWindowKernels(int side, bool bicubic)
     throw std::invalid_argument("PartialWindowKernels: window side must be odd, 3..11");
   const int half = side / 2;
   for (int k = 0; k < side * side; ++k) {
-    const double u = k % side - half, v = k / side - half;
-    Eigen::Matrix<double, 10, 1> m;
-    // Monomials 1, u, v, u^2, uv, v^2, u^3, u^2 v, u v^2, v^3 in pixel steps.
-    m << 1, u, v, u * u, u * v, v * v, u * u * u, u * u * v, u * v * v, v * v * v;
+    const Eigen::Matrix<double, kBicubicTerms, 1> m = window_monomials(k % side - half, k / side - half);
     monomials_.push_back(m);
     outer_products_.push_back(m * m.transpose());
   }

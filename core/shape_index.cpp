@@ -32,12 +32,23 @@ inline float shape_index_of(float kappa1, float kappa2) {
   return 0.5f + angle / std::numbers::pi_v<float>;
 }
 
+// Eq. 3.3.
+inline float curvedness_of(float kappa1, float kappa2) {
+  return std::sqrt(0.5f * (kappa1 * kappa1 + kappa2 * kappa2));
+}
+
+// |(dS/dk1, dS/dk2)| from Eqs. 3.21-3.22 = 1 / (pi sqrt(k1^2 + k2^2)); infinite at k = 0
+// (IEEE division, no branch).
+inline float shape_index_sensitivity_of(float kappa1, float kappa2) {
+  return 1.0f / (std::numbers::pi_v<float> * std::sqrt(kappa1 * kappa1 + kappa2 * kappa2));
+}
+
 // One span of pixels, floats only (the caller widens and narrows the bytes), so that the
 // loop vectorizes. label_code receives the SurfaceLabel value.
 struct ClassifyConstants {
   float min_normal_z;
   float cell_area_mm2;
-  float planar_factor;  // pi * planar sensitivity threshold
+  float planar_sensitivity_mm;
 };
 
 void classify_span(int count, const ClassifyConstants& k, const float* __restrict usable_in,
@@ -52,14 +63,11 @@ void classify_span(int count, const ClassifyConstants& k, const float* __restric
     const bool usable = (usable_in[i] != 0.0f) & (normal_z >= k.min_normal_z);
     float kappa1, kappa2;
     principal_values(wxx[i], wxy[i], wxz[i], wyy[i], wyz[i], wzz[i], kappa1, kappa2);
-    const float magnitude2 = kappa1 * kappa1 + kappa2 * kappa2;
-    // Planar (Eqs. 3.21-3.22): sensitivity 1 / (pi |k|) above the threshold, i.e.
-    // pi |k| threshold < 1, which also holds for |k| = 0.
-    const bool planar = k.planar_factor * std::sqrt(magnitude2) < 1.0f;
+    const bool planar = shape_index_sensitivity_of(kappa1, kappa2) > k.planar_sensitivity_mm;
     const float curved_shape_index = shape_index_of(kappa1, kappa2);
     label_code[i] = usable ? (planar ? 2.0f : 1.0f) : 0.0f;  // kPlanar, kCurved, kInvalid
     shape[i] = usable ? (planar ? kPlanarShapeIndex : curved_shape_index) : nan;
-    curved[i] = usable ? std::sqrt(0.5f * magnitude2) : 0.0f;  // Eq. 3.3
+    curved[i] = usable ? curvedness_of(kappa1, kappa2) : 0.0f;
     // The cell's true surface area: its footprint divided by cos(tilt) = n_z.
     area[i] = usable ? k.cell_area_mm2 / normal_z : 0.0f;
   }
@@ -69,15 +77,10 @@ void classify_span(int count, const ClassifyConstants& k, const float* __restric
 
 float shape_index(float kappa1, float kappa2) { return shape_index_of(kappa1, kappa2); }
 
-float curvedness(float kappa1, float kappa2) {
-  return std::sqrt(0.5f * (kappa1 * kappa1 + kappa2 * kappa2));  // Eq. 3.3
-}
+float curvedness(float kappa1, float kappa2) { return curvedness_of(kappa1, kappa2); }
 
 float shape_index_sensitivity_mm(float kappa1, float kappa2) {
-  // |(dS/dk1, dS/dk2)| from Eqs. 3.21-3.22 = 1 / (pi sqrt(k1^2 + k2^2)).
-  const float magnitude = std::sqrt(kappa1 * kappa1 + kappa2 * kappa2);
-  if (magnitude == 0.0f) return std::numeric_limits<float>::infinity();
-  return 1.0f / (std::numbers::pi_v<float> * magnitude);
+  return shape_index_sensitivity_of(kappa1, kappa2);
 }
 
 ShapeIndexField make_shape_index_field(int width, int height) {
@@ -96,7 +99,7 @@ void classify_row(const DarbouxFrameField& frames, int row, double pixel_size_x_
   const ClassifyConstants constants{
       static_cast<float>(std::cos(parameters.max_tilt_deg * std::numbers::pi / 180.0)),
       static_cast<float>(pixel_size_x_mm * pixel_size_y_mm),
-      static_cast<float>(std::numbers::pi * parameters.planar_sensitivity_mm)};
+      static_cast<float>(parameters.planar_sensitivity_mm)};
   const std::size_t first = frames.valid.index(0, row);
   const int width = frames.width();
   // Chunks of the row: bytes are widened to floats first and the labels narrowed after.
