@@ -234,6 +234,38 @@ double median(std::vector<double> values) {
   return *middle;
 }
 
+// One whole-cell run of `parts` simulated parts of the regression catalog through a memory
+// publisher, latency_ms measured (not zeroed); paced at the default line rate or unpaced with
+// every part recognized. Appends each published pose's latency_ms; false after reporting an
+// error on `state`.
+bool run_bench_cell(benchmark::State& state, const BenchRecognition& recognition, int parts,
+                    bool paced, CellRunSummary& summary, std::vector<double>& latencies_ms,
+                    const PoseObserver& on_part = {}) {
+  try {
+    SimulatedSource source(regression_catalog(), ScannerParameters{}, source_settings(parts));
+    if (source.start() != SourceStatus::kOk) {
+      state.SkipWithError(std::string(source.last_error()).c_str());
+      return false;
+    }
+    ScanLoopSettings loop_settings;
+    loop_settings.wait_for_recognizer = !paced;  // unpaced: every part is recognized
+    ScanLoop loop(loop_settings);
+    MemoryPublisher publisher;
+    CellRunSettings settings;
+    settings.paced = paced;
+    settings.line_rate_hz = ScannerParameters{}.line_rate_hz;
+    settings.deterministic_output = false;
+    summary = run_cell(source, loop, recognition_context(recognition, loop), publisher, settings,
+                       on_part);
+    for (const PartPose& pose : publisher.poses) latencies_ms.push_back(pose.latency_ms);
+    return true;
+  } catch (const std::exception& e) {
+    state.SkipWithError(
+        (std::string(e.what()) + " (catalog meshes: scripts/fetch_catalog.sh)").c_str());
+    return false;
+  }
+}
+
 // latency_ms runs from the tracker completing the part (the row after its last one) to the
 // publisher sending its pose. Unpaced, this includes the part's recognition and, since the
 // acquisition thread then outruns the belt and completes parts faster than they are
@@ -248,32 +280,13 @@ void EndOfPartToPose(benchmark::State& state) {
   std::vector<double> latencies_ms, recognize_ms;
   std::int64_t parts_seen = 0;
   for (auto _ : state) {
-    try {
-      SimulatedSource source(regression_catalog(), ScannerParameters{},
-                             source_settings(kCellParts));
-      if (source.start() != SourceStatus::kOk) {
-        state.SkipWithError(std::string(source.last_error()).c_str());
-        return;
-      }
-      ScanLoopSettings loop_settings;
-      loop_settings.wait_for_recognizer = true;  // unpaced: every part is recognized
-      ScanLoop loop(loop_settings);
-      MemoryPublisher publisher;
-      CellRunSettings settings;
-      settings.paced = false;
-      settings.deterministic_output = false;  // latency_ms is measured, not zeroed
-      const CellRunSummary summary =
-          run_cell(source, loop, recognition_context(recognition, loop), publisher, settings,
-                   [&recognize_ms](const PartRecognition& part) {
-                     recognize_ms.push_back(part.result.timings.total_ms);
-                   });
-      parts_seen += summary.parts_seen;
-      for (const PartPose& pose : publisher.poses) latencies_ms.push_back(pose.latency_ms);
-    } catch (const std::exception& e) {
-      state.SkipWithError(
-          (std::string(e.what()) + " (catalog meshes: scripts/fetch_catalog.sh)").c_str());
+    CellRunSummary summary;
+    if (!run_bench_cell(state, recognition, kCellParts, false, summary, latencies_ms,
+                        [&recognize_ms](const PartRecognition& part) {
+                          recognize_ms.push_back(part.result.timings.total_ms);
+                        }))
       return;
-    }
+    parts_seen += summary.parts_seen;
   }
   state.counters["latency_p50_ms"] = median(latencies_ms);
   state.counters["latency_min_ms"] =
@@ -296,28 +309,8 @@ void PacedJitter(benchmark::State& state) {
   }
   CellRunSummary summary;
   std::vector<double> latencies_ms;
-  for (auto _ : state) {
-    try {
-      SimulatedSource source(regression_catalog(), ScannerParameters{},
-                             source_settings(kPacedParts));
-      if (source.start() != SourceStatus::kOk) {
-        state.SkipWithError(std::string(source.last_error()).c_str());
-        return;
-      }
-      ScanLoop loop{ScanLoopSettings{}};
-      MemoryPublisher publisher;
-      CellRunSettings settings;
-      settings.paced = true;
-      settings.line_rate_hz = ScannerParameters{}.line_rate_hz;
-      settings.deterministic_output = false;  // latency_ms is measured, not zeroed
-      summary = run_cell(source, loop, recognition_context(recognition, loop), publisher, settings);
-      for (const PartPose& pose : publisher.poses) latencies_ms.push_back(pose.latency_ms);
-    } catch (const std::exception& e) {
-      state.SkipWithError(
-          (std::string(e.what()) + " (catalog meshes: scripts/fetch_catalog.sh)").c_str());
-      return;
-    }
-  }
+  for (auto _ : state)
+    if (!run_bench_cell(state, recognition, kPacedParts, true, summary, latencies_ms)) return;
   state.counters["start_jitter_p50_us"] = summary.start_jitter_p50_us;
   state.counters["start_jitter_p99_us"] = summary.start_jitter_p99_us;
   state.counters["start_jitter_max_us"] = summary.start_jitter_max_us;
