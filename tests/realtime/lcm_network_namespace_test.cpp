@@ -212,6 +212,16 @@ class LcmNetworkNamespace : public ::testing::Test {
            << "` (needs root, or unprivileged user namespaces): " << result.err;
   }
 
+  // A script that ran to the end in the namespace, with what to read when it did not.
+  ::testing::AssertionResult script_succeeded(const testing::ShellResult& result) const {
+    if (!namespace_entered(result)) return namespace_entered(result);
+    if (result.exited && result.exit_code == 0) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure()
+           << (result.exited ? "exit code " + std::to_string(result.exit_code) : "killed")
+           << "; stages: " << testing::read_text_file(dir_ / "stages") << "stderr: " << result.err
+           << "logger: " << testing::read_text_file(dir_ / "logger.err");
+  }
+
   // Script lines: lo up with a multicast route, and lcm-logger recording the default URL into
   // `log` until the script exits.
   std::string loopback_with_logger(const fs::path& log) const {
@@ -253,11 +263,7 @@ TEST_F(LcmNetworkNamespace, LoggerAndListenerReceiveWhatAnotherProcessPublishes)
        << "echo published >> " << stages() << "\n"
        << "wait $listener || { cat " << quote(dir_ / "listen.err") << " >&2; exit 24; }\n";
   const testing::ShellResult result = run_in_namespace(body.str());
-  ASSERT_TRUE(namespace_entered(result));
-  ASSERT_TRUE(result.exited);
-  ASSERT_EQ(result.exit_code, 0) << "stages: " << testing::read_text_file(dir_ / "stages")
-                                 << "stderr: " << result.err
-                                 << "logger: " << testing::read_text_file(dir_ / "logger.err");
+  ASSERT_TRUE(script_succeeded(result));
 
   const std::vector<PartPose> poses = read_logged_poses(log);
   const std::vector<PartPose> expected_poses = published_poses();
@@ -313,11 +319,7 @@ TEST_F(LcmNetworkNamespace, LoggerRecordsTheCellsPosesAndStatus) {
        << "echo cell-ran >> " << stages() << "\n"
        << sync_until("cell-ended") << " || exit 24\n";
   const testing::ShellResult result = run_in_namespace(body.str());
-  ASSERT_TRUE(namespace_entered(result));
-  ASSERT_TRUE(result.exited);
-  ASSERT_EQ(result.exit_code, 0) << "stages: " << testing::read_text_file(dir_ / "stages")
-                                 << "stderr: " << result.err
-                                 << "logger: " << testing::read_text_file(dir_ / "logger.err");
+  ASSERT_TRUE(script_succeeded(result));
 
   const std::vector<PartPose> poses = read_logged_poses(log);
   ASSERT_EQ(poses.size(), 5u) << testing::read_text_file(dir_ / "cell.out");
