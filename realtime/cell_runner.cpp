@@ -151,7 +151,14 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
     }
     loop.process(profile);
     if (settings.publish_profiles) {
-      if (Profile* slot = recorded.try_begin_push()) {
+      Profile* slot = recorded.try_begin_push();
+      // Unpaced runs (replays, log recording) lose nothing: they wait for the publisher,
+      // which a loaded machine may starve for longer than the ring lasts.
+      while (!slot && !settings.paced) {
+        std::this_thread::sleep_for(kIdleWait);
+        slot = recorded.try_begin_push();
+      }
+      if (slot) {
         *slot = profile;
         recorded.commit_push();
       } else {

@@ -3,8 +3,9 @@
 //   acquisition  (the calling thread, with the real-time settings applied): source.next() →
 //                ScanLoop::process, paced on absolute deadlines at the line rate or unpaced;
 //                records per-profile processing time (from the profile in hand to
-//                its last stage, source time excluded); never waits on the others (except in
-//                the unpaced wait_for_recognizer mode, scan_loop.hpp).
+//                its last stage, source time excluded); never waits on the others when
+//                paced. Unpaced, it waits for room in the recorded-profile ring, and with
+//                wait_for_recognizer (scan_loop.hpp) for the recognizer.
 //   recognizer   completed parts → recognize_part → poses ring; gives the builder back.
 //   publisher    poses ring → Publisher; cell_status_t every status period; recorded
 //                profiles when asked.

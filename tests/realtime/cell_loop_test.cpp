@@ -106,7 +106,10 @@ TEST_F(CellLoop, ReplayedStreamGivesByteIdenticalPosesWithASlowWorker) {
     ScanLoop loop(loop_settings());
     CellRunSettings settings = unpaced(true);
     settings.publish_profiles = true;
-    run_cell(source, loop, context(loop), live, settings);
+    settings.profile_ring_slots = 8;  // a publisher far behind must still lose no profile
+    const CellRunSummary summary = run_cell(source, loop, context(loop), live, settings);
+    ASSERT_EQ(summary.profiles_dropped, 0);
+    ASSERT_EQ(static_cast<std::int64_t>(live.profiles.size()), summary.profiles);
     lcm::LogFile log(log_path.string(), "w");
     ASSERT_TRUE(log.good());
     std::int64_t event_number = 0;
