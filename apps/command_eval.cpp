@@ -1,7 +1,8 @@
 // `cosmos eval --modelbase FILE --catalog FILE --tests N --seed S [--noise-mm S]
-// [--unknown PART,...] [--threads N] --out DIR`: N seeded random-pose scans of the base's
-// parts and scans of parts it does not hold, each recognized; metrics.json and report.html
-// (apps/evaluation_report.hpp) in DIR.
+// [--unknown PART,...] [--only TEST,...] [--threads N] --out DIR`: N seeded random-pose scans
+// of the base's parts and scans of parts it does not hold, each recognized; metrics.json and
+// report.html (apps/evaluation_report.hpp) in DIR. --only re-runs chosen tests of the same
+// plan (by the numbers the report shows), e.g. the failures of a long run.
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <cstdio>
@@ -31,6 +32,7 @@ struct EvalOptions {
   std::uint64_t seed = 1;
   double noise_mm = -1;
   std::vector<std::string> unknown;
+  std::vector<int> only;
   int threads = 1;
   std::string out;
 };
@@ -68,6 +70,18 @@ std::vector<EvaluationRecord> run_tests(const std::vector<EvaluationTest>& plan,
   return records;
 }
 
+std::vector<EvaluationTest> chosen_tests(const std::vector<EvaluationTest>& plan,
+                                         const std::vector<int>& only) {
+  std::vector<EvaluationTest> chosen;
+  for (int index : only) {
+    if (index < 0 || index >= static_cast<int>(plan.size()))
+      throw InputError("eval: --only " + std::to_string(index) + " is not a test of this plan (0-" +
+                       std::to_string(plan.size() - 1) + ")");
+    chosen.push_back(plan[static_cast<std::size_t>(index)]);
+  }
+  return chosen;
+}
+
 void run(const EvalOptions& options) {
   if (options.model_base.empty()) throw InputError("eval: missing --modelbase FILE");
   if (options.out.empty()) throw InputError("eval: missing --out DIR");
@@ -85,7 +99,8 @@ void run(const EvalOptions& options) {
   if (options.noise_mm >= 0) scanner.z_noise_mm = options.noise_mm;
 
   const std::vector<EvaluationPart> parts = evaluation_parts(base, catalog, options.unknown);
-  const std::vector<EvaluationTest> plan = evaluation_plan(parts, options.tests, options.seed);
+  std::vector<EvaluationTest> plan = evaluation_plan(parts, options.tests, options.seed);
+  if (!options.only.empty()) plan = chosen_tests(plan, options.only);
   const Recognizer recognizer(base, cosmos, RecognitionParameters{});
   const std::vector<EvaluationRecord> records =
       run_tests(plan, parts, scanner, recognizer, base, options.threads);
@@ -126,6 +141,10 @@ void install(CLI::App& root) {
       ->add_option("--unknown", options->unknown, "catalog parts not in the base, to be rejected")
       ->delimiter(',')
       ->type_name("PART,...");
+  command
+      ->add_option("--only", options->only, "re-run only these tests of the plan (report numbers)")
+      ->delimiter(',')
+      ->type_name("TEST,...");
   command->add_option("--threads", options->threads, "worker threads (timings are per thread)")
       ->capture_default_str();
   command->add_option("--out", options->out, "output directory")->type_name("DIR");

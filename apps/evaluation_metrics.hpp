@@ -38,6 +38,7 @@
 namespace cosmos {
 
 struct EvaluationRecord {
+  int test_index = 0;   // the test's number in the seeded plan
   int truth_part = -1;  // catalog index of the scanned part
   std::string truth_name;
   bool truth_in_model_base = true;  // false for --unknown parts
@@ -45,7 +46,7 @@ struct EvaluationRecord {
   double diameter_mm = 0;           // part diameter (largest vertex distance) for ADD-S
   bool rejected = false;
   std::string rejection_reason;  // the recognizer's reason when rejected
-  int predicted_part = -1;  // catalog index, -1 when rejected
+  int predicted_part = -1;       // catalog index, -1 when rejected
   std::string predicted_name;
   // Rank (0-based) of the first cluster of the true part in the spectral cluster ranking
   // (SpectralViewSelector::rank_clusters), -1 when the part is not in the base.

@@ -235,7 +235,7 @@ std::string report_html(std::span<const EvaluationRecord> records, const Evaluat
     const RecordOutcome& outcome = metrics.outcomes[i];
     const bool symmetric_correct =
         outcome.status == RecordStatus::kCorrect && record.truth_symmetric;
-    html << "<tr><td>" << i << "</td><td>"
+    html << "<tr><td>" << record.test_index << "</td><td>"
          << html_escape(part_label(record.truth_part, record.truth_name, part_names)) << "</td><td>"
          << (record.rejected ? std::string("(rejected)")
                              : html_escape(part_label(record.predicted_part, record.predicted_name,

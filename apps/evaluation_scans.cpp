@@ -74,12 +74,13 @@ std::vector<EvaluationTest> evaluation_plan(const std::vector<EvaluationPart>& p
   std::uint64_t stream = kTestStreamBase;
   for (int i = 0; i < tests; ++i, ++stream) {
     const std::uint64_t test_seed = mix_seed(seed, stream);
-    plan.push_back({known[test_seed % known.size()], test_seed});
+    plan.push_back({known[test_seed % known.size()], test_seed, static_cast<int>(plan.size())});
   }
   const int per_part =
       (tests + static_cast<int>(known.size()) - 1) / static_cast<int>(known.size());
   for (int part : unknown)
-    for (int i = 0; i < per_part; ++i, ++stream) plan.push_back({part, mix_seed(seed, stream)});
+    for (int i = 0; i < per_part; ++i, ++stream)
+      plan.push_back({part, mix_seed(seed, stream), static_cast<int>(plan.size())});
   return plan;
 }
 
@@ -101,6 +102,7 @@ EvaluationRecord run_evaluation_test(const EvaluationTest& test,
   const RecognitionResult result = recognizer.recognize(image);
 
   EvaluationRecord record;
+  record.test_index = test.index;
   record.truth_part = part.catalog_index;
   record.truth_name = part.name;
   record.truth_in_model_base = part.base_index >= 0;

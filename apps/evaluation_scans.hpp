@@ -35,6 +35,7 @@ struct EvaluationPart {
 struct EvaluationTest {
   int part = 0;  // index into the parts list
   std::uint64_t seed = 0;
+  int index = 0;  // position in the whole plan: the number the report shows
 };
 
 // Known parts: the base's parts, found in the catalog by name (InputError naming a base part

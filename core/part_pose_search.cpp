@@ -28,6 +28,9 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
   // Coarse pass over the once-subdivided sphere's views when the part has them (its view
   // spacing, ~23 degrees, is within what the refinement below converges from); a base
   // without them is searched over every view.
+  RegistrationParameters coarse_registration = registration;
+  coarse_registration.max_iterations = parameters.coarse_iterations;
+  coarse_registration.max_correspondence_distance_mm = parameters.coarse_correspondence_distance_mm;
   bool has_coarse_views = false;
   for (const ModelBaseView& view : base.views)
     has_coarse_views |= view.part_index == part && is_once_subdivided_view(view.view_index);
@@ -37,10 +40,16 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
     if (has_coarse_views && !is_once_subdivided_view(view.view_index)) continue;
     const ModelSurface model(view);
     for (const PoseHypothesis& hypothesis :
-         rank_pose_hypotheses(scoring, model.points(), no_patch_pose, registration,
-                              {.in_plane_turns = parameters.in_plane_turns})) {
-      best.push_back({static_cast<int>(v), hypothesis.T_model_scene,
-                      hypothesis.score.truncated_mean_square_mm2});
+         pose_hypotheses(scoring, model.points(), no_patch_pose, registration,
+                         {.in_plane_turns = parameters.in_plane_turns})) {
+      RigidTransform T_model_scene = hypothesis.T_model_scene;
+      const RegistrationResult settled =
+          register_views(scoring, model.points(), T_model_scene, coarse_registration);
+      if (settled.status != RegistrationStatus::invalid_input)
+        T_model_scene = settled.T_model_scene;
+      best.push_back({static_cast<int>(v), T_model_scene,
+                      score_alignment(scoring, model.points(), T_model_scene, registration)
+                          .truncated_mean_square_mm2});
     }
     keep_best(refined_count);
   }

@@ -170,5 +170,45 @@ TEST_F(RecognitionRegression, BadModelBasesAreRefusedInOneLine) {
   expect_refused(dir_ / "missing.cmb", "missing.cmb");
 }
 
+// A report row's cells that do not depend on timing: number, truth, prediction, status and
+// the pose errors.
+std::string timeless_row(const std::string& html, int test) {
+  const std::string start = "<tr><td>" + std::to_string(test) + "</td>";
+  const std::size_t at = html.find(start, html.find("<h2>Tests</h2>"));
+  if (at == std::string::npos) return "";
+  std::size_t end = at;
+  for (int cell = 0; cell < 7 && end != std::string::npos; ++cell)
+    end = html.find("</td>", end + 1);
+  return end == std::string::npos ? "" : html.substr(at, end - at);
+}
+
+TEST_F(RecognitionRegression, OnlyRerunsChosenTestsOfTheSamePlan) {
+  const nlohmann::json& full = metrics();
+  ASSERT_TRUE(full.is_object());
+  const fs::path out = dir_ / "only";
+  const CliRun run = run_cosmos("eval --modelbase '" + base_.string() + "' --catalog '" +
+                                    std::string(COSMOS_SOURCE_DIR) +
+                                    "/config/parts.yaml' --tests 100 --seed 11 --unknown bunny "
+                                    "--only 57,3,100 --out '" +
+                                    out.string() + "'",
+                                dir_);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json chosen = nlohmann::json::parse(read_text(out / "metrics.json"));
+  EXPECT_EQ(chosen["tests"], 2);  // test 100 is the first scan of the unknown part
+  const std::string whole = read_text(eval_dir() / "report.html");
+  const std::string rerun = read_text(out / "report.html");
+  for (int test : {57, 3, 100}) {
+    EXPECT_NE(timeless_row(rerun, test), "") << test;
+    EXPECT_EQ(timeless_row(rerun, test), timeless_row(whole, test)) << test;
+  }
+  EXPECT_EQ(timeless_row(rerun, 4), "");
+  expect_one_line_failure(
+      run_cosmos("eval --modelbase '" + base_.string() + "' --catalog '" +
+                     std::string(COSMOS_SOURCE_DIR) +
+                     "/config/parts.yaml' --tests 100 --only 500 --out '" + out.string() + "'",
+                 dir_),
+      "--only 500 is not a test of this plan");
+}
+
 }  // namespace
 }  // namespace cosmos::testing
