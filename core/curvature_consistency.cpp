@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <utility>
 
@@ -186,6 +187,45 @@ std::array<int, 2> valid_column_extent(const std::uint8_t* valid, int width) {
   return {begin, end};
 }
 
+namespace {
+
+// The planes one smoothing pass reads and writes (two frame buffers and the positions) in one
+// allocation, each offset by a few more cache lines than the last. Separately allocated planes
+// of a size that is a multiple of 4 KB all start at the same offset in a page, so the same
+// pixel of the 21 planes falls into one 8-way L1 set, and the pass evicts its own rows
+// (measured: 121 ms for 15 iterations at 640 x 480; 109-113 ms staggered by 1 to 13 lines).
+class StaggeredPlanes {
+ public:
+  static constexpr int kFramePlanes = 2 * kFrameComponents;
+  explicit StaggeredPlanes(const DarbouxFrameField& field)
+      : plane_floats_(field.frame[0].size()),
+        stride_floats_(plane_floats_ + kStaggerFloats),
+        storage_(new float[(kFramePlanes + 3) * stride_floats_]) {
+    // Buffer 1 needs no copy: a pass writes every pixel of every row (smooth_frame_row).
+    for (int m = 0; m < kFrameComponents; ++m) copy_in(field.frame[m], frame(0, m));
+    for (int axis = 0; axis < 3; ++axis) copy_in(field.position_mm[axis], position(axis));
+  }
+  float* frame(int buffer, int component) { return plane(buffer * kFrameComponents + component); }
+  float* position(int axis) { return plane(kFramePlanes + axis); }
+  void copy_out(int buffer, DarbouxFrameField& field) {
+    for (int m = 0; m < kFrameComponents; ++m) {
+      const float* from = frame(buffer, m);
+      std::copy(from, from + plane_floats_, field.frame[m].data());
+    }
+  }
+
+ private:
+  static constexpr std::size_t kStaggerFloats = 16 * 5;  // 5 cache lines  // 5 cache lines
+  float* plane(int index) { return storage_.get() + index * stride_floats_; }
+  void copy_in(const PixelGrid<float>& grid, float* to) {
+    std::copy(grid.data(), grid.data() + plane_floats_, to);
+  }
+  std::size_t plane_floats_, stride_floats_;
+  std::unique_ptr<float[]> storage_;  // uninitialized: filled by copy_in and the passes
+};
+
+}  // namespace
+
 void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& parameters) {
   if (parameters.iterations <= 0) return;
   const int width = field.width(), height = field.height();
@@ -193,9 +233,11 @@ void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& para
   std::vector<std::array<int, 2>> extents(static_cast<std::size_t>(height));
   for (int row = 0; row < height; ++row)
     extents[static_cast<std::size_t>(row)] = valid_column_extent(field.valid.row(row), width);
-  std::array<PixelGrid<float>, kFrameComponents> scratch = field.frame;
-  auto* previous = &field.frame;
-  auto* next = &scratch;
+  StaggeredPlanes planes(field);
+  const auto at_row = [width](float* plane, int row) {
+    return plane + static_cast<std::size_t>(row) * width;
+  };
+  int previous = 0;
   for (int iteration = 0; iteration < parameters.iterations; ++iteration) {
     for (int row = 0; row < height; ++row) {
       SmoothingRowInput in;
@@ -207,16 +249,18 @@ void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& para
       const int rows[3] = {std::max(row - 1, 0), row, std::min(row + 1, height - 1)};
       for (int r = 0; r < 3; ++r) {
         for (int axis = 0; axis < 3; ++axis)
-          in.position[r][axis] = field.position_mm[axis].row(rows[r]);
-        for (int c = 0; c < kFrameComponents; ++c) in.frame[r][c] = (*previous)[c].row(rows[r]);
+          in.position[r][axis] = at_row(planes.position(axis), rows[r]);
+        for (int c = 0; c < kFrameComponents; ++c)
+          in.frame[r][c] = at_row(planes.frame(previous, c), rows[r]);
       }
       float* out[kFrameComponents];
-      for (int c = 0; c < kFrameComponents; ++c) out[c] = (*next)[c].row(row);
+      for (int c = 0; c < kFrameComponents; ++c)
+        out[c] = at_row(planes.frame(1 - previous, c), row);
       smooth_frame_row(in, out, parameters);
     }
-    std::swap(previous, next);
+    previous = 1 - previous;
   }
-  if (previous != &field.frame) field.frame = std::move(*previous);
+  planes.copy_out(previous, field);
 }
 
 }  // namespace cosmos
