@@ -1,93 +1,121 @@
 #include "core/part_pose_search.hpp"
 
 #include <algorithm>
+#include <numbers>
 
 #include "core/model_surface.hpp"
-#include "core/pose_hypotheses.hpp"
 
 namespace cosmos {
+namespace {
+
+struct FieldHypothesis {
+  RigidTransform T_part_scene;
+  double truncated_mean_square_mm2 = 0;
+};
+
+// Best first; ties keep generation order (views in base order, turns by angle).
+void keep_best(std::vector<FieldHypothesis>& hypotheses, std::size_t count) {
+  std::stable_sort(hypotheses.begin(), hypotheses.end(),
+                   [](const FieldHypothesis& a, const FieldHypothesis& b) {
+                     return a.truncated_mean_square_mm2 < b.truncated_mean_square_mm2;
+                   });
+  if (hypotheses.size() > count) hypotheses.resize(count);
+}
+
+// Turns about the viewing axis of every coarse view of the part (every view when the base
+// has no coarse ones), the scene's centroid on the view's: as part-frame poses.
+std::vector<FieldHypothesis> turned_view_starts(const RegistrationPoints& scoring,
+                                                const ModelBase& base, int part, int turns) {
+  bool has_coarse_views = false;
+  for (const ModelBaseView& view : base.views)
+    has_coarse_views |= view.part_index == part && is_once_subdivided_view(view.view_index);
+  const Eigen::Vector3d scene_centre = scoring.position_mm.rowwise().mean();
+  std::vector<FieldHypothesis> starts;
+  for (const ModelBaseView& view : base.views) {
+    if (view.part_index != part) continue;
+    if (has_coarse_views && !is_once_subdivided_view(view.view_index)) continue;
+    const ModelSurface model(view);
+    if (model.points().size() == 0) continue;
+    const Eigen::Vector3d model_centre = model.points().position_mm.rowwise().mean();
+    const RigidTransform T_part_view = view.T_scanner_part.inverse();
+    for (int k = 0; k < turns; ++k) {
+      const double angle_rad = 2.0 * std::numbers::pi * k / turns;
+      const Eigen::Matrix3d R = Eigen::AngleAxisd(angle_rad, Eigen::Vector3d::UnitZ()).matrix();
+      starts.push_back({T_part_view * RigidTransform{R, model_centre - R * scene_centre}, 0.0});
+    }
+  }
+  return starts;
+}
+
+// The part's view nearest to the direction the scanner looks from under T_part_scene.
+int nearest_view(const ModelBase& base, int part, const RigidTransform& T_part_scene) {
+  const Eigen::Vector3d seen_from_part = T_part_scene.rotation * Eigen::Vector3d::UnitZ();
+  int nearest = -1;
+  for (std::size_t v = 0; v < base.views.size(); ++v) {
+    const ModelBaseView& view = base.views[v];
+    if (view.part_index != part) continue;
+    if (nearest < 0 ||
+        view.direction_part.dot(seen_from_part) >
+            base.views[static_cast<std::size_t>(nearest)].direction_part.dot(seen_from_part))
+      nearest = static_cast<int>(v);
+  }
+  return nearest;
+}
+
+}  // namespace
 
 std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene,
                                                  const ModelBase& base, int part,
+                                                 const PartDistanceField& field,
                                                  const RegistrationParameters& registration,
                                                  const PartPoseSearchParameters& parameters) {
   std::vector<ViewPoseHypothesis> best;
   const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
-  if (scoring.size() == 0) return best;
-  const PoseFromPatches no_patch_pose;  // status too_few_pairs: not used
-  const auto keep_best = [&best](std::size_t count) {
-    // Ties by view, then generation order (stable).
-    std::stable_sort(best.begin(), best.end(),
-                     [](const ViewPoseHypothesis& a, const ViewPoseHypothesis& b) {
-                       return a.truncated_mean_square_mm2 < b.truncated_mean_square_mm2;
-                     });
-    if (best.size() > count) best.resize(count);
-  };
-  const auto refined_count =
-      static_cast<std::size_t>(std::max(parameters.refined_hypotheses, parameters.best_hypotheses));
-  // Coarse pass over the once-subdivided sphere's views when the part has them (its view
-  // spacing, ~23 degrees, is within what the refinement below converges from); a base
-  // without them is searched over every view.
-  RegistrationParameters coarse_registration = registration;
-  coarse_registration.max_iterations = parameters.coarse_iterations;
-  coarse_registration.max_correspondence_distance_mm = parameters.coarse_correspondence_distance_mm;
-  bool has_coarse_views = false;
-  for (const ModelBaseView& view : base.views)
-    has_coarse_views |= view.part_index == part && is_once_subdivided_view(view.view_index);
-  for (std::size_t v = 0; v < base.views.size(); ++v) {
-    const ModelBaseView& view = base.views[v];
-    if (view.part_index != part) continue;
-    if (has_coarse_views && !is_once_subdivided_view(view.view_index)) continue;
-    const ModelSurface model(view);
-    for (const PoseHypothesis& hypothesis :
-         pose_hypotheses(scoring, model.points(), no_patch_pose, registration,
-                         {.in_plane_turns = parameters.in_plane_turns})) {
-      RigidTransform T_model_scene = hypothesis.T_model_scene;
-      const RegistrationResult settled =
-          register_views(scoring, model.points(), T_model_scene, coarse_registration);
-      if (settled.status != RegistrationStatus::invalid_input)
-        T_model_scene = settled.T_model_scene;
-      best.push_back({static_cast<int>(v), T_model_scene,
-                      score_alignment(scoring, model.points(), T_model_scene, registration)
-                          .truncated_mean_square_mm2});
+  if (scoring.size() == 0 || field.empty()) return best;
+  const double truncation_mm = parameters.field_truncation_mm;
+  const auto rescore = [&](std::vector<FieldHypothesis>& hypotheses, int iterations) {
+    for (FieldHypothesis& hypothesis : hypotheses) {
+      if (iterations > 0)
+        hypothesis.T_part_scene = align_in_distance_field(scoring, field, hypothesis.T_part_scene,
+                                                          iterations, truncation_mm);
+      hypothesis.truncated_mean_square_mm2 =
+          field_truncated_mean_square_mm2(scoring, field, hypothesis.T_part_scene, truncation_mm);
     }
-    keep_best(refined_count);
-  }
+  };
+  // Against the whole part, in stages: every start as it is, the best after one alignment
+  // step, the best of those after a few more.
+  std::vector<FieldHypothesis> hypotheses =
+      turned_view_starts(scoring, base, part, parameters.in_plane_turns);
+  rescore(hypotheses, 0);
+  keep_best(hypotheses, static_cast<std::size_t>(parameters.field_candidates));
+  rescore(hypotheses, 1);
+  keep_best(hypotheses, static_cast<std::size_t>(parameters.field_aligned));
+  rescore(hypotheses, parameters.field_iterations);
+  keep_best(hypotheses, static_cast<std::size_t>(parameters.refined_hypotheses));
+
+  // Then onto the part's view nearest to each pose's viewing direction, registered there
+  // (ch. 6) on the subset, and ranked against the whole part again.
   RegistrationParameters short_registration = registration;
   short_registration.max_iterations = parameters.refinement_iterations;
-  const auto refine = [&](ViewPoseHypothesis& hypothesis, int view,
-                          const RigidTransform& T_model_scene) {
-    const ModelSurface model(base.views[static_cast<std::size_t>(view)]);
+  for (const FieldHypothesis& hypothesis : hypotheses) {
+    const int view = nearest_view(base, part, hypothesis.T_part_scene);
+    const ModelBaseView& model_view = base.views[static_cast<std::size_t>(view)];
+    const ModelSurface model(model_view);
+    const RigidTransform T_model_scene = model_view.T_scanner_part * hypothesis.T_part_scene;
     const RegistrationResult refined =
         register_views(scoring, model.points(), T_model_scene, short_registration);
-    if (refined.status == RegistrationStatus::invalid_input) return;
-    const AlignmentScore score =
-        score_alignment(scoring, model.points(), refined.T_model_scene, registration);
-    if (score.truncated_mean_square_mm2 < hypothesis.truncated_mean_square_mm2) {
-      hypothesis.view = view;
-      hypothesis.T_model_scene = refined.T_model_scene;
-      hypothesis.truncated_mean_square_mm2 = score.truncated_mean_square_mm2;
-    }
-  };
-  for (ViewPoseHypothesis& hypothesis : best) {
-    refine(hypothesis, hypothesis.view, hypothesis.T_model_scene);
-    // Then onto the part's view nearest to the viewing direction that pose implies.
-    const ModelBaseView& from = base.views[static_cast<std::size_t>(hypothesis.view)];
-    const RigidTransform T_part_scene = from.T_scanner_part.inverse() * hypothesis.T_model_scene;
-    const Eigen::Vector3d seen_from_part = T_part_scene.rotation * Eigen::Vector3d::UnitZ();
-    int nearest = hypothesis.view;
-    for (std::size_t v = 0; v < base.views.size(); ++v) {
-      const ModelBaseView& view = base.views[v];
-      if (view.part_index == part &&
-          view.direction_part.dot(seen_from_part) >
-              base.views[static_cast<std::size_t>(nearest)].direction_part.dot(seen_from_part))
-        nearest = static_cast<int>(v);
-    }
-    if (nearest != hypothesis.view)
-      refine(hypothesis, nearest,
-             base.views[static_cast<std::size_t>(nearest)].T_scanner_part * T_part_scene);
+    const RigidTransform& T =
+        refined.status == RegistrationStatus::invalid_input ? T_model_scene : refined.T_model_scene;
+    best.push_back({view, T,
+                    field_truncated_mean_square_mm2(
+                        scoring, field, model_view.T_scanner_part.inverse() * T, truncation_mm)});
   }
-  keep_best(static_cast<std::size_t>(parameters.best_hypotheses));
+  std::stable_sort(best.begin(), best.end(),
+                   [](const ViewPoseHypothesis& a, const ViewPoseHypothesis& b) {
+                     return a.truncated_mean_square_mm2 < b.truncated_mean_square_mm2;
+                   });
+  if (best.size() > static_cast<std::size_t>(parameters.best_hypotheses))
+    best.resize(static_cast<std::size_t>(parameters.best_hypotheses));
   return best;
 }
 

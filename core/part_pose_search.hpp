@@ -4,17 +4,18 @@
 // orientation but not very selective among the views of one part: views with similar spectra
 // lie all over the view sphere, so the few selected views may all be 40 degrees or more from
 // the scene's true viewing direction, beyond what registration (ch. 6) converges from. Here
-// every view of the part proposes initial poses (principal axes, §6.7.2, and turns about the
-// viewing axis, pose_hypotheses.hpp), settled by a registration iteration and scored by one
-// correspondence pass on a small, evenly spread subset of the scene's control points. That
-// ranks a start 15 degrees off the truth little better than a wrong view's: the best
-// `refined_hypotheses` therefore take a few
-// registration iterations on the subset first and are ranked again, and only the best few of
-// those are returned for full registration. Budgets of scored hypotheses (views x turns) and
-// of subset iterations bound the work.
+// every coarse view of the part proposes starts (turns about the viewing axis, the centroids
+// aligned), which are scored and aligned against the part's distance field
+// (part_distance_field.hpp) on a small, evenly spread subset of the scene's control points,
+// in stages that keep fewer and align more. Against one view a start near the truth scored
+// no better than a wrong one (its view, up to 15 degrees away, lacks much of what the scene
+// shows; its centroid is 10-40 mm off); against the whole part it does. The best poses then
+// move onto the part's view nearest to their viewing direction, take a few registration
+// iterations there (ch. 6) and are ranked by that view's fit. Every stage has a fixed budget.
 #include <vector>
 
 #include "core/model_base.hpp"
+#include "core/part_distance_field.hpp"
 #include "core/registration_points.hpp"
 #include "core/rigid_transform.hpp"
 #include "core/view_registration.hpp"
@@ -22,17 +23,15 @@
 namespace cosmos {
 
 struct PartPoseSearchParameters {
-  // Scene control points used to score a hypothesis: 100 rank as well as 200 (measured on
-  // the 20-part catalog), at half the cost.
+  // Scene control points used to score and align a hypothesis: 100 rank as well as 200
+  // (measured on the 20-part catalog), at half the cost.
   int scoring_points = 100;
   int in_plane_turns = 12;
-  // Registration iterations each start takes before it is scored, with correspondences up to
-  // the coarse distance: a centroid-aligned turn is often 10 mm off in translation, which one
-  // correspondence pass at the fine 5 mm scores as badly as a wrong view. One iteration fixed
-  // 6 of the 27 failures of the 1,000-scan acceptance run (2 and 3 fixed no more).
-  int coarse_iterations = 1;
-  double coarse_correspondence_distance_mm = 10.0;
-  int refined_hypotheses = 32;  // registered on the subset before the final ranking
+  double field_truncation_mm = 10.0;  // farther points count as this far, and do not align
+  int field_candidates = 512;         // kept after scoring the starts as they are
+  int field_aligned = 128;            // kept after one alignment step
+  int field_iterations = 3;           // alignment steps for those
+  int refined_hypotheses = 32;        // registered on their nearest view
   int refinement_iterations = 8;
   int best_hypotheses = 4;  // returned, best first
 };
@@ -43,8 +42,10 @@ struct ViewPoseHypothesis {
   double truncated_mean_square_mm2 = 0;
 };
 
+// `field`: the part's distance field (build_part_distance_field).
 std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene,
                                                  const ModelBase& base, int part,
+                                                 const PartDistanceField& field,
                                                  const RegistrationParameters& registration,
                                                  const PartPoseSearchParameters& parameters);
 

@@ -15,11 +15,11 @@ Eigen::Vector3d centroid_mm(const RegistrationPoints& points) {
 
 }  // namespace
 
-std::vector<PoseHypothesis> pose_hypotheses(const RegistrationPoints& scene,
-                                            const RegistrationPoints& model,
-                                            const PoseFromPatches& from_patches,
-                                            const RegistrationParameters& registration,
-                                            const PoseHypothesisParameters& parameters) {
+std::vector<PoseHypothesis> rank_pose_hypotheses(const RegistrationPoints& scene,
+                                                 const RegistrationPoints& model,
+                                                 const PoseFromPatches& from_patches,
+                                                 const RegistrationParameters& registration,
+                                                 const PoseHypothesisParameters& parameters) {
   std::vector<PoseHypothesis> hypotheses;
   if (scene.size() == 0 || model.size() == 0) return hypotheses;
   if (from_patches.status == PatchPoseStatus::ok)
@@ -35,16 +35,6 @@ std::vector<PoseHypothesis> pose_hypotheses(const RegistrationPoints& scene,
     hypotheses.push_back(
         {PoseHypothesisSource::kInPlaneTurn, {R, model_centre - R * scene_centre}, {}});
   }
-  return hypotheses;
-}
-
-std::vector<PoseHypothesis> rank_pose_hypotheses(const RegistrationPoints& scene,
-                                                 const RegistrationPoints& model,
-                                                 const PoseFromPatches& from_patches,
-                                                 const RegistrationParameters& registration,
-                                                 const PoseHypothesisParameters& parameters) {
-  std::vector<PoseHypothesis> hypotheses =
-      pose_hypotheses(scene, model, from_patches, registration, parameters);
   for (PoseHypothesis& hypothesis : hypotheses)
     hypothesis.score = score_alignment(scene, model, hypothesis.T_model_scene, registration);
   std::stable_sort(hypotheses.begin(), hypotheses.end(),

@@ -27,14 +27,6 @@ struct PoseHypothesisParameters {
   int in_plane_turns = 12;  // evenly spaced turns about +z, 0 = none
 };
 
-// The hypotheses in generation order (patch groups, principal axes, turns by angle), unscored.
-// `from_patches` is used when its status is ok.
-std::vector<PoseHypothesis> pose_hypotheses(const RegistrationPoints& scene,
-                                            const RegistrationPoints& model,
-                                            const PoseFromPatches& from_patches,
-                                            const RegistrationParameters& registration,
-                                            const PoseHypothesisParameters& parameters);
-
 // Hypotheses sorted by truncated mean square (ascending), ties in generation order (patch
 // groups, principal axes, turns by angle). `from_patches` is used when its status is ok.
 std::vector<PoseHypothesis> rank_pose_hypotheses(const RegistrationPoints& scene,

@@ -69,7 +69,10 @@ Recognizer::Recognizer(const ModelBase& model_base, const CosmosParameters& cosm
     : model_base_(model_base),
       cosmos_(cosmos),
       parameters_(parameters),
-      selector_(model_base, parameters.selection) {}
+      selector_(model_base, parameters.selection) {
+  for (int part = 0; part < static_cast<int>(model_base.parts.size()); ++part)
+    part_fields_.push_back(build_part_distance_field(model_base, part, parameters.field));
+}
 
 RecognitionResult Recognizer::recognize(const RangeImage& scene) const {
   const Clock::time_point start = Clock::now();
@@ -199,8 +202,9 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
     for (const ModelBaseView& view : model_base_.views)
       result.views_examined += view.part_index == part;
     Clock::time_point stage = Clock::now();
-    const std::vector<ViewPoseHypothesis> hypotheses = search_part_pose(
-        scene_points.all, model_base_, part, parameters_.registration, parameters_.search);
+    const std::vector<ViewPoseHypothesis> hypotheses =
+        search_part_pose(scene_points.all, model_base_, part, part_field(part),
+                         parameters_.registration, parameters_.search);
     result.timings.registration_ms += elapsed_ms(stage);
     for (const ViewPoseHypothesis& hypothesis : hypotheses) {
       const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(hypothesis.view)];

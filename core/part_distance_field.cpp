@@ -1,0 +1,194 @@
+#include "core/part_distance_field.hpp"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/model_surface.hpp"
+
+namespace cosmos {
+namespace {
+
+// Felzenszwalb & Huttenlocher's 1-D squared distance transform of the n samples f[i * step]
+// (in place): the lower envelope of the parabolas (q - i)^2 + f(i).
+void squared_distance_1d(float* f, int n, std::ptrdiff_t step, std::vector<float>& line,
+                         std::vector<int>& apex, std::vector<double>& boundary) {
+  for (int i = 0; i < n; ++i) line[static_cast<std::size_t>(i)] = f[i * step];
+  int k = 0;
+  apex[0] = 0;
+  boundary[0] = -std::numeric_limits<double>::infinity();
+  boundary[1] = std::numeric_limits<double>::infinity();
+  const auto intersection = [&](int q, int p) {
+    return ((line[static_cast<std::size_t>(q)] + static_cast<double>(q) * q) -
+            (line[static_cast<std::size_t>(p)] + static_cast<double>(p) * p)) /
+           (2.0 * (q - p));
+  };
+  for (int q = 1; q < n; ++q) {
+    double s = intersection(q, apex[static_cast<std::size_t>(k)]);
+    while (s <= boundary[static_cast<std::size_t>(k)]) {
+      --k;
+      s = intersection(q, apex[static_cast<std::size_t>(k)]);
+    }
+    ++k;
+    apex[static_cast<std::size_t>(k)] = q;
+    boundary[static_cast<std::size_t>(k)] = s;
+    boundary[static_cast<std::size_t>(k) + 1] = std::numeric_limits<double>::infinity();
+  }
+  k = 0;
+  for (int q = 0; q < n; ++q) {
+    while (boundary[static_cast<std::size_t>(k) + 1] < q) ++k;
+    const int p = apex[static_cast<std::size_t>(k)];
+    f[q * step] = static_cast<float>(static_cast<double>(q - p) * (q - p) +
+                                     line[static_cast<std::size_t>(p)]);
+  }
+}
+
+}  // namespace
+
+PartDistanceField::PartDistanceField(const std::vector<Eigen::Vector3d>& points_part_mm,
+                                     const PartDistanceFieldParameters& parameters) {
+  if (points_part_mm.empty() || !(parameters.voxel_mm > 0)) return;
+  voxel_mm_ = parameters.voxel_mm;
+  Eigen::Vector3d low = points_part_mm.front(), high = low;
+  for (const Eigen::Vector3d& p : points_part_mm) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  origin_mm_ = low - Eigen::Vector3d::Constant(parameters.margin_mm);
+  for (int axis = 0; axis < 3; ++axis)
+    size_[axis] = 1 + static_cast<int>(std::ceil(
+                          (high[axis] - low[axis] + 2 * parameters.margin_mm) / voxel_mm_));
+  const std::size_t voxels = static_cast<std::size_t>(size_[0]) * size_[1] * size_[2];
+  // Far, in squared voxels: more than any distance in the grid, small enough to add to.
+  const float far = 4.0f * static_cast<float>(size_[0] + size_[1] + size_[2]) *
+                    static_cast<float>(size_[0] + size_[1] + size_[2]);
+  distance_mm_.assign(voxels, far);
+  const auto voxel_index = [&](int x, int y, int z) {
+    return (static_cast<std::size_t>(z) * size_[1] + y) * size_[0] + x;
+  };
+  for (const Eigen::Vector3d& p : points_part_mm) {
+    const Eigen::Vector3d u = (p - origin_mm_) / voxel_mm_;
+    distance_mm_[voxel_index(static_cast<int>(std::lround(u.x())),
+                             static_cast<int>(std::lround(u.y())),
+                             static_cast<int>(std::lround(u.z())))] = 0.0f;
+  }
+  const int longest = std::max({size_[0], size_[1], size_[2]});
+  std::vector<float> line(static_cast<std::size_t>(longest));
+  std::vector<int> apex(static_cast<std::size_t>(longest));
+  std::vector<double> boundary(static_cast<std::size_t>(longest) + 1);
+  const std::ptrdiff_t step_y = size_[0], step_z = static_cast<std::ptrdiff_t>(size_[0]) * size_[1];
+  for (int z = 0; z < size_[2]; ++z)
+    for (int y = 0; y < size_[1]; ++y)
+      squared_distance_1d(&distance_mm_[voxel_index(0, y, z)], size_[0], 1, line, apex, boundary);
+  for (int z = 0; z < size_[2]; ++z)
+    for (int x = 0; x < size_[0]; ++x)
+      squared_distance_1d(&distance_mm_[voxel_index(x, 0, z)], size_[1], step_y, line, apex,
+                          boundary);
+  for (int y = 0; y < size_[1]; ++y)
+    for (int x = 0; x < size_[0]; ++x)
+      squared_distance_1d(&distance_mm_[voxel_index(x, y, 0)], size_[2], step_z, line, apex,
+                          boundary);
+  for (float& d : distance_mm_) d = std::sqrt(d) * static_cast<float>(voxel_mm_);
+}
+
+double PartDistanceField::distance_mm(const Eigen::Vector3d& point_part_mm) const {
+  Eigen::Vector3d unused;
+  return distance_mm(point_part_mm, unused);
+}
+
+double PartDistanceField::distance_mm(const Eigen::Vector3d& point_part_mm,
+                                      Eigen::Vector3d& gradient) const {
+  gradient.setZero();
+  if (distance_mm_.empty()) return std::numeric_limits<double>::infinity();
+  const Eigen::Vector3d u = (point_part_mm - origin_mm_) / voxel_mm_;
+  Eigen::Vector3d clamped;
+  for (int axis = 0; axis < 3; ++axis)
+    clamped[axis] = std::clamp(u[axis], 0.0, static_cast<double>(size_[axis] - 1) - 1e-9);
+  const double outside_mm = (u - clamped).norm() * voxel_mm_;
+  const int x = static_cast<int>(clamped.x()), y = static_cast<int>(clamped.y()),
+            z = static_cast<int>(clamped.z());
+  const double fx = clamped.x() - x, fy = clamped.y() - y, fz = clamped.z() - z;
+  const int x1 = std::min(x + 1, size_[0] - 1), y1 = std::min(y + 1, size_[1] - 1),
+            z1 = std::min(z + 1, size_[2] - 1);
+  const auto at = [&](int xi, int yi, int zi) -> double {
+    return distance_mm_[(static_cast<std::size_t>(zi) * size_[1] + yi) * size_[0] + xi];
+  };
+  const double c000 = at(x, y, z), c100 = at(x1, y, z), c010 = at(x, y1, z), c110 = at(x1, y1, z);
+  const double c001 = at(x, y, z1), c101 = at(x1, y, z1), c011 = at(x, y1, z1),
+               c111 = at(x1, y1, z1);
+  const double c00 = c000 + fx * (c100 - c000), c10 = c010 + fx * (c110 - c010);
+  const double c01 = c001 + fx * (c101 - c001), c11 = c011 + fx * (c111 - c011);
+  const double c0 = c00 + fy * (c10 - c00), c1 = c01 + fy * (c11 - c01);
+  if (outside_mm == 0) {
+    const double dx0 = (c100 - c000) + fy * ((c110 - c010) - (c100 - c000));
+    const double dx1 = (c101 - c001) + fy * ((c111 - c011) - (c101 - c001));
+    gradient.x() = (dx0 + fz * (dx1 - dx0)) / voxel_mm_;
+    gradient.y() = ((c10 - c00) + fz * ((c11 - c01) - (c10 - c00))) / voxel_mm_;
+    gradient.z() = (c1 - c0) / voxel_mm_;
+  }
+  return c0 + fz * (c1 - c0) + outside_mm;
+}
+
+PartDistanceField build_part_distance_field(const ModelBase& base, int part,
+                                            const PartDistanceFieldParameters& parameters) {
+  std::vector<Eigen::Vector3d> points_part_mm;
+  for (const ModelBaseView& view : base.views) {
+    if (view.part_index != part) continue;
+    const ModelSurface surface(view);
+    const RigidTransform T_part_view = view.T_scanner_part.inverse();
+    const Eigen::Matrix3Xd& position = surface.points().position_mm;
+    for (Eigen::Index i = 0; i < position.cols(); ++i)
+      points_part_mm.push_back(T_part_view.apply(position.col(i)));
+  }
+  return PartDistanceField(points_part_mm, parameters);
+}
+
+double field_truncated_mean_square_mm2(const RegistrationPoints& scene,
+                                       const PartDistanceField& field,
+                                       const RigidTransform& T_part_scene, double truncation_mm) {
+  if (scene.size() == 0) return truncation_mm * truncation_mm;
+  const double limit2 = truncation_mm * truncation_mm;
+  double sum = 0;
+  for (int i = 0; i < scene.size(); ++i) {
+    const double d = field.distance_mm(T_part_scene.apply(scene.position_mm.col(i)));
+    sum += std::min(d * d, limit2);
+  }
+  return sum / scene.size();
+}
+
+RigidTransform align_in_distance_field(const RegistrationPoints& scene,
+                                       const PartDistanceField& field,
+                                       const RigidTransform& T_part_scene, int iterations,
+                                       double truncation_mm) {
+  RigidTransform T = T_part_scene;
+  using Matrix6d = Eigen::Matrix<double, 6, 6>;
+  using Vector6d = Eigen::Matrix<double, 6, 1>;
+  for (int iteration = 0; iteration < iterations; ++iteration) {
+    Matrix6d normal = Matrix6d::Zero();
+    Vector6d right = Vector6d::Zero();
+    int used = 0;
+    for (int i = 0; i < scene.size(); ++i) {
+      const Eigen::Vector3d q = T.apply(scene.position_mm.col(i));
+      Eigen::Vector3d gradient;
+      const double d = field.distance_mm(q, gradient);
+      if (!(d < truncation_mm) || gradient.squaredNorm() < 1e-6) continue;
+      // d(q + omega x q + t) ~ d + g . t + (q x g) . omega
+      const Eigen::Vector3d moment = q.cross(gradient);
+      Vector6d jacobian;
+      jacobian << moment.x(), moment.y(), moment.z(), gradient.x(), gradient.y(), gradient.z();
+      normal.selfadjointView<Eigen::Lower>().rankUpdate(jacobian);
+      right -= jacobian * d;
+      ++used;
+    }
+    if (used < 6) break;
+    // A little damping keeps the directions the points do not constrain where they are.
+    normal.diagonal().array() += 1e-6 * normal.diagonal().maxCoeff() + 1e-9;
+    const Vector6d step = normal.selfadjointView<Eigen::Lower>().ldlt().solve(right);
+    if (!step.allFinite()) break;
+    T = (transform_from_increment(step.head<3>(), step.tail<3>()) * T).normalized();
+  }
+  return T;
+}
+
+}  // namespace cosmos
