@@ -141,10 +141,10 @@ void BM_FallbackPoseSearchOnePart(benchmark::State& state) {
   if (!fixture) return;
   const RecognitionParameters& parameters = fixture->parameters();
   over_scans(state, *fixture, [&](const TestScan& scan) {
-    benchmark::DoNotOptimize(search_part_pose(scan.scene_points, fixture->base(),
-                                              scan.searched_part,
-                                              fixture->recognizer().part_field(scan.searched_part),
-                                              parameters.registration, parameters.search));
+    benchmark::DoNotOptimize(
+        search_part_pose(scan.scene_points, fixture->base(), scan.searched_part,
+                         fixture->recognizer().part_search_model(scan.searched_part),
+                         parameters.registration, parameters.search));
   });
 }
 BENCHMARK(BM_FallbackPoseSearchOnePart)->Unit(benchmark::kMillisecond)->Iterations(5);

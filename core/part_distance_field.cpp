@@ -5,8 +5,6 @@
 #include <cmath>
 #include <limits>
 
-#include "core/model_surface.hpp"
-
 namespace cosmos {
 namespace {
 
@@ -128,20 +126,6 @@ double PartDistanceField::distance_mm(const Eigen::Vector3d& point_part_mm,
     gradient.z() = (c1 - c0) / voxel_mm_;
   }
   return c0 + fz * (c1 - c0) + outside_mm;
-}
-
-PartDistanceField build_part_distance_field(const ModelBase& base, int part,
-                                            const PartDistanceFieldParameters& parameters) {
-  std::vector<Eigen::Vector3d> points_part_mm;
-  for (const ModelBaseView& view : base.views) {
-    if (view.part_index != part) continue;
-    const ModelSurface surface(view);
-    const RigidTransform T_part_view = view.T_scanner_part.inverse();
-    const Eigen::Matrix3Xd& position = surface.points().position_mm;
-    for (Eigen::Index i = 0; i < position.cols(); ++i)
-      points_part_mm.push_back(T_part_view.apply(position.col(i)));
-  }
-  return PartDistanceField(points_part_mm, parameters);
 }
 
 double field_truncated_mean_square_mm2(const RegistrationPoints& scene,

@@ -13,7 +13,6 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "core/model_base.hpp"
 #include "core/registration_points.hpp"
 #include "core/rigid_transform.hpp"
 
@@ -44,10 +43,6 @@ class PartDistanceField {
   int size_[3] = {0, 0, 0};
   std::vector<float> distance_mm_;  // x fastest
 };
-
-// The field of base part `part` from the control points of all its views.
-PartDistanceField build_part_distance_field(const ModelBase& base, int part,
-                                            const PartDistanceFieldParameters& parameters);
 
 // Mean over the scene points of min(d^2, truncation^2), d their distance to the part surface
 // under T_part_scene.

@@ -22,21 +22,16 @@ void keep_best(std::vector<FieldHypothesis>& hypotheses, std::size_t count) {
   if (hypotheses.size() > count) hypotheses.resize(count);
 }
 
-// Turns about the viewing axis of every coarse view of the part (every view when the base
-// has no coarse ones), the scene's centroid on the view's: as part-frame poses.
+// Turns about the viewing axis of every start view, the scene's centroid on the view's: as
+// part-frame poses.
 std::vector<FieldHypothesis> turned_view_starts(const RegistrationPoints& scoring,
-                                                const ModelBase& base, int part, int turns) {
-  bool has_coarse_views = false;
-  for (const ModelBaseView& view : base.views)
-    has_coarse_views |= view.part_index == part && is_once_subdivided_view(view.view_index);
+                                                const ModelBase& base, const PartSearchModel& model,
+                                                int turns) {
   const Eigen::Vector3d scene_centre = scoring.position_mm.rowwise().mean();
   std::vector<FieldHypothesis> starts;
-  for (const ModelBaseView& view : base.views) {
-    if (view.part_index != part) continue;
-    if (has_coarse_views && !is_once_subdivided_view(view.view_index)) continue;
-    const ModelSurface model(view);
-    if (model.points().size() == 0) continue;
-    const Eigen::Vector3d model_centre = model.points().position_mm.rowwise().mean();
+  for (std::size_t s = 0; s < model.start_views.size(); ++s) {
+    const ModelBaseView& view = base.views[static_cast<std::size_t>(model.start_views[s])];
+    const Eigen::Vector3d& model_centre = model.start_view_centroid_mm[s];
     const RigidTransform T_part_view = view.T_scanner_part.inverse();
     for (int k = 0; k < turns; ++k) {
       const double angle_rad = 2.0 * std::numbers::pi * k / turns;
@@ -64,13 +59,38 @@ int nearest_view(const ModelBase& base, int part, const RigidTransform& T_part_s
 
 }  // namespace
 
+PartSearchModel build_part_search_model(const ModelBase& base, int part,
+                                        const PartDistanceFieldParameters& parameters) {
+  PartSearchModel model;
+  bool has_coarse_views = false;
+  for (const ModelBaseView& view : base.views)
+    has_coarse_views |= view.part_index == part && is_once_subdivided_view(view.view_index);
+  std::vector<Eigen::Vector3d> points_part_mm;
+  for (std::size_t v = 0; v < base.views.size(); ++v) {
+    const ModelBaseView& view = base.views[v];
+    if (view.part_index != part) continue;
+    const ModelSurface surface(view);
+    const Eigen::Matrix3Xd& position = surface.points().position_mm;
+    if (position.cols() == 0) continue;
+    const RigidTransform T_part_view = view.T_scanner_part.inverse();
+    for (Eigen::Index i = 0; i < position.cols(); ++i)
+      points_part_mm.push_back(T_part_view.apply(position.col(i)));
+    if (has_coarse_views && !is_once_subdivided_view(view.view_index)) continue;
+    model.start_views.push_back(static_cast<int>(v));
+    model.start_view_centroid_mm.push_back(position.rowwise().mean());
+  }
+  model.field = PartDistanceField(points_part_mm, parameters);
+  return model;
+}
+
 std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene,
                                                  const ModelBase& base, int part,
-                                                 const PartDistanceField& field,
+                                                 const PartSearchModel& model,
                                                  const RegistrationParameters& registration,
                                                  const PartPoseSearchParameters& parameters) {
   std::vector<ViewPoseHypothesis> best;
   const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
+  const PartDistanceField& field = model.field;
   if (scoring.size() == 0 || field.empty()) return best;
   const double truncation_mm = parameters.field_truncation_mm;
   const auto rescore = [&](std::vector<FieldHypothesis>& hypotheses, int iterations) {
@@ -85,7 +105,7 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
   // Against the whole part, in stages: every start as it is, the best after one alignment
   // step, the best of those after a few more.
   std::vector<FieldHypothesis> hypotheses =
-      turned_view_starts(scoring, base, part, parameters.in_plane_turns);
+      turned_view_starts(scoring, base, model, parameters.in_plane_turns);
   rescore(hypotheses, 0);
   keep_best(hypotheses, static_cast<std::size_t>(parameters.field_candidates));
   rescore(hypotheses, 1);
@@ -100,10 +120,10 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
   for (const FieldHypothesis& hypothesis : hypotheses) {
     const int view = nearest_view(base, part, hypothesis.T_part_scene);
     const ModelBaseView& model_view = base.views[static_cast<std::size_t>(view)];
-    const ModelSurface model(model_view);
+    const ModelSurface surface(model_view);
     const RigidTransform T_model_scene = model_view.T_scanner_part * hypothesis.T_part_scene;
     const RegistrationResult refined =
-        register_views(scoring, model.points(), T_model_scene, short_registration);
+        register_views(scoring, surface.points(), T_model_scene, short_registration);
     const RigidTransform& T =
         refined.status == RegistrationStatus::invalid_input ? T_model_scene : refined.T_model_scene;
     best.push_back({view, T,

@@ -71,7 +71,7 @@ Recognizer::Recognizer(const ModelBase& model_base, const CosmosParameters& cosm
       parameters_(parameters),
       selector_(model_base, parameters.selection) {
   for (int part = 0; part < static_cast<int>(model_base.parts.size()); ++part)
-    part_fields_.push_back(build_part_distance_field(model_base, part, parameters.field));
+    part_search_models_.push_back(build_part_search_model(model_base, part, parameters.field));
 }
 
 RecognitionResult Recognizer::recognize(const RangeImage& scene) const {
@@ -203,7 +203,7 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
       result.views_examined += view.part_index == part;
     Clock::time_point stage = Clock::now();
     const std::vector<ViewPoseHypothesis> hypotheses =
-        search_part_pose(scene_points.all, model_base_, part, part_field(part),
+        search_part_pose(scene_points.all, model_base_, part, part_search_model(part),
                          parameters_.registration, parameters_.search);
     result.timings.registration_ms += elapsed_ms(stage);
     for (const ViewPoseHypothesis& hypothesis : hypotheses) {

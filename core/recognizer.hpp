@@ -130,10 +130,9 @@ class Recognizer {
                                        double features_ms = 0) const;
 
   const SpectralViewSelector& selector() const { return selector_; }
-  // The distance field the pose search aligns against (one per base part, built with the
-  // recognizer).
-  const PartDistanceField& part_field(int part) const {
-    return part_fields_[static_cast<std::size_t>(part)];
+  // What the pose search needs of each base part (built with the recognizer).
+  const PartSearchModel& part_search_model(int part) const {
+    return part_search_models_[static_cast<std::size_t>(part)];
   }
   const RecognitionParameters& parameters() const { return parameters_; }
 
@@ -160,7 +159,7 @@ class Recognizer {
   CosmosParameters cosmos_;
   RecognitionParameters parameters_;
   SpectralViewSelector selector_;
-  std::vector<PartDistanceField> part_fields_;
+  std::vector<PartSearchModel> part_search_models_;
 };
 
 const char* to_string(RecognitionStatus status);
