@@ -70,6 +70,9 @@ struct RecognitionParameters {
   PartDistanceFieldParameters field;
   // Decision thresholds (rejection as unknown part).
   double min_inlier_fraction = 0.6;
+  // A registered candidate whose support on the coarse points is below this is judged on
+  // them alone (it cannot pass min_inlier_fraction on all points).
+  double plausible_support = 0.45;
   double max_rms_mm = 0.12;
   int min_scene_points = 30;
 };
