@@ -134,9 +134,33 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
                    [](const ViewPoseHypothesis& a, const ViewPoseHypothesis& b) {
                      return a.truncated_mean_square_mm2 < b.truncated_mean_square_mm2;
                    });
-  if (best.size() > static_cast<std::size_t>(parameters.best_hypotheses))
-    best.resize(static_cast<std::size_t>(parameters.best_hypotheses));
-  return best;
+  // Starts that converged to one pose of the part (on one view or neighbouring ones) are one
+  // hypothesis, and one that fits the part much worse than the best is none: the caller
+  // registers each.
+  const auto T_part_scene = [&base](const ViewPoseHypothesis& hypothesis) {
+    return base.views[static_cast<std::size_t>(hypothesis.view)].T_scanner_part.inverse() *
+           hypothesis.T_model_scene;
+  };
+  std::vector<ViewPoseHypothesis> distinct;
+  std::vector<RigidTransform> distinct_poses;
+  for (const ViewPoseHypothesis& hypothesis : best) {
+    if (distinct.size() >= static_cast<std::size_t>(parameters.best_hypotheses)) break;
+    if (hypothesis.truncated_mean_square_mm2 >
+        parameters.kept_score_factor * best.front().truncated_mean_square_mm2 +
+            parameters.kept_score_margin_mm2)
+      break;
+    const RigidTransform pose = T_part_scene(hypothesis);
+    const bool repeated =
+        std::any_of(distinct_poses.begin(), distinct_poses.end(), [&](const RigidTransform& kept) {
+          return rotation_angle_between_rad(kept.rotation, pose.rotation) <
+                     parameters.same_pose_rad &&
+                 (kept.translation_mm - pose.translation_mm).norm() < parameters.same_pose_mm;
+        });
+    if (repeated) continue;
+    distinct.push_back(hypothesis);
+    distinct_poses.push_back(pose);
+  }
+  return distinct;
 }
 
 }  // namespace cosmos

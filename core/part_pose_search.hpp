@@ -33,7 +33,13 @@ struct PartPoseSearchParameters {
   int field_iterations = 3;           // alignment steps for those
   int refined_hypotheses = 32;        // registered on their nearest view
   int refinement_iterations = 8;
-  int best_hypotheses = 4;  // returned, best first
+  int best_hypotheses = 4;  // returned, best first, no two poses of the part within:
+  double same_pose_rad = 0.02;
+  double same_pose_mm = 0.5;
+  // and none whose field score exceeds factor x the best's + margin (a wrong pose scores
+  // 10-100 times the true one's 0.05-0.3 mm^2).
+  double kept_score_factor = 3.0;
+  double kept_score_margin_mm2 = 0.5;
 };
 
 // What the search needs of one part beyond the base: its distance field and, per coarse
