@@ -236,11 +236,12 @@ void Recognizer::register_candidate(const ScenePoints& scene_points,
   Support best_support;
   // Coarse to fine: the iterations far from the optimum on a spread subset, the last few on
   // every control point (ch. 6's estimate is the fine one).
+  RegistrationParameters coarse = parameters_.registration;
+  coarse.max_iterations = parameters_.coarse_registration_iterations;
   RegistrationParameters fine = parameters_.registration;
   fine.max_iterations = parameters_.fine_registration_iterations;
   for (const RigidTransform& start : starts) {
-    RegistrationResult registration =
-        register_views(scene_points.coarse, model, start, parameters_.registration);
+    RegistrationResult registration = register_views(scene_points.coarse, model, start, coarse);
     if (registration.status == RegistrationStatus::invalid_input) continue;
     registration = register_views(scene_points.all, model, registration.T_model_scene, fine);
     // A degenerate (still planar) result is kept: its support decides.
