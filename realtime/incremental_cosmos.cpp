@@ -44,11 +44,11 @@ bool IncrementalCosmos::add_row(const float* z_mm) {
 void IncrementalCosmos::finish() {
   if (finished_) return;
   finished_ = true;
-  // Below the part there is no data (the fits look up to half a window further), and the
-  // row below has no valid fit (its links) — as at the border of a whole image.
+  // Below the part there is no data, whatever an earlier part left there (a crease window,
+  // shifted by up to half a window, looks a whole window further), and the row below has no
+  // valid fit (its links) — as at the border of a whole image.
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  const int half_window = parameters_.fit.window_size / 2;
-  for (int row = rows_; row < std::min(rows_ + half_window, max_rows_); ++row)
+  for (int row = rows_; row < std::min(rows_ + fit_reach_rows(), max_rows_); ++row)
     std::fill(image_.z_mm.row(row), image_.z_mm.row(row) + width_, nan);
   if (rows_ < max_rows_) std::fill(fitted_.valid.row(rows_), fitted_.valid.row(rows_) + width_, 0);
   while (advance_one_row_each()) {
@@ -70,8 +70,7 @@ bool IncrementalCosmos::advance_one_row_each() {
 
 bool IncrementalCosmos::fit_next() {
   const int row = fitted_rows_;
-  const int half_window = parameters_.fit.window_size / 2;
-  if (row >= rows_ || !(row + half_window < rows_ || finished_)) return false;
+  if (row >= rows_ || !(row + fit_reach_rows() < rows_ || finished_)) return false;
   fitter_.fit_row(image_, row, fitted_);
   ++fitted_rows_;
   return true;

@@ -41,6 +41,10 @@ class IncrementalCosmos {
   const ShapeSpectrumAccumulator& spectrum() const { return spectrum_; }
 
  private:
+  // Rows below a pixel that its fit may read: a whole window, since a crease window is
+  // shifted by up to half of one (local_surface_fit.hpp). A row is fitted only once they
+  // have arrived, so it never reads a row of an earlier part.
+  int fit_reach_rows() const { return 2 * (parameters_.fit.window_size / 2); }
   bool advance_one_row_each();
   bool fit_next();
   bool link_next();

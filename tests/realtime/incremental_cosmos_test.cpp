@@ -77,6 +77,28 @@ TEST(IncrementalCosmos, EqualsWholeImageProcessing) {
   expect_same_as_whole_image(builder, relief(110, 140, 2), parameters);
 }
 
+TEST(IncrementalCosmos, AReusedBuilderEqualsWholeImageAfterALongerWiderPart) {
+  // The scan loop hands a builder to whichever part starts next: what a longer, wider part
+  // left in its rows and rings must not leak into a shorter, narrower one.
+  const CosmosParameters parameters;
+  IncrementalCosmos builder(parameters, 200, 160, 0.4, 0.4);
+  RangeImage wide(200, 150, 0.4, 0.4);
+  const RangeImage first = relief(110, 150, 5);
+  for (int row = 0; row < 150; ++row)
+    for (int column = 0; column < 200; ++column)
+      wide.z_mm(column, row) = first.z_mm(column % 110, row) + 3.0f;
+  expect_same_as_whole_image(builder, wide, parameters);
+  // A ridge (a crease) down the whole part: its pixels in the last rows fit windows shifted
+  // by up to half a window, which reach two rows further than centred ones.
+  const RangeImage part = relief(70, 60, 6);
+  RangeImage belt(200, 60, 0.4, 0.4);
+  for (int row = 0; row < part.height(); ++row)
+    for (int column = 0; column < part.width(); ++column)
+      belt.z_mm(80 + column, row) =
+          part.z_mm(column, row) + 8.0f - 0.8f * static_cast<float>(std::abs(column - 35));
+  expect_same_as_whole_image(builder, belt, parameters);
+}
+
 TEST(IncrementalCosmos, EqualsWholeImageForAnyIterationCount) {
   for (int iterations : {0, 1, 2, 4}) {
     CosmosParameters parameters;
