@@ -58,6 +58,25 @@ class SimCli : public ::testing::Test {
   fs::path dir_;
 };
 
+TEST_F(SimCli, CatalogListShowsEveryPartAndWhetherItLoads) {
+  const CliRun listed = run("catalog list --catalog '" + file("catalog.yaml") + "'");
+  EXPECT_EQ(listed.exit_code, 0) << listed.err;
+  EXPECT_NE(listed.out.find("name"), std::string::npos) << listed.out;
+  // The box: 8 vertices, its 6 quads as 12 triangles, sized 40 mm, loading.
+  EXPECT_NE(listed.out.find("box"), std::string::npos) << listed.out;
+  EXPECT_NE(listed.out.find("40         8     12  ok"), std::string::npos) << listed.out;
+
+  write("with-missing.yaml",
+        "parts:\n  - {name: box, mesh: ./box.off, size_mm: 40}\n"
+        "  - {name: ghost, mesh: ./missing.off, size_mm: 50}\n");
+  const CliRun failing = run("catalog list --catalog '" + file("with-missing.yaml") + "'");
+  EXPECT_NE(failing.out.find("ghost"), std::string::npos) << failing.out;
+  EXPECT_NE(failing.out.find("FAILS: " + file("missing.off") + ": mesh file not found"),
+            std::string::npos)
+      << failing.out;
+  testing::expect_one_line_failure(failing, "1 of 2 parts do not load");
+}
+
 TEST_F(SimCli, BadMeshesNameTheFileAndTheReason) {
   expect_one_line_failure(scan_mesh("absent.off"), "absent.off: mesh file not found");
   write("empty.off", "OFF\n0 0 0\n");
