@@ -90,14 +90,9 @@ PartDistanceField::PartDistanceField(const std::vector<Eigen::Vector3d>& points_
   for (float& d : distance_mm_) d = std::sqrt(d) * static_cast<float>(voxel_mm_);
 }
 
-double PartDistanceField::distance_mm(const Eigen::Vector3d& point_part_mm) const {
-  Eigen::Vector3d unused;
-  return distance_mm(point_part_mm, unused);
-}
-
-double PartDistanceField::distance_mm(const Eigen::Vector3d& point_part_mm,
-                                      Eigen::Vector3d& gradient) const {
-  gradient.setZero();
+double PartDistanceField::interpolate(const Eigen::Vector3d& point_part_mm,
+                                      Eigen::Vector3d* gradient) const {
+  if (gradient) gradient->setZero();
   if (distance_mm_.empty()) return std::numeric_limits<double>::infinity();
   const Eigen::Vector3d u = (point_part_mm - origin_mm_) / voxel_mm_;
   Eigen::Vector3d clamped;
@@ -118,12 +113,12 @@ double PartDistanceField::distance_mm(const Eigen::Vector3d& point_part_mm,
   const double c00 = c000 + fx * (c100 - c000), c10 = c010 + fx * (c110 - c010);
   const double c01 = c001 + fx * (c101 - c001), c11 = c011 + fx * (c111 - c011);
   const double c0 = c00 + fy * (c10 - c00), c1 = c01 + fy * (c11 - c01);
-  if (outside_mm == 0) {
+  if (gradient && outside_mm == 0) {
     const double dx0 = (c100 - c000) + fy * ((c110 - c010) - (c100 - c000));
     const double dx1 = (c101 - c001) + fy * ((c111 - c011) - (c101 - c001));
-    gradient.x() = (dx0 + fz * (dx1 - dx0)) / voxel_mm_;
-    gradient.y() = ((c10 - c00) + fz * ((c11 - c01) - (c10 - c00))) / voxel_mm_;
-    gradient.z() = (c1 - c0) / voxel_mm_;
+    gradient->x() = (dx0 + fz * (dx1 - dx0)) / voxel_mm_;
+    gradient->y() = ((c10 - c00) + fz * ((c11 - c01) - (c10 - c00))) / voxel_mm_;
+    gradient->z() = (c1 - c0) / voxel_mm_;
   }
   return c0 + fz * (c1 - c0) + outside_mm;
 }

@@ -34,10 +34,17 @@ class PartDistanceField {
   // Distance to the part's surface; beyond the grid, at least the margin (the grid edge's
   // value plus the way out). The gradient is that of the trilinear interpolant (zero
   // outside the grid).
-  double distance_mm(const Eigen::Vector3d& point_part_mm) const;
-  double distance_mm(const Eigen::Vector3d& point_part_mm, Eigen::Vector3d& gradient) const;
+  double distance_mm(const Eigen::Vector3d& point_part_mm) const {
+    return interpolate(point_part_mm, nullptr);
+  }
+  double distance_mm(const Eigen::Vector3d& point_part_mm, Eigen::Vector3d& gradient) const {
+    return interpolate(point_part_mm, &gradient);
+  }
 
  private:
+  // The gradient only when asked: scoring, most of the queries, needs none.
+  double interpolate(const Eigen::Vector3d& point_part_mm, Eigen::Vector3d* gradient) const;
+
   Eigen::Vector3d origin_mm_ = Eigen::Vector3d::Zero();  // centre of voxel (0, 0, 0)
   double voxel_mm_ = 1.0;
   int size_[3] = {0, 0, 0};

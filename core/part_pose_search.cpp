@@ -1,9 +1,9 @@
 #include "core/part_pose_search.hpp"
 
 #include <algorithm>
-#include <numbers>
 
 #include "core/model_surface.hpp"
+#include "core/pose_hypotheses.hpp"
 
 namespace cosmos {
 namespace {
@@ -33,11 +33,8 @@ std::vector<FieldHypothesis> turned_view_starts(const RegistrationPoints& scorin
     const ModelBaseView& view = base.views[static_cast<std::size_t>(model.start_views[s])];
     const Eigen::Vector3d& model_centre = model.start_view_centroid_mm[s];
     const RigidTransform T_part_view = view.T_scanner_part.inverse();
-    for (int k = 0; k < turns; ++k) {
-      const double angle_rad = 2.0 * std::numbers::pi * k / turns;
-      const Eigen::Matrix3d R = Eigen::AngleAxisd(angle_rad, Eigen::Vector3d::UnitZ()).matrix();
-      starts.push_back({T_part_view * RigidTransform{R, model_centre - R * scene_centre}, 0.0});
-    }
+    for (int k = 0; k < turns; ++k)
+      starts.push_back({T_part_view * in_plane_turn(k, turns, scene_centre, model_centre), 0.0});
   }
   return starts;
 }

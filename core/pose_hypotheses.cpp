@@ -15,6 +15,13 @@ Eigen::Vector3d centroid_mm(const RegistrationPoints& points) {
 
 }  // namespace
 
+RigidTransform in_plane_turn(int k, int turns, const Eigen::Vector3d& scene_centre_mm,
+                             const Eigen::Vector3d& model_centre_mm) {
+  const double angle_rad = 2.0 * std::numbers::pi * k / turns;
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(angle_rad, Eigen::Vector3d::UnitZ()).matrix();
+  return {R, model_centre_mm - R * scene_centre_mm};
+}
+
 std::vector<PoseHypothesis> rank_pose_hypotheses(const RegistrationPoints& scene,
                                                  const RegistrationPoints& model,
                                                  const PoseFromPatches& from_patches,
@@ -29,12 +36,10 @@ std::vector<PoseHypothesis> rank_pose_hypotheses(const RegistrationPoints& scene
     hypotheses.push_back({PoseHypothesisSource::kPrincipalAxes, axes.T_model_scene, {}});
   const Eigen::Vector3d scene_centre = centroid_mm(scene);
   const Eigen::Vector3d model_centre = centroid_mm(model);
-  for (int k = 0; k < parameters.in_plane_turns; ++k) {
-    const double angle_rad = 2.0 * std::numbers::pi * k / parameters.in_plane_turns;
-    const Eigen::Matrix3d R = Eigen::AngleAxisd(angle_rad, Eigen::Vector3d::UnitZ()).matrix();
-    hypotheses.push_back(
-        {PoseHypothesisSource::kInPlaneTurn, {R, model_centre - R * scene_centre}, {}});
-  }
+  for (int k = 0; k < parameters.in_plane_turns; ++k)
+    hypotheses.push_back({PoseHypothesisSource::kInPlaneTurn,
+                          in_plane_turn(k, parameters.in_plane_turns, scene_centre, model_centre),
+                          {}});
   for (PoseHypothesis& hypothesis : hypotheses)
     hypothesis.score = score_alignment(scene, model, hypothesis.T_model_scene, registration);
   std::stable_sort(hypotheses.begin(), hypotheses.end(),

@@ -27,6 +27,11 @@ struct PoseHypothesisParameters {
   int in_plane_turns = 12;  // evenly spaced turns about +z, 0 = none
 };
 
+// Turn k of `turns` evenly spaced ones about the viewing axis (+z), taking the scene's
+// centroid onto the model's: T_model_scene.
+RigidTransform in_plane_turn(int k, int turns, const Eigen::Vector3d& scene_centre_mm,
+                             const Eigen::Vector3d& model_centre_mm);
+
 // Hypotheses sorted by truncated mean square (ascending), ties in generation order (patch
 // groups, principal axes, turns by angle). `from_patches` is used when its status is ok.
 std::vector<PoseHypothesis> rank_pose_hypotheses(const RegistrationPoints& scene,
