@@ -59,6 +59,11 @@ struct EvaluationRecord {
   Eigen::Vector3d t_true_mm = Eigen::Vector3d::Zero();
   Eigen::Vector3d t_estimated_mm = Eigen::Vector3d::Zero();
   double recognition_ms = 0;
+  // Where the time went (the report's per-test table): chapter-3 features, patch-group
+  // matching, registration and pose search; and whether the §5.2 views left the fallback
+  // pose search to run.
+  double features_ms = 0, matching_ms = 0, registration_ms = 0;
+  bool pose_searched = false;
 };
 
 // A part's model points (a subsample of its mesh vertices, part frame, mm), by catalog index.

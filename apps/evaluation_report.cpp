@@ -229,7 +229,8 @@ std::string report_html(std::span<const EvaluationRecord> records, const Evaluat
          << "</td></tr>\n";
   html << "</table>\n<h2>Tests</h2>\n<table>\n<tr><th>#</th><th>truth</th><th>predicted</th>"
           "<th>status</th><th>rotation error (deg)</th><th>translation error (mm)</th>"
-          "<th>ADD-S / diameter</th><th>time (ms)</th><th>rejected because</th></tr>\n";
+          "<th>ADD-S / diameter</th><th>time (ms)</th><th>features (ms)</th><th>matching (ms)</th>"
+          "<th>registration (ms)</th><th>pose search</th><th>rejected because</th></tr>\n";
   for (std::size_t i = 0; i < records.size(); ++i) {
     const EvaluationRecord& record = records[i];
     const RecordOutcome& outcome = metrics.outcomes[i];
@@ -245,6 +246,10 @@ std::string report_html(std::span<const EvaluationRecord> records, const Evaluat
          << "</td><td>" << format_or_dash(outcome.translation_error_mm, "%.3f") << "</td><td>"
          << format_or_dash(outcome.add_s_over_diameter, "%.4f") << "</td><td>"
          << format("%.2f", record.recognition_ms) << "</td><td>"
+         << format("%.2f", record.features_ms) << "</td><td>"
+         << format("%.2f", record.matching_ms) << "</td><td>"
+         << format("%.2f", record.registration_ms) << "</td><td>"
+         << (record.pose_searched ? "yes" : "no") << "</td><td>"
          << html_escape(record.rejection_reason) << "</td></tr>\n";
   }
   html << "</table>\n</body></html>\n";

@@ -134,6 +134,11 @@ EvaluationRecord run_evaluation_test(const EvaluationTest& test,
   record.R_estimated = result.T_scanner_part.rotation;
   record.t_estimated_mm = result.T_scanner_part.translation_mm;
   record.recognition_ms = result.timings.total_ms;
+  record.features_ms = result.timings.features_ms;
+  record.matching_ms = result.timings.matching_ms;
+  record.registration_ms = result.timings.registration_ms;
+  for (const RecognitionCandidate& candidate : result.candidates)
+    record.pose_searched |= candidate.from_pose_search;
   return record;
 }
 

@@ -137,6 +137,21 @@ class RecognitionScanSet {
   const ModelBase& base() const { return base_; }
   const CosmosParameters& cosmos() const { return cosmos_; }
   const RecognitionParameters& parameters() const { return parameters_; }
+
+  // Verification's starts on one selected view (Recognizer::verify).
+  std::vector<ViewPoseHypothesis> field_aligned_starts(const TestScan& scan,
+                                                       const SelectedView& selected) const {
+    std::vector<RigidTransform> generated;
+    for (const PoseHypothesis& hypothesis : generate_pose_hypotheses(
+             scan.scene_points, selected.model, selected.from_patches, parameters_.registration,
+             {.in_plane_turns = parameters_.in_plane_hypotheses}))
+      generated.push_back(hypothesis.T_model_scene);
+    const int part = base_.views[static_cast<std::size_t>(selected.view)].part_index;
+    return align_view_starts_in_field(scan.scene_points, base_, selected.view, generated,
+                                      recognizer_->part_search_model(part),
+                                      parameters_.field_starts, parameters_.search,
+                                      parameters_.registered_hypotheses);
+  }
   const Recognizer& recognizer() const { return *recognizer_; }
   const std::vector<TestScan>& scans() const { return scans_; }
 
@@ -195,10 +210,18 @@ class RecognitionScanSet {
         match_patch_groups(scan.analysis.view, view.cosmos, parameters_.matching);
     const PoseFromPatches from_patches =
         estimate_pose_from_patches(scan.analysis.view, view.cosmos, match.pairs, parameters_.pose);
-    const std::vector<PoseHypothesis> hypotheses = rank_pose_hypotheses(
-        scan.scene_points, scan.chosen_model, from_patches, parameters_.registration,
-        {.in_plane_turns = parameters_.in_plane_hypotheses});
-    if (!hypotheses.empty()) scan.chosen_start = hypotheses.front().T_model_scene;
+    SelectedView chosen;
+    chosen.view = scan.chosen_view;
+    chosen.from_patches = from_patches;
+    chosen.model = scan.chosen_model;
+    const std::vector<ViewPoseHypothesis> starts = field_aligned_starts(scan, chosen);
+    if (!starts.empty()) {
+      // Registered on the view the start was moved to.
+      scan.chosen_view = starts.front().view;
+      scan.chosen_model =
+          ModelSurface(base_.views[static_cast<std::size_t>(scan.chosen_view)]).points();
+      scan.chosen_start = starts.front().T_model_scene;
+    }
     scan.chosen_registered = register_views(scan.scene_points, scan.chosen_model, scan.chosen_start,
                                             parameters_.registration)
                                  .T_model_scene;

@@ -136,6 +136,15 @@ double field_truncated_mean_square_mm2(const RegistrationPoints& scene,
   return sum / scene.size();
 }
 
+double field_fraction_within(const RegistrationPoints& scene, const PartDistanceField& field,
+                             const RigidTransform& T_part_scene, double distance_mm) {
+  if (scene.size() == 0) return 0;
+  int within = 0;
+  for (int i = 0; i < scene.size(); ++i)
+    within += field.distance_mm(T_part_scene.apply(scene.position_mm.col(i))) <= distance_mm;
+  return static_cast<double>(within) / scene.size();
+}
+
 RigidTransform align_in_distance_field(const RegistrationPoints& scene,
                                        const PartDistanceField& field,
                                        const RigidTransform& T_part_scene, int iterations,

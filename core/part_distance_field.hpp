@@ -57,6 +57,26 @@ double field_truncated_mean_square_mm2(const RegistrationPoints& scene,
                                        const PartDistanceField& field,
                                        const RigidTransform& T_part_scene, double truncation_mm);
 
+// The fraction of the scene points within `distance_mm` of the part surface under
+// T_part_scene.
+double field_fraction_within(const RegistrationPoints& scene, const PartDistanceField& field,
+                             const RigidTransform& T_part_scene, double distance_mm);
+
+// Whether a pose is worth registering (ch. 6): registration refines a start, it rarely
+// rescues one under which much of the scene is nowhere near the part. Support needs 60 % of
+// the scene within 0.2 mm of the part's views (part_support.hpp); a start with less than half
+// of it within 2 mm (the field's resolution) of all of them hardly gets there. Measured on
+// 2,017 registrations of 200 acceptance scans: this skipped 886 of the 1,764 that ended
+// below 0.6 support and none of the 253 that reached it.
+struct FieldGate {
+  double distance_mm = 2.0;
+  double min_fraction = 0.5;
+  bool passes(const RegistrationPoints& scene, const PartDistanceField& field,
+              const RigidTransform& T_part_scene) const {
+    return field_fraction_within(scene, field, T_part_scene, distance_mm) >= min_fraction;
+  }
+};
+
 // Gauss-Newton on the scene points' distances to the field (those within the truncation),
 // `iterations` steps from T_part_scene: a registration that needs no correspondences.
 RigidTransform align_in_distance_field(const RegistrationPoints& scene,

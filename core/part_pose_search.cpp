@@ -54,6 +54,39 @@ int nearest_view(const ModelBase& base, int part, const RigidTransform& T_part_s
   return nearest;
 }
 
+// Starts that converged to one pose of the part (on one view or neighbouring ones) are one
+// hypothesis, and one that fits the part much worse than the best is none: the caller
+// registers each. `sorted`: best first.
+std::vector<ViewPoseHypothesis> distinct_hypotheses(const ModelBase& base,
+                                                    const std::vector<ViewPoseHypothesis>& sorted,
+                                                    const PartPoseSearchParameters& parameters,
+                                                    int count) {
+  const auto T_part_scene = [&base](const ViewPoseHypothesis& hypothesis) {
+    return base.views[static_cast<std::size_t>(hypothesis.view)].T_scanner_part.inverse() *
+           hypothesis.T_model_scene;
+  };
+  std::vector<ViewPoseHypothesis> distinct;
+  std::vector<RigidTransform> distinct_poses;
+  for (const ViewPoseHypothesis& hypothesis : sorted) {
+    if (distinct.size() >= static_cast<std::size_t>(count)) break;
+    if (hypothesis.truncated_mean_square_mm2 >
+        parameters.kept_score_factor * sorted.front().truncated_mean_square_mm2 +
+            parameters.kept_score_margin_mm2)
+      break;
+    const RigidTransform pose = T_part_scene(hypothesis);
+    const bool repeated =
+        std::any_of(distinct_poses.begin(), distinct_poses.end(), [&](const RigidTransform& kept) {
+          return rotation_angle_between_rad(kept.rotation, pose.rotation) <
+                     parameters.same_pose_rad &&
+                 (kept.translation_mm - pose.translation_mm).norm() < parameters.same_pose_mm;
+        });
+    if (repeated) continue;
+    distinct.push_back(hypothesis);
+    distinct_poses.push_back(pose);
+  }
+  return distinct;
+}
+
 }  // namespace
 
 PartSearchModel build_part_search_model(const ModelBase& base, int part,
@@ -115,6 +148,7 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
   RegistrationParameters short_registration = registration;
   short_registration.max_iterations = parameters.refinement_iterations;
   for (const FieldHypothesis& hypothesis : hypotheses) {
+    if (!parameters.refinement_gate.passes(scoring, field, hypothesis.T_part_scene)) continue;
     const int view = nearest_view(base, part, hypothesis.T_part_scene);
     const ModelBaseView& model_view = base.views[static_cast<std::size_t>(view)];
     const ModelSurface surface(model_view);
@@ -131,33 +165,44 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
                    [](const ViewPoseHypothesis& a, const ViewPoseHypothesis& b) {
                      return a.truncated_mean_square_mm2 < b.truncated_mean_square_mm2;
                    });
-  // Starts that converged to one pose of the part (on one view or neighbouring ones) are one
-  // hypothesis, and one that fits the part much worse than the best is none: the caller
-  // registers each.
-  const auto T_part_scene = [&base](const ViewPoseHypothesis& hypothesis) {
-    return base.views[static_cast<std::size_t>(hypothesis.view)].T_scanner_part.inverse() *
-           hypothesis.T_model_scene;
-  };
-  std::vector<ViewPoseHypothesis> distinct;
-  std::vector<RigidTransform> distinct_poses;
-  for (const ViewPoseHypothesis& hypothesis : best) {
-    if (distinct.size() >= static_cast<std::size_t>(parameters.best_hypotheses)) break;
-    if (hypothesis.truncated_mean_square_mm2 >
-        parameters.kept_score_factor * best.front().truncated_mean_square_mm2 +
-            parameters.kept_score_margin_mm2)
-      break;
-    const RigidTransform pose = T_part_scene(hypothesis);
-    const bool repeated =
-        std::any_of(distinct_poses.begin(), distinct_poses.end(), [&](const RigidTransform& kept) {
-          return rotation_angle_between_rad(kept.rotation, pose.rotation) <
-                     parameters.same_pose_rad &&
-                 (kept.translation_mm - pose.translation_mm).norm() < parameters.same_pose_mm;
-        });
-    if (repeated) continue;
-    distinct.push_back(hypothesis);
-    distinct_poses.push_back(pose);
+  return distinct_hypotheses(base, best, parameters, parameters.best_hypotheses);
+}
+
+std::vector<ViewPoseHypothesis> align_view_starts_in_field(
+    const RegistrationPoints& scene, const ModelBase& base, int view,
+    const std::vector<RigidTransform>& starts, const PartSearchModel& model,
+    const FieldAlignedStartParameters& parameters, const PartPoseSearchParameters& search,
+    int count) {
+  std::vector<ViewPoseHypothesis> best;
+  const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
+  if (scoring.size() == 0 || model.field.empty() || starts.empty()) return best;
+  const ModelBaseView& start_view = base.views[static_cast<std::size_t>(view)];
+  const RigidTransform T_part_view = start_view.T_scanner_part.inverse();
+  const double truncation_mm = parameters.field_truncation_mm;
+  std::vector<FieldHypothesis> hypotheses;
+  for (const RigidTransform& T_model_scene : starts) {
+    const RigidTransform T_part_scene = T_part_view * T_model_scene;
+    hypotheses.push_back(
+        {T_part_scene,
+         field_truncated_mean_square_mm2(scoring, model.field, T_part_scene, truncation_mm)});
   }
-  return distinct;
+  keep_best(hypotheses, static_cast<std::size_t>(parameters.aligned_starts));
+  for (FieldHypothesis& hypothesis : hypotheses) {
+    hypothesis.T_part_scene = align_in_distance_field(scoring, model.field, hypothesis.T_part_scene,
+                                                      parameters.field_iterations, truncation_mm);
+    hypothesis.truncated_mean_square_mm2 =
+        field_truncated_mean_square_mm2(scoring, model.field, hypothesis.T_part_scene,
+                                        truncation_mm);
+  }
+  keep_best(hypotheses, hypotheses.size());
+  for (const FieldHypothesis& hypothesis : hypotheses) {
+    const int nearest = nearest_view(base, start_view.part_index, hypothesis.T_part_scene);
+    best.push_back({nearest,
+                    base.views[static_cast<std::size_t>(nearest)].T_scanner_part *
+                        hypothesis.T_part_scene,
+                    hypothesis.truncated_mean_square_mm2});
+  }
+  return distinct_hypotheses(base, best, search, count);
 }
 
 }  // namespace cosmos

@@ -33,6 +33,7 @@ struct PartPoseSearchParameters {
   int field_iterations = 3;           // alignment steps for those
   int refined_hypotheses = 32;        // registered on their nearest view
   int refinement_iterations = 8;
+  FieldGate refinement_gate;          // those that fail it are not registered, nor returned
   int best_hypotheses = 4;  // returned, best first, no two poses of the part within:
   double same_pose_rad = 0.02;
   double same_pose_mm = 0.5;
@@ -67,5 +68,25 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
                                                  const PartSearchModel& model,
                                                  const RegistrationParameters& registration,
                                                  const PartPoseSearchParameters& parameters);
+
+// The same against the part's field, for the few starts verification has on one selected view
+// (§5.3.5 patch groups, §6.7.2 principal axes, turns): a start half a view away from the
+// truth fits that view no better than a wrong one, but the whole part clearly better, and
+// aligning in the field takes it the rest of the way without correspondences.
+struct FieldAlignedStartParameters {
+  int scoring_points = 100;
+  int aligned_starts = 4;  // the best-scoring starts, aligned
+  int field_iterations = 10;
+  double field_truncation_mm = 10.0;
+};
+
+// `starts` are T_model_scene on `view` (a view of the part `model` belongs to). Returns at
+// most `count` distinct poses, best first, each on the part's view nearest its viewing
+// direction, with the distinctness and score cut of `search`.
+std::vector<ViewPoseHypothesis> align_view_starts_in_field(
+    const RegistrationPoints& scene, const ModelBase& base, int view,
+    const std::vector<RigidTransform>& starts, const PartSearchModel& model,
+    const FieldAlignedStartParameters& parameters, const PartPoseSearchParameters& search,
+    int count);
 
 }  // namespace cosmos

@@ -1,7 +1,6 @@
 #include "core/pose_hypotheses.hpp"
 
 #include <Eigen/Geometry>
-#include <algorithm>
 #include <numbers>
 
 #include "core/principal_axes_estimate.hpp"
@@ -22,30 +21,23 @@ RigidTransform in_plane_turn(int k, int turns, const Eigen::Vector3d& scene_cent
   return {R, model_centre_mm - R * scene_centre_mm};
 }
 
-std::vector<PoseHypothesis> rank_pose_hypotheses(const RegistrationPoints& scene,
-                                                 const RegistrationPoints& model,
-                                                 const PoseFromPatches& from_patches,
-                                                 const RegistrationParameters& registration,
-                                                 const PoseHypothesisParameters& parameters) {
+std::vector<PoseHypothesis> generate_pose_hypotheses(const RegistrationPoints& scene,
+                                                     const RegistrationPoints& model,
+                                                     const PoseFromPatches& from_patches,
+                                                     const RegistrationParameters& registration,
+                                                     const PoseHypothesisParameters& parameters) {
   std::vector<PoseHypothesis> hypotheses;
   if (scene.size() == 0 || model.size() == 0) return hypotheses;
   if (from_patches.status == PatchPoseStatus::ok)
-    hypotheses.push_back({PoseHypothesisSource::kPatchGroups, from_patches.T_model_scene, {}});
+    hypotheses.push_back({PoseHypothesisSource::kPatchGroups, from_patches.T_model_scene});
   const PrincipalAxesEstimate axes = estimate_by_principal_axes(scene, model, registration);
   if (axes.status != PrincipalAxesStatus::too_few_points)
-    hypotheses.push_back({PoseHypothesisSource::kPrincipalAxes, axes.T_model_scene, {}});
+    hypotheses.push_back({PoseHypothesisSource::kPrincipalAxes, axes.T_model_scene});
   const Eigen::Vector3d scene_centre = centroid_mm(scene);
   const Eigen::Vector3d model_centre = centroid_mm(model);
   for (int k = 0; k < parameters.in_plane_turns; ++k)
     hypotheses.push_back({PoseHypothesisSource::kInPlaneTurn,
-                          in_plane_turn(k, parameters.in_plane_turns, scene_centre, model_centre),
-                          {}});
-  for (PoseHypothesis& hypothesis : hypotheses)
-    hypothesis.score = score_alignment(scene, model, hypothesis.T_model_scene, registration);
-  std::stable_sort(hypotheses.begin(), hypotheses.end(),
-                   [](const PoseHypothesis& a, const PoseHypothesis& b) {
-                     return a.score.truncated_mean_square_mm2 < b.score.truncated_mean_square_mm2;
-                   });
+                          in_plane_turn(k, parameters.in_plane_turns, scene_centre, model_centre)});
   return hypotheses;
 }
 

@@ -3,9 +3,9 @@
 // start within its basin of convergence): the pose implied by the COSMOS correspondence
 // (§5.3.5), the principal-axes estimate (§6.7.2), and turns about the viewing axis (+z) that
 // align the two views' centroids — both views are seen from the scanner, so what is unknown
-// is mostly that turn plus a small tilt. Each is scored by one correspondence pass
-// (score_alignment), and they are returned best first, so registration refines only the few
-// most promising.
+// is mostly that turn plus a small tilt. The recognizer ranks and aligns them against the
+// part's distance field (part_pose_search.hpp), so registration refines only the few most
+// promising.
 #include <vector>
 
 #include "core/pose_from_patches.hpp"
@@ -20,7 +20,6 @@ enum class PoseHypothesisSource { kPatchGroups, kPrincipalAxes, kInPlaneTurn };
 struct PoseHypothesis {
   PoseHypothesisSource source = PoseHypothesisSource::kInPlaneTurn;
   RigidTransform T_model_scene;
-  AlignmentScore score;
 };
 
 struct PoseHypothesisParameters {
@@ -32,12 +31,12 @@ struct PoseHypothesisParameters {
 RigidTransform in_plane_turn(int k, int turns, const Eigen::Vector3d& scene_centre_mm,
                              const Eigen::Vector3d& model_centre_mm);
 
-// Hypotheses sorted by truncated mean square (ascending), ties in generation order (patch
-// groups, principal axes, turns by angle). `from_patches` is used when its status is ok.
-std::vector<PoseHypothesis> rank_pose_hypotheses(const RegistrationPoints& scene,
-                                                 const RegistrationPoints& model,
-                                                 const PoseFromPatches& from_patches,
-                                                 const RegistrationParameters& registration,
-                                                 const PoseHypothesisParameters& parameters);
+// The hypotheses in generation order (patch groups, principal axes, turns by angle), unscored.
+// `from_patches` is used when its status is ok.
+std::vector<PoseHypothesis> generate_pose_hypotheses(const RegistrationPoints& scene,
+                                                     const RegistrationPoints& model,
+                                                     const PoseFromPatches& from_patches,
+                                                     const RegistrationParameters& registration,
+                                                     const PoseHypothesisParameters& parameters);
 
 }  // namespace cosmos

@@ -179,15 +179,19 @@ RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene, const ScenePo
   matching_ms += elapsed_ms(stage);
 
   stage = Clock::now();
-  const ModelSurface model(view);
-  std::vector<RigidTransform> starts;
-  for (const PoseHypothesis& hypothesis : rank_pose_hypotheses(
-           scene_points.coarse, model.points(), from_patches, parameters_.registration,
-           {.in_plane_turns = parameters_.in_plane_hypotheses})) {
-    if (starts.size() >= static_cast<std::size_t>(parameters_.registered_hypotheses)) break;
-    starts.push_back(hypothesis.T_model_scene);
-  }
-  register_candidate(scene_points, model.points(), starts, candidate);
+  const std::vector<ViewPoseHypothesis> starts = [&] {
+    const ModelSurface model(view);
+    std::vector<RigidTransform> generated;
+    for (const PoseHypothesis& hypothesis : generate_pose_hypotheses(
+             scene_points.coarse, model.points(), from_patches, parameters_.registration,
+             {.in_plane_turns = parameters_.in_plane_hypotheses}))
+      generated.push_back(hypothesis.T_model_scene);
+    return align_view_starts_in_field(scene_points.all, model_base_, selected.view, generated,
+                                      part_search_model(view.part_index),
+                                      parameters_.field_starts, parameters_.search,
+                                      parameters_.registered_hypotheses);
+  }();
+  register_candidate(scene_points, starts, candidate);
   registration_ms += elapsed_ms(stage);
   return candidate;
 }
@@ -217,8 +221,7 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
       candidate.goodness = match_patch_groups(scene.view, view.cosmos, parameters_.matching).score;
       result.timings.matching_ms += elapsed_ms(stage);
       stage = Clock::now();
-      register_candidate(scene_points, ModelSurface(view).points(), {hypothesis.T_model_scene},
-                         candidate);
+      register_candidate(scene_points, {hypothesis}, candidate);
       result.timings.registration_ms += elapsed_ms(stage);
       result.candidates.push_back(candidate);
       // As in verification: a pose that explains this much of the scene ends the search.
@@ -229,10 +232,10 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
 }
 
 void Recognizer::register_candidate(const ScenePoints& scene_points,
-                                    const RegistrationPoints& model,
-                                    const std::vector<RigidTransform>& starts,
+                                    const std::vector<ViewPoseHypothesis>& starts,
                                     RecognitionCandidate& candidate) const {
   RegistrationResult best;
+  int best_view = -1;
   Support best_support;
   // Coarse to fine: the iterations far from the optimum on a spread subset, the last few on
   // every control point (ch. 6's estimate is the fine one).
@@ -240,8 +243,17 @@ void Recognizer::register_candidate(const ScenePoints& scene_points,
   coarse.max_iterations = parameters_.coarse_registration_iterations;
   RegistrationParameters fine = parameters_.registration;
   fine.max_iterations = parameters_.fine_registration_iterations;
-  for (const RigidTransform& start : starts) {
-    RegistrationResult registration = register_views(scene_points.coarse, model, start, coarse);
+  for (const ViewPoseHypothesis& start : starts) {
+    const ModelBaseView& start_view = model_base_.views[static_cast<std::size_t>(start.view)];
+    if (!parameters_.registration_gate.passes(scene_points.coarse,
+                                              part_search_model(candidate.part).field,
+                                              start_view.T_scanner_part.inverse() *
+                                                  start.T_model_scene))
+      continue;
+    const ModelSurface surface(start_view);
+    const RegistrationPoints& model = surface.points();
+    RegistrationResult registration =
+        register_views(scene_points.coarse, model, start.T_model_scene, coarse);
     if (registration.status == RegistrationStatus::invalid_input) continue;
     registration = register_views(scene_points.all, model, registration.T_model_scene, fine);
     // A degenerate (still planar) result is kept: its support decides.
@@ -252,8 +264,12 @@ void Recognizer::register_candidate(const ScenePoints& scene_points,
     candidate.registered = true;
     best = registration;
     best_support = support;
+    best_view = start.view;
   }
   if (!candidate.registered) return;
+  candidate.view = best_view;
+  const ModelSurface surface(model_base_.views[static_cast<std::size_t>(best_view)]);
+  const RegistrationPoints& model = surface.points();
   // Most candidates of the pose search are wrong parts: the spread subset tells them apart at
   // a fifth of the cost, and only the plausible ones are measured on every point.
   PartSupport support =

@@ -47,9 +47,11 @@ struct RecognitionParameters {
   RegistrationPointParameters scene_points{.stride_px = 4};
   int min_dense_scene_points = 600;  // fewer: halve the stride (down to every pixel)
   int in_plane_hypotheses = 12;      // turns about the viewing axis tried per candidate view
-  // Best-scoring initial poses refined per candidate view. 1 took the acceptance run's median
-  // from 87 to 78 ms but lost a scan (identification 0.971).
+  // Verification's initial poses are ranked and aligned against the part's distance field
+  // (part_pose_search.hpp), and at most this many distinct ones registered per selected view.
+  FieldAlignedStartParameters field_starts;
   int registered_hypotheses = 2;
+  FieldGate registration_gate;  // a start that fails it is not registered
   // This many evenly spread scene control points rank the initial poses (one correspondence
   // pass each), and registration converges on them before at most
   // fine_registration_iterations passes on all the points.
@@ -158,10 +160,11 @@ class Recognizer {
   // The fallback: every view of the candidates' parts (part_pose_search.hpp).
   void search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
                               RecognitionResult& result) const;
-  // Registers from each start, keeps the pose the view supports best, then judges it against
-  // the part's views around it (part_support.hpp).
-  void register_candidate(const ScenePoints& scene_points, const RegistrationPoints& model,
-                          const std::vector<RigidTransform>& starts,
+  // Registers from each start on its view, keeps the pose its view supports best (the
+  // candidate's view becomes that one), then judges it against the part's views around it
+  // (part_support.hpp).
+  void register_candidate(const ScenePoints& scene_points,
+                          const std::vector<ViewPoseHypothesis>& starts,
                           RecognitionCandidate& candidate) const;
 
   const ModelBase& model_base_;

@@ -94,6 +94,24 @@ TEST(PartDistanceField, TruncatedMeanSquareIsSmallOnTheSurfaceAndCappedFarFromIt
   EXPECT_DOUBLE_EQ(field_truncated_mean_square_mm2(scene, field, far, 10.0), 100.0);
 }
 
+// Half the scene moved 6 mm off the surface: half of it is within the gate's 2 mm, so the
+// gate at 0.5 just passes it, and at 0.6 not; all of it moved off fails.
+TEST(PartDistanceField, FractionWithinCountsThePointsNearTheSurface) {
+  const PartDistanceField field(relief_points(0.5), {.voxel_mm = kVoxelMm, .margin_mm = 12});
+  std::vector<Eigen::Vector3d> points = relief_points(3.0);
+  for (std::size_t i = 0; i < points.size(); i += 2) points[i].z() += 6.0;
+  const RegistrationPoints scene = as_scene(points);
+  const double within = field_fraction_within(scene, field, RigidTransform{}, 2.0);
+  EXPECT_NEAR(within, 0.5, 0.5 / static_cast<double>(points.size()) + 1e-12);
+  EXPECT_TRUE((FieldGate{.distance_mm = 2.0, .min_fraction = within}.passes(
+      scene, field, RigidTransform{})));
+  EXPECT_FALSE((FieldGate{.distance_mm = 2.0, .min_fraction = 0.6}.passes(
+      scene, field, RigidTransform{})));
+  const RigidTransform off{Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, 6)};
+  EXPECT_DOUBLE_EQ(field_fraction_within(scene, field, off, 2.0), 0.0);
+  EXPECT_DOUBLE_EQ(field_fraction_within(RegistrationPoints{}, field, RigidTransform{}, 2.0), 0.0);
+}
+
 // A lumpy ellipsoid (no symmetry): the whole of it in the field, its upper half (what a
 // scanner above it sees) as the scene.
 std::vector<Eigen::Vector3d> lumpy_ellipsoid(int count, bool upper_half_only) {
