@@ -143,7 +143,7 @@ class RecognitionScanSet {
                                                        const SelectedView& selected) const {
     std::vector<RigidTransform> generated;
     for (const PoseHypothesis& hypothesis : generate_pose_hypotheses(
-             scan.scene_points, selected.model, selected.from_patches, parameters_.registration,
+             scan.scene_points, selected.model, selected.from_patches,
              {.in_plane_turns = parameters_.in_plane_hypotheses}))
       generated.push_back(hypothesis.T_model_scene);
     const int part = base_.views[static_cast<std::size_t>(selected.view)].part_index;

@@ -48,6 +48,7 @@ PartDistanceField::PartDistanceField(const std::vector<Eigen::Vector3d>& points_
                                      const PartDistanceFieldParameters& parameters) {
   if (points_part_mm.empty() || !(parameters.voxel_mm > 0)) return;
   voxel_mm_ = parameters.voxel_mm;
+  voxels_per_mm_ = 1.0 / voxel_mm_;
   Eigen::Vector3d low = points_part_mm.front(), high = low;
   for (const Eigen::Vector3d& p : points_part_mm) {
     low = low.cwiseMin(p);
@@ -90,37 +91,52 @@ PartDistanceField::PartDistanceField(const std::vector<Eigen::Vector3d>& points_
   for (float& d : distance_mm_) d = std::sqrt(d) * static_cast<float>(voxel_mm_);
 }
 
-double PartDistanceField::interpolate(const Eigen::Vector3d& point_part_mm,
-                                      Eigen::Vector3d* gradient) const {
-  if (gradient) gradient->setZero();
+template <bool kGradient>
+[[gnu::always_inline]] inline double PartDistanceField::sample(
+    const Eigen::Vector3d& point_part_mm, Eigen::Vector3d& gradient) const {
+  if (kGradient) gradient.setZero();
   if (distance_mm_.empty()) return std::numeric_limits<double>::infinity();
-  const Eigen::Vector3d u = (point_part_mm - origin_mm_) / voxel_mm_;
-  Eigen::Vector3d clamped;
-  for (int axis = 0; axis < 3; ++axis)
-    clamped[axis] = std::clamp(u[axis], 0.0, static_cast<double>(size_[axis] - 1) - 1e-9);
-  const double outside_mm = (u - clamped).norm() * voxel_mm_;
-  const int x = static_cast<int>(clamped.x()), y = static_cast<int>(clamped.y()),
-            z = static_cast<int>(clamped.z());
-  const double fx = clamped.x() - x, fy = clamped.y() - y, fz = clamped.z() - z;
-  const int x1 = std::min(x + 1, size_[0] - 1), y1 = std::min(y + 1, size_[1] - 1),
-            z1 = std::min(z + 1, size_[2] - 1);
-  const auto at = [&](int xi, int yi, int zi) -> double {
-    return distance_mm_[(static_cast<std::size_t>(zi) * size_[1] + yi) * size_[0] + xi];
-  };
-  const double c000 = at(x, y, z), c100 = at(x1, y, z), c010 = at(x, y1, z), c110 = at(x1, y1, z);
-  const double c001 = at(x, y, z1), c101 = at(x1, y, z1), c011 = at(x, y1, z1),
-               c111 = at(x1, y1, z1);
+  // The hot loop of the pose search: one base index and fixed strides to the 8 corners, and
+  // the way out of the grid only for points outside it. The upper clamp keeps the base a
+  // corner below the last, so its +1 neighbours always exist (grids are >= 2 voxels wide).
+  double u[3], f[3];
+  int base[3];
+  bool outside = false;
+  for (int axis = 0; axis < 3; ++axis) {
+    u[axis] = (point_part_mm[axis] - origin_mm_[axis]) * voxels_per_mm_;
+    const double clamped =
+        std::clamp(u[axis], 0.0, static_cast<double>(size_[axis] - 1) - 1e-9);
+    outside |= clamped != u[axis];
+    base[axis] = static_cast<int>(clamped);
+    f[axis] = clamped - base[axis];
+    u[axis] -= clamped;
+  }
+  const double outside_mm =
+      outside ? std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * voxel_mm_ : 0.0;
+  const std::ptrdiff_t step_y = size_[0];
+  const std::ptrdiff_t step_z = static_cast<std::ptrdiff_t>(size_[0]) * size_[1];
+  const float* c = distance_mm_.data() + base[2] * step_z + base[1] * step_y + base[0];
+  const double c000 = c[0], c100 = c[1], c010 = c[step_y], c110 = c[step_y + 1];
+  const double c001 = c[step_z], c101 = c[step_z + 1], c011 = c[step_z + step_y],
+               c111 = c[step_z + step_y + 1];
+  const double fx = f[0], fy = f[1], fz = f[2];
   const double c00 = c000 + fx * (c100 - c000), c10 = c010 + fx * (c110 - c010);
   const double c01 = c001 + fx * (c101 - c001), c11 = c011 + fx * (c111 - c011);
   const double c0 = c00 + fy * (c10 - c00), c1 = c01 + fy * (c11 - c01);
-  if (gradient && outside_mm == 0) {
+  if (kGradient && !outside) {
     const double dx0 = (c100 - c000) + fy * ((c110 - c010) - (c100 - c000));
     const double dx1 = (c101 - c001) + fy * ((c111 - c011) - (c101 - c001));
-    gradient->x() = (dx0 + fz * (dx1 - dx0)) / voxel_mm_;
-    gradient->y() = ((c10 - c00) + fz * ((c11 - c01) - (c10 - c00))) / voxel_mm_;
-    gradient->z() = (c1 - c0) / voxel_mm_;
+    gradient.x() = (dx0 + fz * (dx1 - dx0)) * voxels_per_mm_;
+    gradient.y() = ((c10 - c00) + fz * ((c11 - c01) - (c10 - c00))) * voxels_per_mm_;
+    gradient.z() = (c1 - c0) * voxels_per_mm_;
   }
   return c0 + fz * (c1 - c0) + outside_mm;
+}
+
+double PartDistanceField::interpolate(const Eigen::Vector3d& point_part_mm,
+                                      Eigen::Vector3d* gradient) const {
+  Eigen::Vector3d unused;
+  return gradient ? sample<true>(point_part_mm, *gradient) : sample<false>(point_part_mm, unused);
 }
 
 double field_truncated_mean_square_mm2(const RegistrationPoints& scene,
@@ -128,9 +144,10 @@ double field_truncated_mean_square_mm2(const RegistrationPoints& scene,
                                        const RigidTransform& T_part_scene, double truncation_mm) {
   if (scene.size() == 0) return truncation_mm * truncation_mm;
   const double limit2 = truncation_mm * truncation_mm;
+  Eigen::Vector3d unused;
   double sum = 0;
   for (int i = 0; i < scene.size(); ++i) {
-    const double d = field.distance_mm(T_part_scene.apply(scene.position_mm.col(i)));
+    const double d = field.sample<false>(T_part_scene.apply(scene.position_mm.col(i)), unused);
     sum += std::min(d * d, limit2);
   }
   return sum / scene.size();
@@ -140,8 +157,10 @@ double field_fraction_within(const RegistrationPoints& scene, const PartDistance
                              const RigidTransform& T_part_scene, double distance_mm) {
   if (scene.size() == 0) return 0;
   int within = 0;
+  Eigen::Vector3d unused;
   for (int i = 0; i < scene.size(); ++i)
-    within += field.distance_mm(T_part_scene.apply(scene.position_mm.col(i))) <= distance_mm;
+    within += field.sample<false>(T_part_scene.apply(scene.position_mm.col(i)), unused) <=
+              distance_mm;
   return static_cast<double>(within) / scene.size();
 }
 
@@ -159,13 +178,14 @@ RigidTransform align_in_distance_field(const RegistrationPoints& scene,
     for (int i = 0; i < scene.size(); ++i) {
       const Eigen::Vector3d q = T.apply(scene.position_mm.col(i));
       Eigen::Vector3d gradient;
-      const double d = field.distance_mm(q, gradient);
+      const double d = field.sample<true>(q, gradient);
       if (!(d < truncation_mm) || gradient.squaredNorm() < 1e-6) continue;
       // d(q + omega x q + t) ~ d + g . t + (q x g) . omega
       const Eigen::Vector3d moment = q.cross(gradient);
       Vector6d jacobian;
       jacobian << moment.x(), moment.y(), moment.z(), gradient.x(), gradient.y(), gradient.z();
-      normal.selfadjointView<Eigen::Lower>().rankUpdate(jacobian);
+      // The full outer product: fixed-size and inlined, it is cheaper than rankUpdate's call.
+      normal.noalias() += jacobian * jacobian.transpose();
       right -= jacobian * d;
       ++used;
     }

@@ -24,15 +24,13 @@ RigidTransform in_plane_turn(int k, int turns, const Eigen::Vector3d& scene_cent
 std::vector<PoseHypothesis> generate_pose_hypotheses(const RegistrationPoints& scene,
                                                      const RegistrationPoints& model,
                                                      const PoseFromPatches& from_patches,
-                                                     const RegistrationParameters& registration,
                                                      const PoseHypothesisParameters& parameters) {
   std::vector<PoseHypothesis> hypotheses;
   if (scene.size() == 0 || model.size() == 0) return hypotheses;
   if (from_patches.status == PatchPoseStatus::ok)
     hypotheses.push_back({PoseHypothesisSource::kPatchGroups, from_patches.T_model_scene});
-  const PrincipalAxesEstimate axes = estimate_by_principal_axes(scene, model, registration);
-  if (axes.status != PrincipalAxesStatus::too_few_points)
-    hypotheses.push_back({PoseHypothesisSource::kPrincipalAxes, axes.T_model_scene});
+  for (const RigidTransform& T_model_scene : principal_axes_candidates(scene, model))
+    hypotheses.push_back({PoseHypothesisSource::kPrincipalAxes, T_model_scene});
   const Eigen::Vector3d scene_centre = centroid_mm(scene);
   const Eigen::Vector3d model_centre = centroid_mm(model);
   for (int k = 0; k < parameters.in_plane_turns; ++k)

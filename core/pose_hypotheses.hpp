@@ -1,17 +1,16 @@
 #pragma once
 // Initial-pose hypotheses for registering a scene view onto a model view (ch. 6 needs a
 // start within its basin of convergence): the pose implied by the COSMOS correspondence
-// (§5.3.5), the principal-axes estimate (§6.7.2), and turns about the viewing axis (+z) that
-// align the two views' centroids — both views are seen from the scanner, so what is unknown
-// is mostly that turn plus a small tilt. The recognizer ranks and aligns them against the
-// part's distance field (part_pose_search.hpp), so registration refines only the few most
-// promising.
+// (§5.3.5), the principal-axes estimate (§6.7.2: all four sign choices), and turns about the
+// viewing axis (+z) that align the two views' centroids — both views are seen from the
+// scanner, so what is unknown is mostly that turn plus a small tilt. The recognizer ranks and
+// aligns them against the part's distance field (part_pose_search.hpp), so registration
+// refines only the few most promising.
 #include <vector>
 
 #include "core/pose_from_patches.hpp"
 #include "core/registration_points.hpp"
 #include "core/rigid_transform.hpp"
-#include "core/view_registration.hpp"
 
 namespace cosmos {
 
@@ -36,7 +35,6 @@ RigidTransform in_plane_turn(int k, int turns, const Eigen::Vector3d& scene_cent
 std::vector<PoseHypothesis> generate_pose_hypotheses(const RegistrationPoints& scene,
                                                      const RegistrationPoints& model,
                                                      const PoseFromPatches& from_patches,
-                                                     const RegistrationParameters& registration,
                                                      const PoseHypothesisParameters& parameters);
 
 }  // namespace cosmos

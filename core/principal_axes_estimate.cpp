@@ -27,7 +27,33 @@ PrincipalAxes principal_axes(const RegistrationPoints& points) {
   return {centroid, axes, gap};
 }
 
+
+// The sign flips of the axes that keep det = +1.
+constexpr std::array<std::array<double, 3>, 4> kFlips{
+    {{1, 1, 1}, {-1, -1, 1}, {-1, 1, -1}, {1, -1, -1}}};
+
+RigidTransform candidate(const PrincipalAxes& scene, const PrincipalAxes& model,
+                         const std::array<double, 3>& flip) {
+  RigidTransform T_model_scene;
+  // R = M_model M_scene^-1, M orthonormal so its inverse is its transpose.
+  T_model_scene.rotation =
+      model.axes * Eigen::Vector3d(flip[0], flip[1], flip[2]).asDiagonal() *
+      scene.axes.transpose();
+  T_model_scene.translation_mm = model.centroid_mm - T_model_scene.rotation * scene.centroid_mm;
+  return T_model_scene;
+}
+
 }  // namespace
+
+std::vector<RigidTransform> principal_axes_candidates(const RegistrationPoints& scene,
+                                                      const RegistrationPoints& model) {
+  std::vector<RigidTransform> candidates;
+  if (scene.size() < 3 || model.size() < 3) return candidates;
+  const PrincipalAxes scene_axes = principal_axes(scene);
+  const PrincipalAxes model_axes = principal_axes(model);
+  for (const auto& flip : kFlips) candidates.push_back(candidate(scene_axes, model_axes, flip));
+  return candidates;
+}
 
 PrincipalAxesEstimate estimate_by_principal_axes(const RegistrationPoints& scene,
                                                  const RegistrationPoints& model,
@@ -37,17 +63,9 @@ PrincipalAxesEstimate estimate_by_principal_axes(const RegistrationPoints& scene
   if (scene.size() < 3 || model.size() < 3) return estimate;
   const PrincipalAxes scene_axes = principal_axes(scene);
   const PrincipalAxes model_axes = principal_axes(model);
-  // The sign flips of the axes that keep det = +1.
-  const std::array<Eigen::Vector3d, 4> flips{Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(-1, -1, 1),
-                                             Eigen::Vector3d(-1, 1, -1),
-                                             Eigen::Vector3d(1, -1, -1)};
   bool first = true;
-  for (const Eigen::Vector3d& flip : flips) {
-    RigidTransform T_model_scene;
-    // R = M_model M_scene^-1, M orthonormal so its inverse is its transpose.
-    T_model_scene.rotation = model_axes.axes * flip.asDiagonal() * scene_axes.axes.transpose();
-    T_model_scene.translation_mm =
-        model_axes.centroid_mm - T_model_scene.rotation * scene_axes.centroid_mm;
+  for (const auto& flip : kFlips) {
+    const RigidTransform T_model_scene = candidate(scene_axes, model_axes, flip);
     const AlignmentScore score = score_alignment(scene, model, T_model_scene, parameters);
     if (first || score.truncated_mean_square_mm2 < estimate.score.truncated_mean_square_mm2) {
       estimate.T_model_scene = T_model_scene;

@@ -6,6 +6,8 @@
 // choices allow are each scored by one correspondence pass (score_alignment) and the best
 // is kept: the thesis leaves that choice open. Good only when the views see most of the same
 // surface and its in-plane extent is not round (distinct eigenvalues).
+#include <vector>
+
 #include "core/registration_points.hpp"
 #include "core/rigid_transform.hpp"
 #include "core/view_registration.hpp"
@@ -22,6 +24,11 @@ struct PrincipalAxesEstimate {
   // hence R, are ill-defined.
   double min_relative_eigenvalue_gap = 0.0;
 };
+
+// The four candidates themselves (the sign choices), unscored, for a caller that ranks them
+// another way; empty when either view has fewer than 3 points.
+std::vector<RigidTransform> principal_axes_candidates(const RegistrationPoints& scene,
+                                                      const RegistrationPoints& model);
 
 // ambiguous_axes when the relative gap is below `min_relative_gap` (the estimate is still
 // filled in).

@@ -183,7 +183,7 @@ RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene, const ScenePo
     const ModelSurface model(view);
     std::vector<RigidTransform> generated;
     for (const PoseHypothesis& hypothesis : generate_pose_hypotheses(
-             scene_points.coarse, model.points(), from_patches, parameters_.registration,
+             scene_points.coarse, model.points(), from_patches,
              {.in_plane_turns = parameters_.in_plane_hypotheses}))
       generated.push_back(hypothesis.T_model_scene);
     return align_view_starts_in_field(scene_points.all, model_base_, selected.view, generated,

@@ -22,9 +22,11 @@ struct BlendedPlane {
 // The four cells around (x, y) must all be control points: near holes and borders the
 // blend would extrapolate. Each cell's local fit is evaluated (height and slopes) at the
 // query, then blended with bilinear weights.
-bool blend_planes(const RegistrationPoints& model, double x_mm, double y_mm, BlendedPlane& out) {
-  const double u = (x_mm - model.origin_x_mm) / model.spacing_x_mm;
-  const double v = (y_mm - model.origin_y_mm) / model.spacing_y_mm;
+// `cells_per_mm`: 1 / the grid spacings (the caller divides once, not at every step).
+bool blend_planes(const RegistrationPoints& model, const Eigen::Vector2d& cells_per_mm,
+                  double x_mm, double y_mm, BlendedPlane& out) {
+  const double u = (x_mm - model.origin_x_mm) * cells_per_mm.x();
+  const double v = (y_mm - model.origin_y_mm) * cells_per_mm.y();
   if (!(u >= 0.0 && v >= 0.0 && u < model.grid_width - 1 && v < model.grid_height - 1))
     return false;
   const int u0 = static_cast<int>(u), v0 = static_cast<int>(v);
@@ -59,10 +61,12 @@ CorrespondenceStatus find_tangent_plane(const RegistrationPoints& model,
   const double settled_mm = kSettledCellFraction * std::min(model.spacing_x_mm, model.spacing_y_mm);
   const double direction_norm = line_direction.norm();
   Eigen::Vector2d foot = point_mm.head<2>();
+  const Eigen::Vector2d cells_per_mm(1.0 / model.spacing_x_mm, 1.0 / model.spacing_y_mm);
   out.steps = 0;
   while (out.steps < max_steps) {
     BlendedPlane plane;
-    if (!blend_planes(model, foot.x(), foot.y(), plane)) return CorrespondenceStatus::off_model;
+    if (!blend_planes(model, cells_per_mm, foot.x(), foot.y(), plane))
+      return CorrespondenceStatus::off_model;
     ++out.steps;
     const double norm = std::sqrt(1.0 + plane.a * plane.a + plane.b * plane.b);
     // (-a, -b, 1) . direction: the line's approach to the plane, unnormalized.

@@ -142,7 +142,7 @@ TEST_F(PartPoseSearch, AlignsTheStartsOfAViewFarFromTheTruthOntoTheNearestView) 
     std::vector<RigidTransform> starts;
     for (const PoseHypothesis& hypothesis :
          generate_pose_hypotheses(scene.points, start_surface.points(), PoseFromPatches{},
-                                  parameters.registration, {.in_plane_turns = 12}))
+                                  {.in_plane_turns = 12}))
       starts.push_back(hypothesis.T_model_scene);
     const std::vector<ViewPoseHypothesis> aligned =
         align_view_starts_in_field(scene.points, *base_, start_view, starts, model,
