@@ -163,9 +163,11 @@ void smooth_frame_row(const SmoothingRowInput& in, float* const* out_frame,
   const int begin = std::clamp(in.column_begin, 0, in.width);
   const int end = in.column_end < 0 ? in.width : std::clamp(in.column_end, begin, in.width);
   // Outside the range every pixel is invalid and keeps its frame, as inside: a copy.
-  for (int m = 0; m < kFrameComponents; ++m) {
-    std::copy(in.frame[1][m], in.frame[1][m] + begin, out_frame[m]);
-    std::copy(in.frame[1][m] + end, in.frame[1][m] + in.width, out_frame[m] + end);
+  if (in.copy_outside_range) {
+    for (int m = 0; m < kFrameComponents; ++m) {
+      std::copy(in.frame[1][m], in.frame[1][m] + begin, out_frame[m]);
+      std::copy(in.frame[1][m] + end, in.frame[1][m] + in.width, out_frame[m] + end);
+    }
   }
   if (begin >= end) return;
   if (in.width <= 2) {
@@ -201,8 +203,9 @@ class StaggeredPlanes {
       : plane_floats_(field.frame[0].size()),
         stride_floats_(plane_floats_ + kStaggerFloats),
         storage_(new float[(kFramePlanes + 3) * stride_floats_]) {
-    // Buffer 1 needs no copy: a pass writes every pixel of every row (smooth_frame_row).
-    for (int m = 0; m < kFrameComponents; ++m) copy_in(field.frame[m], frame(0, m));
+    // Both buffers: the passes then leave the invalid ends of the rows alone.
+    for (int buffer = 0; buffer < 2; ++buffer)
+      for (int m = 0; m < kFrameComponents; ++m) copy_in(field.frame[m], frame(buffer, m));
     for (int axis = 0; axis < 3; ++axis) copy_in(field.position_mm[axis], position(axis));
   }
   float* frame(int buffer, int component) { return plane(buffer * kFrameComponents + component); }
@@ -215,7 +218,7 @@ class StaggeredPlanes {
   }
 
  private:
-  static constexpr std::size_t kStaggerFloats = 16 * 5;  // 5 cache lines  // 5 cache lines
+  static constexpr std::size_t kStaggerFloats = 16 * 5;  // 5 cache lines
   float* plane(int index) { return storage_.get() + index * stride_floats_; }
   void copy_in(const PixelGrid<float>& grid, float* to) {
     std::copy(grid.data(), grid.data() + plane_floats_, to);
@@ -246,6 +249,7 @@ void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& para
       in.same_side = field.same_side.row(row);
       in.column_begin = extents[static_cast<std::size_t>(row)][0];
       in.column_end = extents[static_cast<std::size_t>(row)][1];
+      in.copy_outside_range = false;
       const int rows[3] = {std::max(row - 1, 0), row, std::min(row + 1, height - 1)};
       for (int r = 0; r < 3; ++r) {
         for (int axis = 0; axis < 3; ++axis)

@@ -28,6 +28,9 @@ struct SmoothingRowInput {
   // caller that knows where the row's valid pixels lie skips the smoothing of the rest.
   int column_begin = 0;
   int column_end = -1;
+  // False when the output row already holds the frames outside the range (a caller that
+  // passes the same range every time and filled both of its buffers once).
+  bool copy_outside_range = true;
   const std::uint8_t* valid = nullptr;
   const std::uint8_t* same_side = nullptr;
   const float* position[3][3] = {};

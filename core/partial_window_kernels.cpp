@@ -43,13 +43,16 @@ bool PartialWindowKernels::solve(const Mask& mask, Kernel& kernel) const {
   const auto diagonal = solver.vectorD();
   if (solver.info() != Eigen::Success || diagonal.minCoeff() <= 1e-9 * diagonal.maxCoeff())
     return false;
-  for (int k = 0; k < samples; ++k) {
-    kernel.col(k).setZero();
-    if (!is_valid(mask, k)) continue;
-    const Eigen::Matrix<double, Terms, 1> c =
-        solver.solve(monomials_[static_cast<std::size_t>(k)].template head<Terms>());
-    kernel.col(k) = c.template head<6>();
-  }
+  // Every valid sample's right side at once (the invalid ones' columns stay zero): one
+  // triangular solve over a matrix instead of one per sample. Bounded size, on the stack: the
+  // real-time loop fits rows with this and allocates nothing.
+  using RightSides = Eigen::Matrix<double, Terms, Eigen::Dynamic, 0, Terms, kMaxSamples>;
+  RightSides right_sides = RightSides::Zero(Terms, samples);
+  for (int k = 0; k < samples; ++k)
+    if (is_valid(mask, k))
+      right_sides.col(k) = monomials_[static_cast<std::size_t>(k)].template head<Terms>();
+  solver.solveInPlace(right_sides);
+  kernel = right_sides.template topRows<6>();
   return true;
 }
 
