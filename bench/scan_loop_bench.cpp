@@ -51,7 +51,7 @@ namespace fs = std::filesystem;
 // for a p99.9 over a few thousand profiles, few enough to generate 3200-point streams quickly.
 constexpr int kStreamParts = 5;
 constexpr int kCellParts = 12;  // unpaced whole-cell run: enough parts for a stable median
-constexpr int kPacedParts = 8;  // paced run: real time, about 1.5 s of belt
+constexpr int kPacedParts = 32;  // paced run: real time, about 5 s of belt
 constexpr std::uint64_t kSeed = 7;
 // Profiles timed per ScanLoopProcess run: about five passes over the 5-part stream, so p99.9
 // is the 10th slowest of 10,000 rather than an estimate from the iteration count the library

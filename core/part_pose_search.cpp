@@ -1,8 +1,6 @@
 #include "core/part_pose_search.hpp"
 
 #include <algorithm>
-#include <memory>
-#include <utility>
 
 #include "core/model_surface.hpp"
 #include "core/pose_hypotheses.hpp"
@@ -119,7 +117,8 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
                                                  const ModelBase& base, int part,
                                                  const PartSearchModel& model,
                                                  const RegistrationParameters& registration,
-                                                 const PartPoseSearchParameters& parameters) {
+                                                 const PartPoseSearchParameters& parameters,
+                                                 ModelSurfaces& surfaces) {
   std::vector<ViewPoseHypothesis> best;
   const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
   const PartDistanceField& field = model.field;
@@ -149,22 +148,13 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
   // (ch. 6) on the subset, and ranked against the whole part again.
   RegistrationParameters short_registration = registration;
   short_registration.max_iterations = parameters.refinement_iterations;
-  // Poses converge in groups, so many share a nearest view: each is unpacked once.
-  std::vector<std::pair<int, std::unique_ptr<ModelSurface>>> surfaces;
-  const auto surface_of = [&](int view) -> const RegistrationPoints& {
-    for (const auto& [unpacked_view, surface] : surfaces)
-      if (unpacked_view == view) return surface->points();
-    surfaces.emplace_back(
-        view, std::make_unique<ModelSurface>(base.views[static_cast<std::size_t>(view)]));
-    return surfaces.back().second->points();
-  };
   for (const FieldHypothesis& hypothesis : hypotheses) {
     if (!parameters.refinement_gate.passes(scoring, field, hypothesis.T_part_scene)) continue;
     const int view = nearest_view(base, part, hypothesis.T_part_scene);
     const ModelBaseView& model_view = base.views[static_cast<std::size_t>(view)];
     const RigidTransform T_model_scene = model_view.T_scanner_part * hypothesis.T_part_scene;
     const RegistrationResult refined =
-        register_views(scoring, surface_of(view), T_model_scene, short_registration);
+        register_views(scoring, surfaces.points(view), T_model_scene, short_registration);
     const RigidTransform& T =
         refined.status == RegistrationStatus::invalid_input ? T_model_scene : refined.T_model_scene;
     best.push_back({view, T,

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/model_base.hpp"
+#include "core/model_surface.hpp"
 #include "core/part_distance_field.hpp"
 #include "core/registration_points.hpp"
 #include "core/rigid_transform.hpp"
@@ -63,11 +64,13 @@ struct ViewPoseHypothesis {
 };
 
 // `model`: the part's build_part_search_model.
+// The views' surfaces come from (and stay in) `surfaces`.
 std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene,
                                                  const ModelBase& base, int part,
                                                  const PartSearchModel& model,
                                                  const RegistrationParameters& registration,
-                                                 const PartPoseSearchParameters& parameters);
+                                                 const PartPoseSearchParameters& parameters,
+                                                 ModelSurfaces& surfaces);
 
 // The same against the part's field, for the few starts verification has on one selected view
 // (§5.3.5 patch groups, §6.7.2 principal axes, turns): a start half a view away from the

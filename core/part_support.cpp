@@ -4,22 +4,21 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/model_surface.hpp"
 
 namespace cosmos {
 
 PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBase& base,
-                                 int matched, const RegistrationPoints& matched_points,
-                                 const RigidTransform& T_model_scene,
+                                 int matched, const RigidTransform& T_model_scene,
                                  const RegistrationParameters& registration,
-                                 const PartSupportParameters& parameters) {
+                                 const PartSupportParameters& parameters,
+                                 ModelSurfaces& surfaces) {
   PartSupport support;
   if (scene.size() == 0) return support;
   RegistrationParameters strict = registration;
   strict.max_correspondence_distance_mm = parameters.inlier_distance_mm;
   const ModelBaseView& view = base.views[static_cast<std::size_t>(matched)];
   std::vector<double> nearest_mm, distance_mm;
-  correspondence_distances(scene, matched_points, T_model_scene, strict, nearest_mm);
+  correspondence_distances(scene, surfaces.points(matched), T_model_scene, strict, nearest_mm);
   support.views_used = 1;
 
   const RigidTransform T_part_scene = view.T_scanner_part.inverse() * T_model_scene;
@@ -44,8 +43,7 @@ PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBas
         unexplained.push_back(static_cast<int>(i));
     if (unexplained.empty()) break;
     const ModelBaseView& other = base.views[static_cast<std::size_t>(v)];
-    const ModelSurface other_surface(other);
-    correspondence_distances(select_points(scene, unexplained), other_surface.points(),
+    correspondence_distances(select_points(scene, unexplained), surfaces.points(v),
                              other.T_scanner_part * T_part_scene, strict, distance_mm);
     for (std::size_t k = 0; k < unexplained.size(); ++k) {
       double& nearest = nearest_mm[static_cast<std::size_t>(unexplained[k])];

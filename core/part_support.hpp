@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/model_base.hpp"
+#include "core/model_surface.hpp"
 #include "core/registration_points.hpp"
 #include "core/rigid_transform.hpp"
 #include "core/view_registration.hpp"
@@ -30,12 +31,12 @@ struct PartSupport {
   int views_used = 0;
 };
 
-// `matched` indexes ModelBase::views; `matched_points` is its unpacked registration surface
-// (the caller already has it); T_model_scene registers the scene onto it.
+// `matched` indexes ModelBase::views; T_model_scene registers the scene onto it. The views'
+// surfaces come from (and stay in) `surfaces`.
 PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBase& base,
-                                 int matched, const RegistrationPoints& matched_points,
-                                 const RigidTransform& T_model_scene,
+                                 int matched, const RigidTransform& T_model_scene,
                                  const RegistrationParameters& registration,
-                                 const PartSupportParameters& parameters);
+                                 const PartSupportParameters& parameters,
+                                 ModelSurfaces& surfaces);
 
 }  // namespace cosmos

@@ -125,8 +125,10 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
 
   ScenePoints points{std::move(scene_points.points), {}};
   points.coarse = spread_subset(points.all, parameters_.coarse_points);
+  ModelSurfaces surfaces(model_base_);
   for (const SpectralCandidate& candidate : selected) {
-    result.candidates.push_back(verify(analysis, points, candidate, result.timings.matching_ms,
+    result.candidates.push_back(verify(analysis, points, candidate, surfaces,
+                                       result.timings.matching_ms,
                                        result.timings.registration_ms));
     ++result.views_examined;
     if (result.candidates.back().registered &&
@@ -135,7 +137,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   }
   const RecognitionCandidate* best = best_candidate(result.candidates);
   if (!best || best->inlier_fraction < parameters_.sufficient_support) {
-    search_candidate_parts(analysis, points, result);
+    search_candidate_parts(analysis, points, surfaces, result);
     best = best_candidate(result.candidates);
   }
   if (!best) return finish("no candidate view could be registered");
@@ -163,7 +165,8 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
 }
 
 RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene, const ScenePoints& scene_points,
-                                        const SpectralCandidate& selected, double& matching_ms,
+                                        const SpectralCandidate& selected,
+                                        ModelSurfaces& surfaces, double& matching_ms,
                                         double& registration_ms) const {
   const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(selected.view)];
   RecognitionCandidate candidate;
@@ -180,10 +183,9 @@ RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene, const ScenePo
 
   stage = Clock::now();
   const std::vector<ViewPoseHypothesis> starts = [&] {
-    const ModelSurface model(view);
     std::vector<RigidTransform> generated;
     for (const PoseHypothesis& hypothesis : generate_pose_hypotheses(
-             scene_points.coarse, model.points(), from_patches,
+             scene_points.coarse, surfaces.points(selected.view), from_patches,
              {.in_plane_turns = parameters_.in_plane_hypotheses}))
       generated.push_back(hypothesis.T_model_scene);
     return align_view_starts_in_field(scene_points.all, model_base_, selected.view, generated,
@@ -191,12 +193,13 @@ RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene, const ScenePo
                                       parameters_.field_starts, parameters_.search,
                                       parameters_.registered_hypotheses);
   }();
-  register_candidate(scene_points, starts, candidate);
+  register_candidate(scene_points, starts, surfaces, candidate);
   registration_ms += elapsed_ms(stage);
   return candidate;
 }
 
 void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
+                                        ModelSurfaces& surfaces,
                                         RecognitionResult& result) const {
   // Parts in the order of their closest view.
   std::vector<int> parts = selector_.rank_parts(scene.moments);
@@ -208,7 +211,7 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
     Clock::time_point stage = Clock::now();
     const std::vector<ViewPoseHypothesis> hypotheses =
         search_part_pose(scene_points.all, model_base_, part, part_search_model(part),
-                         parameters_.registration, parameters_.search);
+                         parameters_.registration, parameters_.search, surfaces);
     result.timings.registration_ms += elapsed_ms(stage);
     for (const ViewPoseHypothesis& hypothesis : hypotheses) {
       const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(hypothesis.view)];
@@ -221,7 +224,7 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
       candidate.goodness = match_patch_groups(scene.view, view.cosmos, parameters_.matching).score;
       result.timings.matching_ms += elapsed_ms(stage);
       stage = Clock::now();
-      register_candidate(scene_points, {hypothesis}, candidate);
+      register_candidate(scene_points, {hypothesis}, surfaces, candidate);
       result.timings.registration_ms += elapsed_ms(stage);
       result.candidates.push_back(candidate);
       // As in verification: a pose that explains this much of the scene ends the search.
@@ -233,6 +236,7 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
 
 void Recognizer::register_candidate(const ScenePoints& scene_points,
                                     const std::vector<ViewPoseHypothesis>& starts,
+                                    ModelSurfaces& surfaces,
                                     RecognitionCandidate& candidate) const {
   RegistrationResult best;
   int best_view = -1;
@@ -250,8 +254,7 @@ void Recognizer::register_candidate(const ScenePoints& scene_points,
                                               start_view.T_scanner_part.inverse() *
                                                   start.T_model_scene))
       continue;
-    const ModelSurface surface(start_view);
-    const RegistrationPoints& model = surface.points();
+    const RegistrationPoints& model = surfaces.points(start.view);
     RegistrationResult registration =
         register_views(scene_points.coarse, model, start.T_model_scene, coarse);
     if (registration.status == RegistrationStatus::invalid_input) continue;
@@ -268,17 +271,15 @@ void Recognizer::register_candidate(const ScenePoints& scene_points,
   }
   if (!candidate.registered) return;
   candidate.view = best_view;
-  const ModelSurface surface(model_base_.views[static_cast<std::size_t>(best_view)]);
-  const RegistrationPoints& model = surface.points();
   // Most candidates of the pose search are wrong parts: the spread subset tells them apart at
   // a fifth of the cost, and only the plausible ones are measured on every point.
   PartSupport support =
-      measure_part_support(scene_points.coarse, model_base_, candidate.view, model,
-                           best.T_model_scene, parameters_.registration, parameters_.support);
+      measure_part_support(scene_points.coarse, model_base_, candidate.view, best.T_model_scene,
+                           parameters_.registration, parameters_.support, surfaces);
   if (support.inlier_fraction >= parameters_.plausible_support)
-    support = measure_part_support(scene_points.all, model_base_, candidate.view, model,
+    support = measure_part_support(scene_points.all, model_base_, candidate.view,
                                    best.T_model_scene, parameters_.registration,
-                                   parameters_.support);
+                                   parameters_.support, surfaces);
   candidate.registration_status = best.status;
   candidate.T_model_scene = best.T_model_scene;
   candidate.rms_mm = support.rms_mm;

@@ -155,16 +155,16 @@ class Recognizer {
   };
 
   RecognitionCandidate verify(const ViewAnalysis& scene, const ScenePoints& scene_points,
-                              const SpectralCandidate& selected, double& matching_ms,
-                              double& registration_ms) const;
+                              const SpectralCandidate& selected, ModelSurfaces& surfaces,
+                              double& matching_ms, double& registration_ms) const;
   // The fallback: every view of the candidates' parts (part_pose_search.hpp).
   void search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
-                              RecognitionResult& result) const;
+                              ModelSurfaces& surfaces, RecognitionResult& result) const;
   // Registers from each start on its view, keeps the pose its view supports best (the
   // candidate's view becomes that one), then judges it against the part's views around it
   // (part_support.hpp).
   void register_candidate(const ScenePoints& scene_points,
-                          const std::vector<ViewPoseHypothesis>& starts,
+                          const std::vector<ViewPoseHypothesis>& starts, ModelSurfaces& surfaces,
                           RecognitionCandidate& candidate) const;
 
   const ModelBase& model_base_;

@@ -63,13 +63,14 @@ TEST_F(PartPoseSearch, FindsTheTruePoseOfRandomPoseScansAndOtherPartsFitWorse) {
   std::vector<PartSearchModel> models;
   for (int part = 0; part < parts; ++part)
     models.push_back(build_part_search_model(*base_, part, parameters.field));
+  ModelSurfaces surfaces(*base_);
   for (std::uint64_t seed = 101; seed < 111; ++seed) {
     const int part = static_cast<int>(seed % parts);
     const Scan scene = scan(part, seed);
     ASSERT_GT(scene.points.size(), 100) << seed;
     const std::vector<ViewPoseHypothesis> found =
         search_part_pose(scene.points, *base_, part, models[static_cast<std::size_t>(part)],
-                         parameters.registration, parameters.search);
+                         parameters.registration, parameters.search, surfaces);
     ASSERT_FALSE(found.empty()) << seed;
     const GroundTruthPose& truth = *scene.image.ground_truth;
     const RigidTransform T_part_scene_true =
@@ -104,7 +105,7 @@ TEST_F(PartPoseSearch, FindsTheTruePoseOfRandomPoseScansAndOtherPartsFitWorse) {
     const int other = (part + 1) % parts;
     const std::vector<ViewPoseHypothesis> elsewhere =
         search_part_pose(scene.points, *base_, other, models[static_cast<std::size_t>(other)],
-                         parameters.registration, parameters.search);
+                         parameters.registration, parameters.search, surfaces);
     // Another part fits worse, or so badly that no pose passes the gate at all.
     if (elsewhere.empty()) continue;
     EXPECT_GT(elsewhere[0].truncated_mean_square_mm2, 2 * found[0].truncated_mean_square_mm2)
