@@ -73,7 +73,7 @@ void BM_Smoothing15Iterations(benchmark::State& state) {
     state.PauseTiming();
     auto frames = fitted;
     state.ResumeTiming();
-    smooth_curvatures(frames, parameters.smoothing);
+    smooth_curvatures(frames, 0.4, 0.4, parameters.smoothing);
     benchmark::DoNotOptimize(frames.frame[kNx].data());
   }
 }
@@ -89,7 +89,7 @@ const Classified& classified() {
     const CosmosParameters parameters;
     Classified c;
     c.frames = fit_local_surfaces(surface(), parameters.fit);
-    smooth_curvatures(c.frames, parameters.smoothing);
+    smooth_curvatures(c.frames, 0.4, 0.4, parameters.smoothing);
     c.field = classify_surface(c.frames, 0.4, 0.4, parameters.shape_index);
     return c;
   }();

@@ -8,7 +8,8 @@ namespace cosmos {
 ViewAnalysis analyze_view(const RangeImage& image, const CosmosParameters& parameters) {
   ViewAnalysis analysis;
   analysis.frames = fit_local_surfaces(image, parameters.fit);
-  smooth_curvatures(analysis.frames, parameters.smoothing);
+  smooth_curvatures(analysis.frames, image.pixel_size_x_mm, image.pixel_size_y_mm,
+                    parameters.smoothing);
   analysis.field = classify_surface(analysis.frames, image.pixel_size_x_mm, image.pixel_size_y_mm,
                                     parameters.shape_index);
   analysis.segmentation = segment_csmps(analysis.frames, analysis.field, parameters.segmentation);

@@ -34,7 +34,7 @@ inline float tensor_norm2(float xx, float xy, float xz, float yy, float yz, floa
 // Rows of one neighbour direction, shifted so that index c addresses the neighbour of c.
 struct NeighborRows {
   const float* frame[kFrameComponents];
-  const float* position[3];
+  const float* z_mm;
 };
 
 // One iteration for columns [begin, end): every pixel starts from its own frame and adds the
@@ -49,8 +49,9 @@ void smooth_columns(const SmoothingRowInput& in, const NeighborRows (&neighbors)
                     float* const* out, int begin, int end, const RobustScales& s,
                     std::integer_sequence<int, K...>) {
   const float* const* f = in.frame[1];
-  const float *pix = in.position[1][0], *piy = in.position[1][1], *piz = in.position[1][2];
+  const float* piz = in.z_mm[1];
   const std::uint8_t* mask = in.same_side;
+  const float step_x = in.pixel_size_x_mm, step_y = in.pixel_size_y_mm;
   const std::uint8_t* valid = in.valid;
   const float floor2 = kCurvatureFloorPerMm * kCurvatureFloorPerMm;
   float* o[kFrameComponents];
@@ -78,19 +79,28 @@ void smooth_columns(const SmoothingRowInput& in, const NeighborRows (&neighbors)
       float sum_w[6] = {w0 * wi[0], w0 * wi[1], w0 * wi[2], w0 * wi[3], w0 * wi[4], w0 * wi[5]};
       float sum_weight = w0;
       const std::uint32_t bits = chunk_bits[c - chunk];
-      auto add = [&](int k) {
+      auto add = [&](auto direction) {
+        constexpr int k = decltype(direction)::value;
+        // d = p_i - p_j: in the plane a constant of the direction (none along an axis).
+        constexpr float dc = static_cast<float>(-kNeighborOffsets[k].column);
+        constexpr float dr = static_cast<float>(-kNeighborOffsets[k].row);
         const NeighborRows& g = neighbors[k];
         const float nj[3] = {g.frame[kNx][c], g.frame[kNy][c], g.frame[kNz][c]};
         const float wj[6] = {g.frame[kWxx][c], g.frame[kWxy][c], g.frame[kWxz][c],
                              g.frame[kWyy][c], g.frame[kWyz][c], g.frame[kWzz][c]};
-        const float dx = pix[c] - g.position[0][c], dy = piy[c] - g.position[1][c],
-                    dz = piz[c] - g.position[2][c];
+        const float dz = piz[c] - g.z_mm[c];
         // Transport: the neighbour's quadric predicts the normal n_j + W_j d at this pixel. W_j d
         // is tangent to the unit n_j, so the prediction's squared length is 1 + |W_j d|^2 and
         // its inverse length is 1 - e/2 + 3e^2/8 to third order in e = |W_j d|^2 (no sqrt).
-        const float tx = wj[0] * dx + wj[1] * dy + wj[2] * dz;
-        const float ty = wj[1] * dx + wj[3] * dy + wj[4] * dz;
-        const float tz = wj[2] * dx + wj[4] * dy + wj[5] * dz;
+        float tx = wj[2] * dz, ty = wj[4] * dz, tz = wj[5] * dz;
+        if constexpr (dc != 0) {
+          const float dx = dc * step_x;
+          tx += wj[0] * dx, ty += wj[1] * dx, tz += wj[2] * dx;
+        }
+        if constexpr (dr != 0) {
+          const float dy = dr * step_y;
+          tx += wj[1] * dy, ty += wj[3] * dy, tz += wj[4] * dy;
+        }
         const float e = tx * tx + ty * ty + tz * tz;
         const float inv_len = 1.0f - 0.5f * e + 0.375f * e * e;
         const float px = (nj[0] + tx) * inv_len, py = (nj[1] + ty) * inv_len,
@@ -113,7 +123,7 @@ void smooth_columns(const SmoothingRowInput& in, const NeighborRows (&neighbors)
         for (int m = 0; m < 6; ++m) sum_w[m] += weight * wj[m];
         sum_weight += weight;
       };
-      (add(K), ...);
+      (add(std::integral_constant<int, K>{}), ...);
       const float inv_len =
           1.0f / std::sqrt(sum_n[0] * sum_n[0] + sum_n[1] * sum_n[1] + sum_n[2] * sum_n[2]);
       const float n0 = sum_n[0] * inv_len, n1 = sum_n[1] * inv_len, n2 = sum_n[2] * inv_len;
@@ -154,10 +164,8 @@ void smooth_frame_row(const SmoothingRowInput& in, float* const* out_frame,
       shifted[k].frame[m] = in.frame[r][m] + dc;
       clamped[k].frame[m] = in.frame[r][m];
     }
-    for (int axis = 0; axis < 3; ++axis) {
-      shifted[k].position[axis] = in.position[r][axis] + dc;
-      clamped[k].position[axis] = in.position[r][axis];
-    }
+    shifted[k].z_mm = in.z_mm[r] + dc;
+    clamped[k].z_mm = in.z_mm[r];
   }
   const auto directions = std::make_integer_sequence<int, 8>{};
   const int begin = std::clamp(in.column_begin, 0, in.width);
@@ -202,14 +210,14 @@ class StaggeredPlanes {
   explicit StaggeredPlanes(const DarbouxFrameField& field)
       : plane_floats_(field.frame[0].size()),
         stride_floats_(plane_floats_ + kStaggerFloats),
-        storage_(new float[(kFramePlanes + 3) * stride_floats_]) {
+        storage_(new float[(kFramePlanes + 1) * stride_floats_]) {
     // Both buffers: the passes then leave the invalid ends of the rows alone.
     for (int buffer = 0; buffer < 2; ++buffer)
       for (int m = 0; m < kFrameComponents; ++m) copy_in(field.frame[m], frame(buffer, m));
-    for (int axis = 0; axis < 3; ++axis) copy_in(field.position_mm[axis], position(axis));
+    copy_in(field.position_mm[2], z_mm());
   }
   float* frame(int buffer, int component) { return plane(buffer * kFrameComponents + component); }
-  float* position(int axis) { return plane(kFramePlanes + axis); }
+  float* z_mm() { return plane(kFramePlanes); }
   void copy_out(int buffer, DarbouxFrameField& field) {
     for (int m = 0; m < kFrameComponents; ++m) {
       const float* from = frame(buffer, m);
@@ -229,7 +237,8 @@ class StaggeredPlanes {
 
 }  // namespace
 
-void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& parameters) {
+void smooth_curvatures(DarbouxFrameField& field, double pixel_size_x_mm, double pixel_size_y_mm,
+                       const SmoothingParameters& parameters) {
   if (parameters.iterations <= 0) return;
   const int width = field.width(), height = field.height();
   // A part rarely fills its image's rows: each pass computes only the valid span of a row.
@@ -250,10 +259,11 @@ void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& para
       in.column_begin = extents[static_cast<std::size_t>(row)][0];
       in.column_end = extents[static_cast<std::size_t>(row)][1];
       in.copy_outside_range = false;
+      in.pixel_size_x_mm = static_cast<float>(pixel_size_x_mm);
+      in.pixel_size_y_mm = static_cast<float>(pixel_size_y_mm);
       const int rows[3] = {std::max(row - 1, 0), row, std::min(row + 1, height - 1)};
       for (int r = 0; r < 3; ++r) {
-        for (int axis = 0; axis < 3; ++axis)
-          in.position[r][axis] = at_row(planes.position(axis), rows[r]);
+        in.z_mm[r] = at_row(planes.z_mm(), rows[r]);
         for (int c = 0; c < kFrameComponents; ++c)
           in.frame[r][c] = at_row(planes.frame(previous, c), rows[r]);
       }

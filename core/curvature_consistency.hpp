@@ -33,7 +33,11 @@ struct SmoothingRowInput {
   bool copy_outside_range = true;
   const std::uint8_t* valid = nullptr;
   const std::uint8_t* same_side = nullptr;
-  const float* position[3][3] = {};
+  // The grid's spacing: neighbour k lies at (dc dx, dr dy) in the plane, so only the
+  // heights of the rows above, at and below are read.
+  float pixel_size_x_mm = 0;
+  float pixel_size_y_mm = 0;
+  const float* z_mm[3] = {};
   const float* frame[3][kFrameComponents] = {};
 };
 
@@ -45,6 +49,8 @@ void smooth_frame_row(const SmoothingRowInput& in, float* const* out_frame,
 std::array<int, 2> valid_column_extent(const std::uint8_t* valid, int width);
 
 // Runs parameters.iterations iterations over the whole field in place.
-void smooth_curvatures(DarbouxFrameField& field, const SmoothingParameters& parameters);
+// `field` fitted on a grid of this spacing (its positions x0 + i dx, y0 + j dy).
+void smooth_curvatures(DarbouxFrameField& field, double pixel_size_x_mm, double pixel_size_y_mm,
+                       const SmoothingParameters& parameters);
 
 }  // namespace cosmos

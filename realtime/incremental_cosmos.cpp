@@ -120,9 +120,10 @@ bool IncrementalCosmos::smooth_next(int level) {
   in.column_begin = smoothed_columns_[static_cast<std::size_t>(row)][0];
   in.column_end = smoothed_columns_[static_cast<std::size_t>(row)][1];
   const int rows[3] = {std::max(row - 1, 0), row, std::min(row + 1, rows_ - 1)};
+  in.pixel_size_x_mm = static_cast<float>(image_.pixel_size_x_mm);
+  in.pixel_size_y_mm = static_cast<float>(image_.pixel_size_y_mm);
   for (int r = 0; r < 3; ++r) {
-    for (int axis = 0; axis < 3; ++axis)
-      in.position[r][axis] = fitted_.position_mm[axis].row(rows[r]);
+    in.z_mm[r] = fitted_.position_mm[2].row(rows[r]);
     for (int c = 0; c < kFrameComponents; ++c) in.frame[r][c] = frame_row(level - 1, c, rows[r]);
   }
   float* out[kFrameComponents];
