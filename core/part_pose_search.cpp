@@ -124,24 +124,28 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
   const PartDistanceField& field = model.field;
   if (scoring.size() == 0 || field.empty()) return best;
   const double truncation_mm = parameters.field_truncation_mm;
-  const auto rescore = [&](std::vector<FieldHypothesis>& hypotheses, int iterations) {
+  // The first stages on a sparser subset still: most starts are far off, and which few
+  // hundred are not shows on fewer points.
+  const RegistrationPoints sparse = spread_subset(scoring, parameters.start_scoring_points);
+  const auto rescore = [&](const RegistrationPoints& points,
+                           std::vector<FieldHypothesis>& hypotheses, int iterations) {
     for (FieldHypothesis& hypothesis : hypotheses) {
       if (iterations > 0)
-        hypothesis.T_part_scene = align_in_distance_field(scoring, field, hypothesis.T_part_scene,
+        hypothesis.T_part_scene = align_in_distance_field(points, field, hypothesis.T_part_scene,
                                                           iterations, truncation_mm);
       hypothesis.truncated_mean_square_mm2 =
-          field_truncated_mean_square_mm2(scoring, field, hypothesis.T_part_scene, truncation_mm);
+          field_truncated_mean_square_mm2(points, field, hypothesis.T_part_scene, truncation_mm);
     }
   };
   // Against the whole part, in stages: every start as it is, the best after one alignment
   // step, the best of those after a few more.
   std::vector<FieldHypothesis> hypotheses =
       turned_view_starts(scoring, base, model, parameters.in_plane_turns);
-  rescore(hypotheses, 0);
+  rescore(sparse, hypotheses, 0);
   keep_best(hypotheses, static_cast<std::size_t>(parameters.field_candidates));
-  rescore(hypotheses, 1);
+  rescore(sparse, hypotheses, 1);
   keep_best(hypotheses, static_cast<std::size_t>(parameters.field_aligned));
-  rescore(hypotheses, parameters.field_iterations);
+  rescore(scoring, hypotheses, parameters.field_iterations);
   keep_best(hypotheses, static_cast<std::size_t>(parameters.refined_hypotheses));
 
   // Then onto the part's view nearest to each pose's viewing direction, registered there

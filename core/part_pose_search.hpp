@@ -27,6 +27,7 @@ struct PartPoseSearchParameters {
   // Scene control points used to score and align a hypothesis: 100 rank as well as 200
   // (measured on the 20-part catalog), at half the cost.
   int scoring_points = 100;
+  int start_scoring_points = 50;  // the first two stages (the starts, one alignment step)
   int in_plane_turns = 12;
   double field_truncation_mm = 10.0;  // farther points count as this far, and do not align
   int field_candidates = 512;         // kept after scoring the starts as they are
@@ -78,6 +79,7 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
 // aligning in the field takes it the rest of the way without correspondences.
 struct FieldAlignedStartParameters {
   int scoring_points = 100;
+  int start_scoring_points = 50;  // the first two stages (the starts, one alignment step)
   int aligned_starts = 4;  // the best-scoring starts, aligned
   int field_iterations = 10;
   double field_truncation_mm = 10.0;
