@@ -11,6 +11,7 @@ namespace {
 
 constexpr int kPlaneValues = 3;      // kHeight, kSlopeX, kSlopeY
 constexpr int kCurvatureValues = 3;  // kCurveXX, kCurveXY, kCurveYY
+constexpr double kOnePerNormalUnit = 1.0 / kNormalUnitsPerOne;
 static_assert(kHeight == 0 && kSlopeX == 1 && kSlopeY == 2 && kCurveXX == 3 && kSurfaceCoefficients == 6);
 
 // One allocation holding every array of a packed view, so a built base keeps one block per
@@ -131,8 +132,15 @@ RegistrationPoints unpack_registration_points(const PackedRegistrationPoints& pa
       const int v = static_cast<int>(cell / static_cast<std::size_t>(packed.grid_width));
       points.position_mm.col(i) << packed.origin_x_mm + u * packed.spacing_x_mm,
           packed.origin_y_mm + v * packed.spacing_y_mm, points.surface(kHeight, i);
-      const double nx = packed.normal_xy[2 * k] / kNormalUnitsPerOne, ny = packed.normal_xy[2 * k + 1] / kNormalUnitsPerOne;
-      points.normal.col(i) = Eigen::Vector3d(nx, ny, std::sqrt(std::max(0.0, 1.0 - nx * nx - ny * ny))).normalized();
+      // Multiplications, not divisions: the loop runs over every point of every view unpacked.
+      const double nx = packed.normal_xy[2 * k] * kOnePerNormalUnit;
+      const double ny = packed.normal_xy[2 * k + 1] * kOnePerNormalUnit;
+      const double nz2 = 1.0 - nx * nx - ny * ny;
+      if (nz2 > 0) {
+        points.normal.col(i) << nx, ny, std::sqrt(nz2);  // unit by construction
+      } else {
+        points.normal.col(i) = Eigen::Vector3d(nx, ny, 0.0).normalized();
+      }
       points.residual_rms_mm(i) = packed.residual_step_mm * packed.residual[k];
       ++i;
     }

@@ -58,8 +58,10 @@ CorrespondenceStatus find_tangent_plane(const RegistrationPoints& model,
                                         const Eigen::Vector3d& point_mm,
                                         const Eigen::Vector3d& line_direction, int max_steps,
                                         TangentPlaneCorrespondence& out) {
+  // The loop compares squared lengths: the one square root waits until the foot has settled.
   const double settled_mm = kSettledCellFraction * std::min(model.spacing_x_mm, model.spacing_y_mm);
-  const double direction_norm = line_direction.norm();
+  const double settled2 = settled_mm * settled_mm;
+  const double min_approach2 = kMinLineCosine * kMinLineCosine * line_direction.squaredNorm();
   Eigen::Vector2d foot = point_mm.head<2>();
   const Eigen::Vector2d cells_per_mm(1.0 / model.spacing_x_mm, 1.0 / model.spacing_y_mm);
   out.steps = 0;
@@ -68,18 +70,18 @@ CorrespondenceStatus find_tangent_plane(const RegistrationPoints& model,
     if (!blend_planes(model, cells_per_mm, foot.x(), foot.y(), plane))
       return CorrespondenceStatus::off_model;
     ++out.steps;
-    const double norm = std::sqrt(1.0 + plane.a * plane.a + plane.b * plane.b);
+    const double norm2 = 1.0 + plane.a * plane.a + plane.b * plane.b;
     // (-a, -b, 1) . direction: the line's approach to the plane, unnormalized.
     const double approach =
         line_direction.z() - plane.a * line_direction.x() - plane.b * line_direction.y();
-    if (std::abs(approach) < kMinLineCosine * norm * direction_norm)
-      return CorrespondenceStatus::grazing;
+    if (approach * approach < min_approach2 * norm2) return CorrespondenceStatus::grazing;
     // Line p + s d meets the plane z = h + a (x - foot_x) + b (y - foot_y).
     const double s = (plane.height_mm + plane.a * (point_mm.x() - foot.x()) +
                       plane.b * (point_mm.y() - foot.y()) - point_mm.z()) /
                      approach;
     const Eigen::Vector2d next = point_mm.head<2>() + s * line_direction.head<2>();
-    if ((next - foot).norm() < settled_mm) {
+    if ((next - foot).squaredNorm() < settled2) {
+      const double norm = std::sqrt(norm2);
       out.model_point_mm = Eigen::Vector3d(foot.x(), foot.y(), plane.height_mm);
       out.model_slope = Eigen::Vector2d(plane.a, plane.b);
       out.model_normal = Eigen::Vector3d(-plane.a, -plane.b, 1.0) / norm;
