@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace cosmos {
@@ -16,7 +17,7 @@ class PartialWindowKernels {
  public:
   static constexpr int kMaxSamples = 128;
   using Mask = std::array<std::uint64_t, kMaxSamples / 64>;  // bit k: sample k valid
-  using Kernel = Eigen::Matrix<double, 6, Eigen::Dynamic>;
+  using Kernel = Eigen::Map<const Eigen::Matrix<double, 6, Eigen::Dynamic>>;
 
   // side x side windows (side <= 11), row-major samples with u fastest; the bicubic needs 16
   // valid samples, below that the biquadratic is fitted.
@@ -31,16 +32,19 @@ class PartialWindowKernels {
     Mask mask{};
     bool filled = false;
     bool solvable = false;
-    Kernel kernel;
+    Kernel kernel;  // into kernel_storage_
   };
   template <int Terms>
-  bool solve(const Mask& mask, Kernel& kernel) const;
+  bool solve(const Mask& mask, double* kernel) const;
 
   int side_;
   bool bicubic_;
   std::vector<Eigen::Matrix<double, 10, 1>> monomials_;       // per sample
   std::vector<Eigen::Matrix<double, 10, 10>> outer_products_;  // per sample, m m^T
   std::vector<Entry> entries_;
+  // Every entry's kernel, uninitialized: a fitter touches only the entries it fills, so a
+  // large table costs nothing until used.
+  std::unique_ptr<double[]> kernel_storage_;
 };
 
 }  // namespace cosmos
