@@ -12,10 +12,18 @@
 //   PacedJitter       run_cell paced at the default line rate (2500 Hz): start-time jitter of
 //                     the acquisition loop, start_jitter_{p50,p99,max}_us, and the end of
 //                     part -> pose latency at the belt's pace, latency_p50_ms
+//   PacedReplayLatency
+//                     the same stream recorded to an LCM log once and replayed paced through
+//                     ReplaySource, as a cell behind a real scanner runs: no ray casting on the
+//                     acquisition thread, so the end of part -> pose latency_p50_ms is the
+//                     loop's and the recognizer's alone
 // Needs the catalog meshes (scripts/fetch_catalog.sh). The two whole-cell runs also need the
 // regression model base: $COSMOS_BENCH_MODEL_BASE, else build/test-data/regression-80.cmb
 // (ctest builds it, tests/CMakeLists.txt). Run: build/bench/scan_loop_bench
 #include <benchmark/benchmark.h>
+#include <unistd.h>
+
+#include <lcm/lcm-cpp.hpp>
 
 #include <algorithm>
 #include <cstdint>
@@ -34,9 +42,13 @@
 #include "firmware_bridge/kernel_timestamp.hpp"
 #include "realtime/cell_runner.hpp"
 #include "realtime/latency_histogram.hpp"
+#include "realtime/lcm_channels.hpp"
+#include "realtime/lcm_codec.hpp"
+#include "realtime/lcm_message_conversion.hpp"
 #include "realtime/memory_publisher.hpp"
 #include "realtime/part_recognition.hpp"
 #include "realtime/profile_conditioner.hpp"
+#include "realtime/replay_source.hpp"
 #include "realtime/scan_loop.hpp"
 #include "realtime/simulated_source.hpp"
 #include "sim/part_catalog.hpp"
@@ -327,6 +339,81 @@ void PacedJitter(benchmark::State& state) {
   state.counters["poses"] = static_cast<double>(latencies_ms.size());
 }
 BENCHMARK(PacedJitter)->Iterations(1)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+// The cell behind a scanner, without the simulator's ray casting competing for the two cores:
+// the simulated stream is recorded once (set-up, untimed) and replayed paced.
+void PacedReplayLatency(benchmark::State& state) {
+  const BenchRecognition& recognition = bench_recognition();
+  if (!recognition.error.empty()) {
+    state.SkipWithError(recognition.error.c_str());
+    return;
+  }
+  const fs::path log_path = fs::temp_directory_path() /
+                            ("cosmos-bench-replay-" + std::to_string(::getpid()) + ".lcmlog");
+  try {
+    SimulatedSource source(regression_catalog(), ScannerParameters{},
+                           source_settings(kPacedParts));
+    if (source.start() != SourceStatus::kOk) {
+      state.SkipWithError(std::string(source.last_error()).c_str());
+      return;
+    }
+    lcm::LogFile log(log_path.string(), "w");
+    Profile profile;
+    source.reserve(profile);
+    std::vector<std::uint8_t> bytes;
+    for (std::int64_t event_number = 0; source.next(profile) == SourceStatus::kOk;
+         ++event_number) {
+      cosmos_lcm::range_profile_t message{};
+      to_message(profile, message);
+      encode_message(message, bytes);
+      lcm::LogEvent event;
+      event.eventnum = event_number;
+      event.timestamp = profile.t_us;
+      event.channel = kProfileChannel;
+      event.datalen = static_cast<std::int32_t>(bytes.size());
+      event.data = bytes.data();
+      if (log.writeEvent(&event) != 0) throw std::runtime_error("cannot write " + log_path.string());
+    }
+  } catch (const std::exception& e) {
+    state.SkipWithError(
+        (std::string(e.what()) + " (catalog meshes: scripts/fetch_catalog.sh)").c_str());
+    return;
+  }
+  CellRunSummary summary;
+  std::vector<double> latencies_ms, recognize_ms;
+  int searched = 0;
+  for (auto _ : state) {
+    ReplaySource source(log_path);
+    if (source.start() != SourceStatus::kOk) {
+      state.SkipWithError(std::string(source.last_error()).c_str());
+      break;
+    }
+    ScanLoop loop{ScanLoopSettings{}};
+    MemoryPublisher publisher;
+    CellRunSettings settings;
+    settings.paced = true;
+    settings.line_rate_hz = ScannerParameters{}.line_rate_hz;
+    summary = run_cell(source, loop, recognition_context(recognition, loop), publisher, settings,
+                       [&](const PartRecognition& part) {
+                         recognize_ms.push_back(part.result.timings.total_ms);
+                         searched += std::any_of(
+                             part.result.candidates.begin(), part.result.candidates.end(),
+                             [](const RecognitionCandidate& c) { return c.from_pose_search; });
+                       });
+    for (const PartPose& pose : publisher.poses) latencies_ms.push_back(pose.latency_ms);
+  }
+  fs::remove(log_path);
+  state.counters["recognize_p50_ms"] = median(recognize_ms);
+  state.counters["pose_searched"] = searched;
+  state.counters["latency_p50_ms"] = median(latencies_ms);
+  state.counters["latency_max_ms"] =
+      latencies_ms.empty() ? 0 : *std::max_element(latencies_ms.begin(), latencies_ms.end());
+  state.counters["poses"] = static_cast<double>(latencies_ms.size());
+  state.counters["parts_dropped"] = static_cast<double>(summary.parts_dropped);
+  state.counters["overruns"] = static_cast<double>(summary.deadline_overruns);
+  state.counters["start_jitter_p99_us"] = summary.start_jitter_p99_us;
+}
+BENCHMARK(PacedReplayLatency)->Iterations(3)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace cosmos

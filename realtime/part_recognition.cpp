@@ -44,20 +44,27 @@ PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& c
   frames = DarbouxFrameField(width, height);
   ShapeIndexField& field = part.analysis.field;
   field = make_shape_index_field(width, height);
-  const auto owned = [&](int column, int row) {
-    if (column < c0 || column > c1 || row < 0 || row >= height) return false;
-    return builder.owns(builder.labels[static_cast<std::size_t>(row) * full_width + column]);
+  // Which pixels of the part's columns belong to it, a row at a time (with one column of
+  // margin on each side, never owned): the copy below reads each label once instead of nine
+  // times (this runs between the part's end and its pose).
+  const int mask_width = width + 2;
+  std::vector<std::uint8_t> owned(static_cast<std::size_t>(mask_width) * (height + 2), 0);
+  const auto owned_at = [&](int x, int row) -> std::uint8_t& {
+    return owned[static_cast<std::size_t>(row + 1) * mask_width + (x + 1)];
   };
   for (int row = 0; row < height; ++row) {
-    for (int column = c0; column <= c1; ++column) {
-      if (!owned(column, row)) continue;
-      const int x = column - c0;
-      const std::size_t from = static_cast<std::size_t>(row) * full_width + column;
+    const std::int64_t* labels = builder.labels.data() + static_cast<std::size_t>(row) * full_width;
+    for (int x = 0; x < width; ++x) owned_at(x, row) = builder.owns(labels[c0 + x]) ? 1 : 0;
+  }
+  for (int row = 0; row < height; ++row) {
+    for (int x = 0; x < width; ++x) {
+      if (!owned_at(x, row)) continue;
+      const std::size_t from = static_cast<std::size_t>(row) * full_width + (c0 + x);
       const std::size_t to = static_cast<std::size_t>(row) * width + x;
       part.image.z_mm[to] = source.image().z_mm[from];
       std::uint8_t same_side = source.frames().same_side[from];
       for (int k = 0; k < 8; ++k)
-        if (!owned(column + kNeighborOffsets[k].column, row + kNeighborOffsets[k].row))
+        if (!owned_at(x + kNeighborOffsets[k].column, row + kNeighborOffsets[k].row))
           same_side &= static_cast<std::uint8_t>(~(1u << k));
       frames.valid[to] = source.frames().valid[from];
       frames.same_side[to] = same_side;
