@@ -107,10 +107,14 @@ void smooth_columns(const SmoothingRowInput& in, const NeighborRows (&neighbors)
                     pz = (nj[2] + tz) * inv_len;
         const float normal_deviation =
             (1.0f - (px * ni[0] + py * ni[1] + pz * ni[2])) * s.inverse_normal_scale;
-        const float difference2 = tensor_norm2(wj[0] - wi[0], wj[1] - wi[1], wj[2] - wi[2],
-                                               wj[3] - wi[3], wj[4] - wi[4], wj[5] - wi[5]);
-        const float scale2 =
-            own_norm + tensor_norm2(wj[0], wj[1], wj[2], wj[3], wj[4], wj[5]) + floor2;
+        // |W_j - W_i|^2 = |W_j|^2 + |W_i|^2 - 2 W_j : W_i: |W_j|^2 is needed for the scale
+        // anyway, so the difference costs one inner product instead of six subtractions and a
+        // norm (its rounding is far below the scale it is compared with).
+        const float neighbor_norm = tensor_norm2(wj[0], wj[1], wj[2], wj[3], wj[4], wj[5]);
+        const float inner = wj[0] * wi[0] + wj[3] * wi[3] + wj[5] * wi[5] +
+                            2 * (wj[1] * wi[1] + wj[2] * wi[2] + wj[4] * wi[4]);
+        const float difference2 = own_norm + neighbor_norm - 2 * inner;
+        const float scale2 = own_norm + neighbor_norm + floor2;
         // linked * n_jz^2 / ((1 + normal deviation) (1 + difference2 / scale2 / c^2)), one
         // division.
         const float linked = static_cast<float>((bits >> k) & 1u);
