@@ -14,14 +14,17 @@ namespace {
 constexpr float kCurvatureFloorPerMm = 1e-3f;
 
 struct RobustScales {
-  float inverse_normal_scale;      // 1 / (1 - cos(normal scale))
+  float inverse_normal_scale;  // 1 / (1 - cos(normal scale))
+  float one_plus_inverse_normal_scale;
   float inverse_curvature_scale2;  // 1 / curvature_scale^2
   float self_weight;
 };
 
 RobustScales robust_scales(const SmoothingParameters& p) {
   const double normal_scale_rad = p.normal_scale_deg * std::numbers::pi / 180.0;
-  return {static_cast<float>(1.0 / (1.0 - std::cos(normal_scale_rad))),
+  const double inverse_normal_scale = 1.0 / (1.0 - std::cos(normal_scale_rad));
+  return {static_cast<float>(inverse_normal_scale),
+          static_cast<float>(1.0 + inverse_normal_scale),
           static_cast<float>(1.0 / (p.curvature_scale * p.curvature_scale)),
           static_cast<float>(p.self_weight)};
 }
@@ -103,10 +106,12 @@ void smooth_columns(const SmoothingRowInput& in, const NeighborRows (&neighbors)
         }
         const float e = tx * tx + ty * ty + tz * tz;
         const float inv_len = 1.0f - 0.5f * e + 0.375f * e * e;
-        const float px = (nj[0] + tx) * inv_len, py = (nj[1] + ty) * inv_len,
-                    pz = (nj[2] + tz) * inv_len;
-        const float normal_deviation =
-            (1.0f - (px * ni[0] + py * ni[1] + pz * ni[2])) * s.inverse_normal_scale;
+        // The prediction is q inv_len, q = n_j + W_j d; inv_len is folded into the weight.
+        const float qx = nj[0] + tx, qy = nj[1] + ty, qz = nj[2] + tz;
+        // 1 + normal deviation = 1 + (1 - prediction . n_i) / (1 - cos(normal scale)).
+        const float one_plus_deviation =
+            s.one_plus_inverse_normal_scale -
+            s.inverse_normal_scale * inv_len * (qx * ni[0] + qy * ni[1] + qz * ni[2]);
         // |W_j - W_i|^2 = |W_j|^2 + |W_i|^2 - 2 W_j : W_i: |W_j|^2 is needed for the scale
         // anyway, so the difference costs one inner product instead of six subtractions and a
         // norm (its rounding is far below the scale it is compared with).
@@ -120,10 +125,11 @@ void smooth_columns(const SmoothingRowInput& in, const NeighborRows (&neighbors)
         const float linked = static_cast<float>((bits >> k) & 1u);
         const float weight =
             linked * nj[2] * nj[2] * scale2 /
-            ((1.0f + normal_deviation) * (scale2 + difference2 * s.inverse_curvature_scale2));
-        sum_n[0] += weight * px;
-        sum_n[1] += weight * py;
-        sum_n[2] += weight * pz;
+            (one_plus_deviation * (scale2 + difference2 * s.inverse_curvature_scale2));
+        const float weight_per_length = weight * inv_len;
+        sum_n[0] += weight_per_length * qx;
+        sum_n[1] += weight_per_length * qy;
+        sum_n[2] += weight_per_length * qz;
         for (int m = 0; m < 6; ++m) sum_w[m] += weight * wj[m];
         sum_weight += weight;
       };
