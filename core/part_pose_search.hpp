@@ -79,7 +79,6 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
 // aligning in the field takes it the rest of the way without correspondences.
 struct FieldAlignedStartParameters {
   int scoring_points = 100;
-  int start_scoring_points = 50;  // the first two stages (the starts, one alignment step)
   int aligned_starts = 4;  // the best-scoring starts, aligned
   int field_iterations = 10;
   double field_truncation_mm = 10.0;
