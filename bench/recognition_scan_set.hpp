@@ -141,11 +141,9 @@ class RecognitionScanSet {
   // Verification's starts on one selected view (Recognizer::verify).
   std::vector<ViewPoseHypothesis> field_aligned_starts(const TestScan& scan,
                                                        const SelectedView& selected) const {
-    std::vector<RigidTransform> generated;
-    for (const PoseHypothesis& hypothesis : generate_pose_hypotheses(
-             scan.scene_points, selected.model, selected.from_patches,
-             {.in_plane_turns = parameters_.in_plane_hypotheses}))
-      generated.push_back(hypothesis.T_model_scene);
+    const std::vector<RigidTransform> generated =
+        generate_pose_hypotheses(scan.scene_points, selected.model, selected.from_patches,
+                                 {.in_plane_turns = parameters_.in_plane_hypotheses});
     const int part = base_.views[static_cast<std::size_t>(selected.view)].part_index;
     return align_view_starts_in_field(scan.scene_points, base_, selected.view, generated,
                                       recognizer_->part_search_model(part),

@@ -22,6 +22,20 @@ void keep_best(std::vector<FieldHypothesis>& hypotheses, std::size_t count) {
   if (hypotheses.size() > count) hypotheses.resize(count);
 }
 
+// Every hypothesis `iterations` alignment steps in the field (none: as it is), then its score
+// on `points`.
+void align_and_rescore(const RegistrationPoints& points, const PartDistanceField& field,
+                       int iterations, double truncation_mm,
+                       std::vector<FieldHypothesis>& hypotheses) {
+  for (FieldHypothesis& hypothesis : hypotheses) {
+    if (iterations > 0)
+      hypothesis.T_part_scene = align_in_distance_field(points, field, hypothesis.T_part_scene,
+                                                        iterations, truncation_mm);
+    hypothesis.truncated_mean_square_mm2 =
+        field_truncated_mean_square_mm2(points, field, hypothesis.T_part_scene, truncation_mm);
+  }
+}
+
 // Turns about the viewing axis of every start view, the scene's centroid on the view's: as
 // part-frame poses.
 std::vector<FieldHypothesis> turned_view_starts(const RegistrationPoints& scoring,
@@ -127,25 +141,15 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
   // The first stages on a sparser subset still: most starts are far off, and which few
   // hundred are not shows on fewer points.
   const RegistrationPoints sparse = spread_subset(scoring, parameters.start_scoring_points);
-  const auto rescore = [&](const RegistrationPoints& points,
-                           std::vector<FieldHypothesis>& hypotheses, int iterations) {
-    for (FieldHypothesis& hypothesis : hypotheses) {
-      if (iterations > 0)
-        hypothesis.T_part_scene = align_in_distance_field(points, field, hypothesis.T_part_scene,
-                                                          iterations, truncation_mm);
-      hypothesis.truncated_mean_square_mm2 =
-          field_truncated_mean_square_mm2(points, field, hypothesis.T_part_scene, truncation_mm);
-    }
-  };
   // Against the whole part, in stages: every start as it is, the best after one alignment
   // step, the best of those after a few more.
   std::vector<FieldHypothesis> hypotheses =
       turned_view_starts(scoring, base, model, parameters.in_plane_turns);
-  rescore(sparse, hypotheses, 0);
+  align_and_rescore(sparse, field, 0, truncation_mm, hypotheses);
   keep_best(hypotheses, static_cast<std::size_t>(parameters.field_candidates));
-  rescore(sparse, hypotheses, 1);
+  align_and_rescore(sparse, field, 1, truncation_mm, hypotheses);
   keep_best(hypotheses, static_cast<std::size_t>(parameters.field_aligned));
-  rescore(scoring, hypotheses, parameters.field_iterations);
+  align_and_rescore(scoring, field, parameters.field_iterations, truncation_mm, hypotheses);
   keep_best(hypotheses, static_cast<std::size_t>(parameters.refined_hypotheses));
 
   // Then onto the part's view nearest to each pose's viewing direction, registered there
@@ -184,20 +188,11 @@ std::vector<ViewPoseHypothesis> align_view_starts_in_field(
   const RigidTransform T_part_view = start_view.T_scanner_part.inverse();
   const double truncation_mm = parameters.field_truncation_mm;
   std::vector<FieldHypothesis> hypotheses;
-  for (const RigidTransform& T_model_scene : starts) {
-    const RigidTransform T_part_scene = T_part_view * T_model_scene;
-    hypotheses.push_back(
-        {T_part_scene,
-         field_truncated_mean_square_mm2(scoring, model.field, T_part_scene, truncation_mm)});
-  }
+  for (const RigidTransform& T_model_scene : starts)
+    hypotheses.push_back({T_part_view * T_model_scene, 0.0});
+  align_and_rescore(scoring, model.field, 0, truncation_mm, hypotheses);
   keep_best(hypotheses, static_cast<std::size_t>(parameters.aligned_starts));
-  for (FieldHypothesis& hypothesis : hypotheses) {
-    hypothesis.T_part_scene = align_in_distance_field(scoring, model.field, hypothesis.T_part_scene,
-                                                      parameters.field_iterations, truncation_mm);
-    hypothesis.truncated_mean_square_mm2 =
-        field_truncated_mean_square_mm2(scoring, model.field, hypothesis.T_part_scene,
-                                        truncation_mm);
-  }
+  align_and_rescore(scoring, model.field, parameters.field_iterations, truncation_mm, hypotheses);
   keep_best(hypotheses, hypotheses.size());
   for (const FieldHypothesis& hypothesis : hypotheses) {
     const int nearest = nearest_view(base, start_view.part_index, hypothesis.T_part_scene);

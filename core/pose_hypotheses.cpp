@@ -21,21 +21,19 @@ RigidTransform in_plane_turn(int k, int turns, const Eigen::Vector3d& scene_cent
   return {R, model_centre_mm - R * scene_centre_mm};
 }
 
-std::vector<PoseHypothesis> generate_pose_hypotheses(const RegistrationPoints& scene,
+std::vector<RigidTransform> generate_pose_hypotheses(const RegistrationPoints& scene,
                                                      const RegistrationPoints& model,
                                                      const PoseFromPatches& from_patches,
                                                      const PoseHypothesisParameters& parameters) {
-  std::vector<PoseHypothesis> hypotheses;
+  std::vector<RigidTransform> hypotheses;
   if (scene.size() == 0 || model.size() == 0) return hypotheses;
-  if (from_patches.status == PatchPoseStatus::ok)
-    hypotheses.push_back({PoseHypothesisSource::kPatchGroups, from_patches.T_model_scene});
+  if (from_patches.status == PatchPoseStatus::ok) hypotheses.push_back(from_patches.T_model_scene);
   for (const RigidTransform& T_model_scene : principal_axes_candidates(scene, model))
-    hypotheses.push_back({PoseHypothesisSource::kPrincipalAxes, T_model_scene});
+    hypotheses.push_back(T_model_scene);
   const Eigen::Vector3d scene_centre = centroid_mm(scene);
   const Eigen::Vector3d model_centre = centroid_mm(model);
   for (int k = 0; k < parameters.in_plane_turns; ++k)
-    hypotheses.push_back({PoseHypothesisSource::kInPlaneTurn,
-                          in_plane_turn(k, parameters.in_plane_turns, scene_centre, model_centre)});
+    hypotheses.push_back(in_plane_turn(k, parameters.in_plane_turns, scene_centre, model_centre));
   return hypotheses;
 }
 

@@ -14,13 +14,6 @@
 
 namespace cosmos {
 
-enum class PoseHypothesisSource { kPatchGroups, kPrincipalAxes, kInPlaneTurn };
-
-struct PoseHypothesis {
-  PoseHypothesisSource source = PoseHypothesisSource::kInPlaneTurn;
-  RigidTransform T_model_scene;
-};
-
 struct PoseHypothesisParameters {
   int in_plane_turns = 12;  // evenly spaced turns about +z, 0 = none
 };
@@ -30,9 +23,9 @@ struct PoseHypothesisParameters {
 RigidTransform in_plane_turn(int k, int turns, const Eigen::Vector3d& scene_centre_mm,
                              const Eigen::Vector3d& model_centre_mm);
 
-// The hypotheses in generation order (patch groups, principal axes, turns by angle), unscored.
-// `from_patches` is used when its status is ok.
-std::vector<PoseHypothesis> generate_pose_hypotheses(const RegistrationPoints& scene,
+// The hypotheses' T_model_scene in generation order (patch groups, principal axes, turns by
+// angle), unscored. `from_patches` is used when its status is ok.
+std::vector<RigidTransform> generate_pose_hypotheses(const RegistrationPoints& scene,
                                                      const RegistrationPoints& model,
                                                      const PoseFromPatches& from_patches,
                                                      const PoseHypothesisParameters& parameters);

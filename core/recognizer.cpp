@@ -182,17 +182,12 @@ RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene, const ScenePo
   matching_ms += elapsed_ms(stage);
 
   stage = Clock::now();
-  const std::vector<ViewPoseHypothesis> starts = [&] {
-    std::vector<RigidTransform> generated;
-    for (const PoseHypothesis& hypothesis : generate_pose_hypotheses(
-             scene_points.coarse, surfaces.points(selected.view), from_patches,
-             {.in_plane_turns = parameters_.in_plane_hypotheses}))
-      generated.push_back(hypothesis.T_model_scene);
-    return align_view_starts_in_field(scene_points.all, model_base_, selected.view, generated,
-                                      part_search_model(view.part_index),
-                                      parameters_.field_starts, parameters_.search,
-                                      parameters_.registered_hypotheses);
-  }();
+  const std::vector<ViewPoseHypothesis> starts = align_view_starts_in_field(
+      scene_points.all, model_base_, selected.view,
+      generate_pose_hypotheses(scene_points.coarse, surfaces.points(selected.view), from_patches,
+                               {.in_plane_turns = parameters_.in_plane_hypotheses}),
+      part_search_model(view.part_index), parameters_.field_starts, parameters_.search,
+      parameters_.registered_hypotheses);
   register_candidate(scene_points, starts, surfaces, candidate);
   registration_ms += elapsed_ms(stage);
   return candidate;

@@ -140,11 +140,8 @@ TEST_F(PartPoseSearch, AlignsTheStartsOfAViewFarFromTheTruthOntoTheNearestView) 
     ASSERT_GE(start_view, 0);
     ASSERT_NEAR(start_offset_deg, 30, 10) << seed;
     const ModelSurface start_surface(base_->views[static_cast<std::size_t>(start_view)]);
-    std::vector<RigidTransform> starts;
-    for (const PoseHypothesis& hypothesis :
-         generate_pose_hypotheses(scene.points, start_surface.points(), PoseFromPatches{},
-                                  {.in_plane_turns = 12}))
-      starts.push_back(hypothesis.T_model_scene);
+    const std::vector<RigidTransform> starts = generate_pose_hypotheses(
+        scene.points, start_surface.points(), PoseFromPatches{}, {.in_plane_turns = 12});
     const std::vector<ViewPoseHypothesis> aligned =
         align_view_starts_in_field(scene.points, *base_, start_view, starts, model,
                                    parameters.field_starts, parameters.search, 2);
