@@ -23,8 +23,6 @@
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
-#include <lcm/lcm-cpp.hpp>
-
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
@@ -42,12 +40,10 @@
 #include "firmware_bridge/kernel_timestamp.hpp"
 #include "realtime/cell_runner.hpp"
 #include "realtime/latency_histogram.hpp"
-#include "realtime/lcm_channels.hpp"
-#include "realtime/lcm_codec.hpp"
-#include "realtime/lcm_message_conversion.hpp"
 #include "realtime/memory_publisher.hpp"
 #include "realtime/part_recognition.hpp"
 #include "realtime/profile_conditioner.hpp"
+#include "realtime/profile_log_writer.hpp"
 #include "realtime/replay_source.hpp"
 #include "realtime/scan_loop.hpp"
 #include "realtime/simulated_source.hpp"
@@ -357,23 +353,11 @@ void PacedReplayLatency(benchmark::State& state) {
       state.SkipWithError(std::string(source.last_error()).c_str());
       return;
     }
-    lcm::LogFile log(log_path.string(), "w");
+    std::vector<Profile> profiles;
     Profile profile;
     source.reserve(profile);
-    std::vector<std::uint8_t> bytes;
-    for (std::int64_t event_number = 0; source.next(profile) == SourceStatus::kOk;
-         ++event_number) {
-      cosmos_lcm::range_profile_t message{};
-      to_message(profile, message);
-      encode_message(message, bytes);
-      lcm::LogEvent event;
-      event.eventnum = event_number;
-      event.timestamp = profile.t_us;
-      event.channel = kProfileChannel;
-      event.datalen = static_cast<std::int32_t>(bytes.size());
-      event.data = bytes.data();
-      if (log.writeEvent(&event) != 0) throw std::runtime_error("cannot write " + log_path.string());
-    }
+    while (source.next(profile) == SourceStatus::kOk) profiles.push_back(profile);
+    write_profile_log(log_path, profiles);
   } catch (const std::exception& e) {
     state.SkipWithError(
         (std::string(e.what()) + " (catalog meshes: scripts/fetch_catalog.sh)").c_str());

@@ -22,6 +22,7 @@
 #include "realtime/lcm_message_conversion.hpp"
 #include "realtime/memory_publisher.hpp"
 #include "realtime/pose_publisher.hpp"
+#include "realtime/profile_log_writer.hpp"
 #include "realtime/replay_source.hpp"
 #include "realtime/simulated_source.hpp"
 #include "sim/mesh.hpp"
@@ -110,22 +111,7 @@ TEST_F(CellLoop, ReplayedStreamGivesByteIdenticalPosesWithASlowWorker) {
     const CellRunSummary summary = run_cell(source, loop, context(loop), live, settings);
     ASSERT_EQ(summary.profiles_dropped, 0);
     ASSERT_EQ(static_cast<std::int64_t>(live.profiles.size()), summary.profiles);
-    lcm::LogFile log(log_path.string(), "w");
-    ASSERT_TRUE(log.good());
-    std::int64_t event_number = 0;
-    for (const Profile& profile : live.profiles) {
-      cosmos_lcm::range_profile_t message{};
-      to_message(profile, message);
-      std::vector<std::uint8_t> bytes;
-      ASSERT_TRUE(encode_message(message, bytes));
-      lcm::LogEvent event;
-      event.eventnum = event_number++;
-      event.timestamp = profile.t_us;
-      event.channel = kProfileChannel;
-      event.datalen = static_cast<std::int32_t>(bytes.size());
-      event.data = bytes.data();
-      ASSERT_EQ(log.writeEvent(&event), 0);
-    }
+    ASSERT_NO_THROW(write_profile_log(log_path, live.profiles));
   }
   ASSERT_EQ(live.poses.size(), 4u);
 

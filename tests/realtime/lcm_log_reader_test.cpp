@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +17,7 @@
 #include "realtime/lcm_channels.hpp"
 #include "realtime/lcm_codec.hpp"
 #include "realtime/lcm_message_conversion.hpp"
+#include "realtime/profile_log_writer.hpp"
 #include "tests/realtime/lcm_test_messages.hpp"
 
 namespace cosmos {
@@ -98,6 +100,37 @@ TEST_F(LcmLogRoundTrip, PosesProfilesAndStatusComeBackInOrder) {
   ASSERT_EQ(statuses.size(), 1U);
   testing::expect_same_status(testing::sample_status("scanning"), statuses[0]);
   EXPECT_EQ(read_logged_profiles(path).size(), 4U);
+}
+
+// write_profile_log, the reader's counterpart: what it writes reads back, in order, on its
+// channel and stamped with each profile's time; a log it cannot create is named.
+TEST_F(LcmLogRoundTrip, WrittenProfilesReadBackAndAnUnwritableLogIsNamed) {
+  std::vector<Profile> profiles;
+  for (std::uint64_t seq = 7; seq < 10; ++seq) profiles.push_back(testing::sample_profile(seq, 96));
+  const fs::path path = dir_ / "written.lcmlog";
+  write_profile_log(path, profiles, "RECORDED_PROFILES");
+  EXPECT_TRUE(read_logged_profiles(path).empty());  // nothing on the default channel
+  const std::vector<Profile> read = read_logged_profiles(path, "RECORDED_PROFILES");
+  ASSERT_EQ(read.size(), profiles.size());
+  for (std::size_t i = 0; i < read.size(); ++i) {
+    EXPECT_EQ(read[i].seq, profiles[i].seq);
+    EXPECT_EQ(read[i].t_us, profiles[i].t_us);
+    EXPECT_EQ(read[i].encoder_ticks, profiles[i].encoder_ticks);
+    ASSERT_EQ(read[i].width(), profiles[i].width());
+    for (std::size_t k = 0; k < read[i].width(); ++k)
+      if (std::isnan(profiles[i].z_mm[k]))
+        EXPECT_TRUE(std::isnan(read[i].z_mm[k])) << i << " " << k;
+      else
+        EXPECT_EQ(read[i].z_mm[k], profiles[i].z_mm[k]) << i << " " << k;
+  }
+  const fs::path unwritable = dir_ / "no-such-dir" / "x.lcmlog";
+  try {
+    write_profile_log(unwritable, profiles);
+    FAIL() << "no error for an unwritable log";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              unwritable.string() + ": cannot create an LCM log (No such file or directory)");
+  }
 }
 
 TEST_F(LcmLogRoundTrip, MissingFileIsNamed) {
