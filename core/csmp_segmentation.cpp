@@ -73,12 +73,26 @@ void refine_boundaries(const ShapeIndexField& field, CsmpSegmentation& segmentat
     }
     if (best != patch[i]) moves.emplace_back(i, best);
   };
+  // A pixel whose eight neighbours all share its patch cannot move: the first pass skips the
+  // interior of the image's patches with one comparison per neighbour.
+  auto on_boundary = [&](std::size_t i, int column, int row) {
+    if (column == 0 || row == 0 || column + 1 == width || row + 1 == patch.height()) return true;
+    const std::int32_t own = patch[i];
+    bool differs = false;
+    for (int k = 0; k < 8; ++k) differs |= patch[i + step[k]] != own;
+    return differs;
+  };
   std::vector<std::size_t> candidates;
   std::vector<int> stamp(patch.size(), -1);
+  // Moves are decided on the previous pass's labels, so the order of the candidates is free.
   for (int pass = 0; pass < passes; ++pass) {
     moves.clear();
     if (pass == 0) {
-      for (std::size_t i = 0; i < patch.size(); ++i) consider(i);  // every pixel at first
+      for (int row = 0; row < patch.height(); ++row)
+        for (int column = 0; column < width; ++column) {
+          const std::size_t i = patch.index(column, row);
+          if (on_boundary(i, column, row)) consider(i);
+        }
     } else {
       if (candidates.empty()) break;
       for (std::size_t i : candidates) consider(i);
@@ -94,7 +108,6 @@ void refine_boundaries(const ShapeIndexField& field, CsmpSegmentation& segmentat
             if (stamp[j] != pass) stamp[j] = pass, candidates.push_back(j);
           }
     }
-    std::sort(candidates.begin(), candidates.end());
   }
 }
 
