@@ -8,11 +8,6 @@
 namespace cosmos {
 namespace {
 
-struct FieldHypothesis {
-  RigidTransform T_part_scene;
-  double truncated_mean_square_mm2 = 0;
-};
-
 // Best first; ties keep generation order (views in base order, turns by angle).
 void keep_best(std::vector<FieldHypothesis>& hypotheses, std::size_t count) {
   std::stable_sort(hypotheses.begin(), hypotheses.end(),
@@ -127,16 +122,13 @@ PartSearchModel build_part_search_model(const ModelBase& base, int part,
   return model;
 }
 
-std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene,
-                                                 const ModelBase& base, int part,
-                                                 const PartSearchModel& model,
-                                                 const RegistrationParameters& registration,
-                                                 const PartPoseSearchParameters& parameters,
-                                                 ModelSurfaces& surfaces) {
-  std::vector<ViewPoseHypothesis> best;
+std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& scene,
+                                                   const ModelBase& base,
+                                                   const PartSearchModel& model,
+                                                   const PartPoseSearchParameters& parameters) {
   const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
   const PartDistanceField& field = model.field;
-  if (scoring.size() == 0 || field.empty()) return best;
+  if (scoring.size() == 0 || field.empty()) return {};
   const double truncation_mm = parameters.field_truncation_mm;
   // The first stages on a sparser subset still: most starts are far off, and which few
   // hundred are not shows on fewer points.
@@ -151,8 +143,19 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
   keep_best(hypotheses, static_cast<std::size_t>(parameters.field_aligned));
   align_and_rescore(scoring, field, parameters.field_iterations, truncation_mm, hypotheses);
   keep_best(hypotheses, static_cast<std::size_t>(parameters.refined_hypotheses));
+  return hypotheses;
+}
 
-  // Then onto the part's view nearest to each pose's viewing direction, registered there
+std::vector<ViewPoseHypothesis> register_field_hypotheses(
+    const RegistrationPoints& scene, const ModelBase& base, int part,
+    const PartSearchModel& model, const std::vector<FieldHypothesis>& hypotheses,
+    const RegistrationParameters& registration, const PartPoseSearchParameters& parameters,
+    ModelSurfaces& surfaces) {
+  std::vector<ViewPoseHypothesis> best;
+  const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
+  const PartDistanceField& field = model.field;
+  if (scoring.size() == 0 || field.empty()) return best;
+  // Each pose onto the part's view nearest to its viewing direction, registered there
   // (ch. 6) on the subset, and ranked against the whole part again.
   RegistrationParameters short_registration = registration;
   short_registration.max_iterations = parameters.refinement_iterations;
@@ -166,14 +169,26 @@ std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene
     const RigidTransform& T =
         refined.status == RegistrationStatus::invalid_input ? T_model_scene : refined.T_model_scene;
     best.push_back({view, T,
-                    field_truncated_mean_square_mm2(
-                        scoring, field, model_view.T_scanner_part.inverse() * T, truncation_mm)});
+                    field_truncated_mean_square_mm2(scoring, field,
+                                                    model_view.T_scanner_part.inverse() * T,
+                                                    parameters.field_truncation_mm)});
   }
   std::stable_sort(best.begin(), best.end(),
                    [](const ViewPoseHypothesis& a, const ViewPoseHypothesis& b) {
                      return a.truncated_mean_square_mm2 < b.truncated_mean_square_mm2;
                    });
   return distinct_hypotheses(base, best, parameters, parameters.best_hypotheses);
+}
+
+std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene,
+                                                 const ModelBase& base, int part,
+                                                 const PartSearchModel& model,
+                                                 const RegistrationParameters& registration,
+                                                 const PartPoseSearchParameters& parameters,
+                                                 ModelSurfaces& surfaces) {
+  return register_field_hypotheses(scene, base, part, model,
+                                   field_pose_hypotheses(scene, base, model, parameters),
+                                   registration, parameters, surfaces);
 }
 
 std::vector<ViewPoseHypothesis> align_view_starts_in_field(

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 
 #include "core/model_surface.hpp"
 #include "core/part_pose_search.hpp"
@@ -200,13 +201,13 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
   std::vector<int> parts = selector_.rank_parts(scene.moments);
   if (parts.size() > static_cast<std::size_t>(parameters_.searched_parts))
     parts.resize(static_cast<std::size_t>(parameters_.searched_parts));
-  for (int part : parts) {
-    for (const ModelBaseView& view : model_base_.views)
-      result.views_examined += view.part_index == part;
+  // Registers one part's field poses; true when one explains enough to end the search.
+  auto register_part = [&](int part, const std::vector<FieldHypothesis>& field_poses) {
     Clock::time_point stage = Clock::now();
     const std::vector<ViewPoseHypothesis> hypotheses =
-        search_part_pose(scene_points.all, model_base_, part, part_search_model(part),
-                         parameters_.registration, parameters_.search, surfaces);
+        register_field_hypotheses(scene_points.all, model_base_, part, part_search_model(part),
+                                  field_poses, parameters_.registration, parameters_.search,
+                                  surfaces);
     result.timings.registration_ms += elapsed_ms(stage);
     for (const ViewPoseHypothesis& hypothesis : hypotheses) {
       const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(hypothesis.view)];
@@ -224,8 +225,48 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
       result.candidates.push_back(candidate);
       // As in verification: a pose that explains this much of the scene ends the search.
       if (candidate.registered && candidate.inlier_fraction >= parameters_.sufficient_support)
-        return;
+        return true;
     }
+    return false;
+  };
+  // The field stages rank the parts far better than the spectra do: a part whose fit is
+  // convincing is registered at once, the others wait and are registered in the order of
+  // their fit, so a scene whose part ranks tenth by spectrum no longer registers nine wrong
+  // parts first.
+  struct WaitingPart {
+    int part;
+    std::vector<FieldHypothesis> field_poses;
+    double best_fit_mm2;
+  };
+  std::vector<WaitingPart> waiting;
+  double best_fit_mm2_of_all = std::numeric_limits<double>::infinity();
+  for (int part : parts) {
+    for (const ModelBaseView& view : model_base_.views)
+      result.views_examined += view.part_index == part;
+    Clock::time_point stage = Clock::now();
+    std::vector<FieldHypothesis> field_poses = field_pose_hypotheses(
+        scene_points.all, model_base_, part_search_model(part), parameters_.search);
+    result.timings.registration_ms += elapsed_ms(stage);
+    const double best_fit_mm2 = field_poses.empty()
+                                    ? std::numeric_limits<double>::infinity()
+                                    : field_poses.front().truncated_mean_square_mm2;
+    best_fit_mm2_of_all = std::min(best_fit_mm2_of_all, best_fit_mm2);
+    if (best_fit_mm2 <= parameters_.convincing_field_fit_mm2) {
+      if (register_part(part, field_poses)) return;
+    } else {
+      waiting.push_back({part, std::move(field_poses), best_fit_mm2});
+    }
+  }
+  std::stable_sort(waiting.begin(), waiting.end(), [](const WaitingPart& a, const WaitingPart& b) {
+    return a.best_fit_mm2 < b.best_fit_mm2;
+  });
+  // As among one part's poses: a part that fits many times worse than the best one cannot
+  // explain the scene as well, and is not registered.
+  const double hopeless_fit_mm2 = parameters_.search.kept_score_factor * best_fit_mm2_of_all +
+                                  parameters_.search.kept_score_margin_mm2;
+  for (const WaitingPart& part : waiting) {
+    if (part.best_fit_mm2 > hopeless_fit_mm2) break;
+    if (register_part(part.part, part.field_poses)) return;
   }
 }
 

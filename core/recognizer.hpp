@@ -69,12 +69,18 @@ struct RecognitionParameters {
   double sufficient_support = 0.9;
   PartSupportParameters support;  // what counts as explained scene surface
   // When no selected view reaches sufficient_support: the pose search over every view of
-  // up to `searched_parts` parts, closest single view first (SpectralViewSelector::
-  // rank_parts), until one reaches it. The spectral order is a poor guide for the scans that
-  // need the search: on the 1,000-scan acceptance run, searching all 20 parts instead of 8
-  // identified 1.1 % more (0.972 against 0.961); the median time did not change, the p99
-  // about doubled (scans of unknown parts search every part).
+  // up to `searched_parts` parts (SpectralViewSelector::rank_parts, closest single view
+  // first), until one reaches it. On the 1,000-scan acceptance run, searching all 20 parts
+  // instead of 8 identified 1.1 % more (0.972 against 0.961).
   int searched_parts = 20;
+  // The spectral order is a poor guide for the scans that need the search (in the cell, the
+  // scene's part often ranked tenth), the search's field stages a sharp one: a part whose best
+  // field pose fits this well (mean square distance of the scene to the part,
+  // part_pose_search.hpp) is registered at once; the others after every part's field stages,
+  // best fit first, and not at all when they fit worse than search.kept_score_factor x the
+  // best part's + search.kept_score_margin_mm2. Scenes fit their own part at 0.02-0.16 mm^2,
+  // other parts at 2 mm^2 and more.
+  double convincing_field_fit_mm2 = 0.5;
   PartPoseSearchParameters search;
   PartDistanceFieldParameters field;
   // Decision thresholds (rejection as unknown part).
