@@ -121,9 +121,12 @@ void run(const CellOptions& options) {
         const PartPose& pose = recognition.pose;
         latencies_ms.push_back(pose.latency_ms);
         std::string truth;
-        if (simulated &&
-            pose.part_seq < static_cast<std::int64_t>(simulated->placed_parts().size())) {
-          truth = simulated->placed_parts()[static_cast<std::size_t>(pose.part_seq)].name;
+        const PlacedSimPart* placed =
+            simulated ? simulated->placed_part_scanned_in(recognition.first_profile,
+                                                          recognition.last_profile)
+                      : nullptr;
+        if (placed) {
+          truth = placed->name;
           correct += pose.status == PoseStatus::kOk && pose.part_name == truth;
         }
         const Eigen::Vector3d& t = pose.translation_cell_part_mm;

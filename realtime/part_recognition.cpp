@@ -118,6 +118,8 @@ PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContex
     pose.reason = "part longer than tracking.max_part_length_mm: its end was not scanned";
   }
   out.T_belt_part = T_belt_loop() * out.result.T_scanner_part;
+  out.first_profile = builder.first_profile;
+  out.last_profile = builder.first_profile + builder.cosmos.rows() - 1;
   const RigidTransform T_cell_part =
       (context.T_cell_scanner * T_scanner_belt(builder.last_encoder_ticks, context.mm_per_tick) *
        out.T_belt_part)

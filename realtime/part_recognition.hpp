@@ -47,7 +47,11 @@ PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& c
 struct PartRecognition {
   PartPose pose;
   RecognitionResult result;
-  RigidTransform T_belt_part;  // for checks against a simulated ground truth
+  // For checks against a simulated ground truth: the pose on the belt, and the source's
+  // profile indices of the part's first and last rows.
+  RigidTransform T_belt_part;
+  std::int64_t first_profile = 0;
+  std::int64_t last_profile = -1;
 };
 PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContext& context,
                                std::int64_t part_seq);

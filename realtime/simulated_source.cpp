@@ -183,4 +183,19 @@ SourceStatus SimulatedSource::next(Profile& out) noexcept {
   return SourceStatus::kOk;
 }
 
+const PlacedSimPart* SimulatedSource::placed_part_scanned_in(std::int64_t first_profile,
+                                                             std::int64_t last_profile) const {
+  const PlacedSimPart* best = nullptr;
+  std::int64_t best_overlap = 0;
+  for (const PlacedSimPart& part : placed_) {
+    const std::int64_t overlap = std::min(last_profile, part.last_profile) -
+                                 std::max(first_profile, part.first_profile) + 1;
+    if (overlap > best_overlap) {
+      best = &part;
+      best_overlap = overlap;
+    }
+  }
+  return best;
+}
+
 }  // namespace cosmos

@@ -93,6 +93,11 @@ class SimulatedSource final : public ScannerSource {
   std::uint64_t dropped_profiles() const noexcept override { return 0; }
 
   const std::vector<PlacedSimPart>& placed_parts() const { return placed_; }
+  // The placed part that profiles first_profile … last_profile (a scanned part's rows) cover
+  // most, nullptr when they cover none. Parts the cell dropped take no part_seq, so this,
+  // not part_seq, pairs a pose with its truth.
+  const PlacedSimPart* placed_part_scanned_in(std::int64_t first_profile,
+                                              std::int64_t last_profile) const;
   // The last profile index of the stream (next() gives 0 … last_profile(), then the end).
   std::int64_t last_profile() const { return last_profile_; }
   const ScannerParameters& parameters() const { return parameters_; }

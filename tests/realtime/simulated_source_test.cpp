@@ -140,6 +140,25 @@ TEST(SimulatedSource, PartsAppearInTheAnnouncedRangesWithEmptyBeltBetween) {
   }
 }
 
+TEST(SimulatedSource, ScannedProfileRangesFindTheirPlacedPart) {
+  SimulatedSource source(procedural_parts(), ScannerParameters{}, small_settings(3));
+  const std::vector<PlacedSimPart>& parts = source.placed_parts();
+  ASSERT_EQ(parts.size(), 5u);
+  for (const PlacedSimPart& part : parts) {
+    EXPECT_EQ(source.placed_part_scanned_in(part.first_profile, part.last_profile), &part);
+    // A scan clipped at either end still belongs to its part.
+    EXPECT_EQ(source.placed_part_scanned_in(part.first_profile + 3, part.last_profile + 2), &part);
+  }
+  // Rows in the empty belt between two parts belong to none; rows reaching into both belong
+  // to the one they cover more.
+  EXPECT_EQ(source.placed_part_scanned_in(parts[0].last_profile + 1, parts[1].first_profile - 1),
+            nullptr);
+  EXPECT_EQ(source.placed_part_scanned_in(parts[0].last_profile - 2, parts[1].first_profile + 9),
+            &parts[1]);
+  EXPECT_EQ(source.placed_part_scanned_in(parts[0].last_profile - 9, parts[1].first_profile + 2),
+            &parts[0]);
+}
+
 TEST(SimulatedSource, PartNamesRestrictTheDrawAndTheSeedChangesIt) {
   const ScannerParameters parameters;
   SimulatedSourceSettings settings = small_settings(5);
