@@ -30,6 +30,8 @@ void add_cosmos(ParameterText& t, const CosmosParameters& p) {
   t.set_integer("cosmos.segmentation.boundary_refinement_passes", p.segmentation.boundary_refinement_passes);
   t.set_number("cosmos.segmentation.min_patch_area_fraction", p.segmentation.min_patch_area_fraction);
   t.set_number("cosmos.segmentation.planar_crease_deg", p.segmentation.planar_crease_deg);
+  t.set_number("cosmos.segmentation.seed_shape_index_quantum",
+               p.segmentation.seed_shape_index_quantum);
   t.set_number("cosmos.spectrum.bin_width", p.spectrum.bin_width);
 }
 

@@ -45,6 +45,10 @@ struct SegmentationParameters {
   // Planar pixels join one planar patch only when their normals agree this well, so the faces
   // of a polyhedron meeting at a crease stay separate patches (§3.2.2).
   double planar_crease_deg = 5.0;
+  // Growing starts from seeds: connected pixels whose S_I range stays within this
+  // (shape_seeds.hpp). Half of adaptive_start_limit: the first growth stage can still join
+  // any two seeds that lie within one limit of each other.
+  double seed_shape_index_quantum = 0.025;
 };
 
 struct SpectrumParameters {

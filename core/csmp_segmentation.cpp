@@ -3,37 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <numbers>
-#include <numeric>
 
 #include "core/region_merge_queue.hpp"
+#include "core/shape_seeds.hpp"
 #include "core/tiny_patch_folding.hpp"
 
 namespace cosmos {
 namespace {
-
-// Forward half of the 8-neighbourhood (right, below-left, below, below-right): every
-// adjacency once.
-constexpr int kForwardNeighbors[4] = {4, 5, 6, 7};
-
-bool is_region_pixel(SurfaceLabel label) { return label != SurfaceLabel::kInvalid; }
-
-// Calls visit(i, j) for every same-side 8-adjacent pair of region pixels, once.
-template <class Visit>
-void for_each_adjacent_pair(const ShapeIndexField& field, Visit&& visit) {
-  for (int row = 0; row < field.height(); ++row) {
-    for (int column = 0; column < field.width(); ++column) {
-      const std::size_t i = field.label.index(column, row);
-      if (!is_region_pixel(field.label[i])) continue;
-      for (int k : kForwardNeighbors) {
-        if (!((field.same_side[i] >> k) & 1u)) continue;
-        const int c = column + kNeighborOffsets[k].column, r = row + kNeighborOffsets[k].row;
-        const std::size_t j = field.label.index(c, r);
-        if (is_region_pixel(field.label[j])) visit(i, j);
-      }
-    }
-  }
-}
 
 // The post-processing of §3.5.2: a curved boundary pixel moves to the adjacent curved patch
 // whose mean shape index is nearer its own, so boundaries settle where the shape index is
@@ -116,29 +92,16 @@ void refine_boundaries(const ShapeIndexField& field, CsmpSegmentation& segmentat
 CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndexField& field,
                                const SegmentationParameters& parameters) {
   const std::size_t pixels = field.label.size();
-  std::vector<int> region_of_pixel(pixels, -1);
+  const ShapeSeeds seeds = find_shape_seeds(frames, field, parameters);
   RegionMergeQueue regions;
-  regions.reserve(pixels);
+  regions.reserve(seeds.seed_count());
   double visible_area_mm2 = 0;
-  for (std::size_t i = 0; i < pixels; ++i) {
-    if (!is_region_pixel(field.label[i])) continue;
-    const float s = field.shape_index[i];
-    region_of_pixel[i] = regions.add_region(s, s, field.area_mm2[i]);
-    visible_area_mm2 += field.area_mm2[i];
+  for (int seed = 0; seed < seeds.seed_count(); ++seed) {
+    regions.add_region(seeds.shape_index_min[seed], seeds.shape_index_max[seed],
+                       seeds.area_mm2[seed]);
+    visible_area_mm2 += seeds.area_mm2[seed];
   }
-  // Planar pixels grow their own patches: planar-curved pairs get no edge, nor do planar
-  // pairs across a crease.
-  const double crease_cos = std::cos(parameters.planar_crease_deg * std::numbers::pi / 180.0);
-  for_each_adjacent_pair(field, [&](std::size_t i, std::size_t j) {
-    if (field.label[i] != field.label[j]) return;
-    if (field.label[i] == SurfaceLabel::kPlanar) {
-      double cosine = 0;
-      for (int axis = kNx; axis <= kNz; ++axis)
-        cosine += frames.frame[axis][i] * frames.frame[axis][j];
-      if (cosine < crease_cos) return;
-    }
-    regions.add_edge(region_of_pixel[i], region_of_pixel[j]);
-  });
+  for (const auto& [a, b] : seeds.adjacent) regions.add_edge(a, b);
 
   const double min_area_mm2 = parameters.min_patch_area_fraction * visible_area_mm2;
   regions.count_regions_of_area_at_least(static_cast<float>(min_area_mm2));
@@ -153,7 +116,7 @@ CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndex
       regions.grow(limit);
     }
     // Folding can join tiny patches into new significant ones: grow on if that overshoots.
-    dropped = fold_tiny_patches(field, region_of_pixel, regions, min_area_mm2);
+    dropped = fold_tiny_patches(seeds, regions, min_area_mm2);
     if (!adaptive || limit >= parameters.adaptive_max_limit ||
         regions.significant_region_count() <= parameters.max_patches)
       break;
@@ -162,13 +125,20 @@ CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndex
   CsmpSegmentation result;
   result.shape_diameter_limit = limit;
   result.patch_of_pixel = PixelGrid<std::int32_t>(field.width(), field.height(), kNoPatch);
-  std::vector<std::int32_t> patch_of_root(regions.region_count(), kNoPatch);
+  // Patches are numbered in raster order of their first pixel.
+  constexpr std::int32_t kUnnumbered = -2;
+  std::vector<std::int32_t> patch_of_root(regions.region_count(), kUnnumbered);
+  std::vector<std::int32_t> root_of_seed(seeds.seed_count());
+  for (int seed = 0; seed < seeds.seed_count(); ++seed) {
+    root_of_seed[seed] = regions.find(seed);
+    if (dropped[root_of_seed[seed]]) patch_of_root[root_of_seed[seed]] = kNoPatch;
+  }
   for (std::size_t i = 0; i < pixels; ++i) {
-    if (region_of_pixel[i] < 0) continue;
-    const int root = regions.find(region_of_pixel[i]);
-    if (dropped[root]) continue;
-    if (patch_of_root[root] == kNoPatch) patch_of_root[root] = result.patch_count++;
-    result.patch_of_pixel[i] = patch_of_root[root];
+    const std::int32_t seed = seeds.seed_of_pixel[i];
+    if (seed < 0) continue;
+    std::int32_t& patch = patch_of_root[root_of_seed[seed]];
+    if (patch == kUnnumbered) patch = result.patch_count++;
+    result.patch_of_pixel[i] = patch;
   }
   refine_boundaries(field, result, parameters.boundary_refinement_passes);
   return result;

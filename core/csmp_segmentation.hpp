@@ -1,6 +1,8 @@
 #pragma once
 // Constant-shape maximal patches by constrained region growing (§3.5.2), with the adaptive
-// shape-diameter limit of §5.4.3.
+// shape-diameter limit of §5.4.3: seeds (shape_seeds.hpp) grown least merged diameter first
+// over their adjacency (region_merge_queue.hpp), tiny patches folded into their most similar
+// neighbour (tiny_patch_folding.hpp), boundary pixels moved to the nearer patch.
 #include <cstdint>
 #include <vector>
 

@@ -9,13 +9,11 @@ namespace cosmos {
 namespace {
 
 // The groups at the start of folding (the roots after growing) and, for every tiny one, the
-// groups its pixels touch. Only tiny groups are ever searched for a neighbour, so only they
-// get a list. A list holds each neighbouring group once, in the order a scan of the group's
-// pixels (increasing index, neighbours in direction order) first meets it: the order in which
-// folding a tiny patch queues its tiny neighbours again. Building it once replaces rescanning
-// the pixels of every group at every search (and of every cluster at every round).
+// groups it touches. Only tiny groups are ever searched for a neighbour, so only they get a
+// list. A list holds each neighbouring group once, in the order of the seed adjacency list:
+// the order in which folding a tiny patch queues its tiny neighbours again. Building it once
+// replaces rescanning the adjacency of every group at every search.
 struct StartingGroups {
-  std::vector<int> root_of_pixel;    // -1: not a region pixel
   std::vector<double> shape_area;    // per root: sum of S_I * area, for the mean S_I
   std::vector<int> tiny;             // tiny roots, by area (ties by index)
   std::vector<int> slot_of_root;     // index into `tiny` (-1: not tiny)
@@ -23,20 +21,17 @@ struct StartingGroups {
   std::vector<int> neighbors;        // starting roots
 };
 
-StartingGroups starting_groups(const ShapeIndexField& field,
-                               const std::vector<int>& region_of_pixel, RegionMergeQueue& regions,
+StartingGroups starting_groups(const ShapeSeeds& seeds, RegionMergeQueue& regions,
                                double min_area_mm2) {
   const std::size_t n = regions.region_count();
-  const std::size_t pixels = field.label.size();
   StartingGroups groups;
-  groups.root_of_pixel.assign(pixels, -1);
   groups.shape_area.assign(n, 0.0);
   groups.slot_of_root.assign(n, -1);
-  for (std::size_t i = 0; i < pixels; ++i) {
-    if (region_of_pixel[i] < 0) continue;
-    const int root = regions.find(region_of_pixel[i]);
-    groups.root_of_pixel[i] = root;
-    groups.shape_area[root] += static_cast<double>(field.shape_index[i]) * field.area_mm2[i];
+  std::vector<int> root_of_seed(n);
+  for (std::size_t seed = 0; seed < n; ++seed) {
+    const int root = regions.find(static_cast<int>(seed));
+    root_of_seed[seed] = root;
+    groups.shape_area[root] += seeds.shape_area[seed];
   }
   for (int region = 0; region < static_cast<int>(n); ++region)
     if (regions.is_root(region) && regions.area_mm2(region) < min_area_mm2)
@@ -46,39 +41,31 @@ StartingGroups starting_groups(const ShapeIndexField& field,
   const int slots = static_cast<int>(groups.tiny.size());
   for (int slot = 0; slot < slots; ++slot) groups.slot_of_root[groups.tiny[slot]] = slot;
 
-  // The pixels of the tiny groups, by slot and then by index (a counting sort).
-  std::vector<int> first_pixel(slots + 1, 0);
-  for (std::size_t i = 0; i < pixels; ++i) {
-    const int root = groups.root_of_pixel[i];
-    if (root >= 0 && groups.slot_of_root[root] >= 0) ++first_pixel[groups.slot_of_root[root] + 1];
-  }
-  for (int slot = 0; slot < slots; ++slot) first_pixel[slot + 1] += first_pixel[slot];
-  std::vector<int> pixel_order(first_pixel[slots]);
-  std::vector<int> fill(first_pixel.begin(), first_pixel.end() - 1);
-  for (std::size_t i = 0; i < pixels; ++i) {
-    const int root = groups.root_of_pixel[i];
-    if (root >= 0 && groups.slot_of_root[root] >= 0)
-      pixel_order[fill[groups.slot_of_root[root]]++] = static_cast<int>(i);
-  }
+  // Each adjacent pair of different groups, seen from each tiny side: counted, then filed.
+  std::vector<int> fill(slots + 1, 0);
+  auto for_each_side = [&](auto&& visit) {
+    for (const auto& [a, b] : seeds.adjacent) {
+      const int root_a = root_of_seed[a], root_b = root_of_seed[b];
+      if (root_a == root_b) continue;
+      if (groups.slot_of_root[root_a] >= 0) visit(groups.slot_of_root[root_a], root_b);
+      if (groups.slot_of_root[root_b] >= 0) visit(groups.slot_of_root[root_b], root_a);
+    }
+  };
+  for_each_side([&](int slot, int) { ++fill[slot + 1]; });
+  for (int slot = 0; slot < slots; ++slot) fill[slot + 1] += fill[slot];
+  std::vector<int> sides(fill[slots]);
+  std::vector<int> side_offset(fill.begin(), fill.end());
+  for_each_side([&](int slot, int other) { sides[fill[slot]++] = other; });
 
-  // Same-side bits are only set for neighbours inside the image, so plain index offsets do.
-  const std::ptrdiff_t width = field.width();
-  std::ptrdiff_t step[8];
-  for (int k = 0; k < 8; ++k)
-    step[k] = kNeighborOffsets[k].row * width + kNeighborOffsets[k].column;
   std::vector<int> seen_by(n, -1);
   groups.neighbor_offset.assign(slots + 1, 0);
+  groups.neighbors.reserve(sides.size());
   for (int slot = 0; slot < slots; ++slot) {
-    const int root = groups.tiny[slot];
-    for (int k = first_pixel[slot]; k < first_pixel[slot + 1]; ++k) {
-      const int i = pixel_order[k];
-      for (int direction = 0; direction < 8; ++direction) {
-        if (!((field.same_side[i] >> direction) & 1u)) continue;
-        const int other = groups.root_of_pixel[i + step[direction]];
-        if (other < 0 || other == root || seen_by[other] == slot) continue;
-        seen_by[other] = slot;
-        groups.neighbors.push_back(other);
-      }
+    for (int k = side_offset[slot]; k < side_offset[slot + 1]; ++k) {
+      const int other = sides[k];
+      if (seen_by[other] == slot) continue;
+      seen_by[other] = slot;
+      groups.neighbors.push_back(other);
     }
     groups.neighbor_offset[slot + 1] = static_cast<int>(groups.neighbors.size());
   }
@@ -87,10 +74,9 @@ StartingGroups starting_groups(const ShapeIndexField& field,
 
 }  // namespace
 
-std::vector<bool> fold_tiny_patches(const ShapeIndexField& field,
-                                    const std::vector<int>& region_of_pixel,
-                                    RegionMergeQueue& regions, double min_area_mm2) {
-  StartingGroups groups = starting_groups(field, region_of_pixel, regions, min_area_mm2);
+std::vector<bool> fold_tiny_patches(const ShapeSeeds& seeds, RegionMergeQueue& regions,
+                                    double min_area_mm2) {
+  StartingGroups groups = starting_groups(seeds, regions, min_area_mm2);
   const std::vector<int>& tiny = groups.tiny;
   std::vector<double>& shape_area = groups.shape_area;
   const int slots = static_cast<int>(tiny.size());
@@ -102,7 +88,7 @@ std::vector<bool> fold_tiny_patches(const ShapeIndexField& field,
   };
 
   // The most similar neighbour of group `root` (significant ones only, if asked), ties to the
-  // lowest index; optionally collects its tiny neighbours, in the order the pixels meet them.
+  // lowest index; optionally collects its tiny neighbours, in the order of its neighbour list.
   std::vector<int> tiny_neighbors;
   auto best_neighbor = [&](int root, bool significant_only, bool collect) {
     int best = -1;

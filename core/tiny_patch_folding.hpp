@@ -7,14 +7,13 @@
 #include <vector>
 
 #include "core/region_merge_queue.hpp"
-#include "core/shape_index.hpp"
+#include "core/shape_seeds.hpp"
 
 namespace cosmos {
 
-// region_of_pixel: the queue's region of every pixel (-1: none). Returns, per region index,
-// whether that root was dropped as an island of noise.
-std::vector<bool> fold_tiny_patches(const ShapeIndexField& field,
-                                    const std::vector<int>& region_of_pixel,
-                                    RegionMergeQueue& regions, double min_area_mm2);
+// The queue's regions are the seeds, in order. Returns, per region index, whether that root
+// was dropped as an island of noise.
+std::vector<bool> fold_tiny_patches(const ShapeSeeds& seeds, RegionMergeQueue& regions,
+                                    double min_area_mm2);
 
 }  // namespace cosmos
