@@ -17,9 +17,10 @@
 //                     ReplaySource, as a cell behind a real scanner runs: no ray casting on the
 //                     acquisition thread, so the end of part -> pose latency_p50_ms is the
 //                     loop's and the recognizer's alone
-// Needs the catalog meshes (scripts/fetch_catalog.sh). The two whole-cell runs also need the
+// Needs the catalog meshes (scripts/fetch_catalog.sh). The whole-cell runs also need the
 // regression model base: $COSMOS_BENCH_MODEL_BASE, else build/test-data/regression-80.cmb
-// (ctest builds it, tests/CMakeLists.txt). Run: build/bench/scan_loop_bench
+// (ctest builds it, tests/CMakeLists.txt). $COSMOS_BENCH_CATALOG replaces the regression
+// catalog (its parts must be in the base). Run: build/bench/scan_loop_bench
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
@@ -66,9 +67,15 @@ constexpr std::uint64_t kSeed = 7;
 // would pick (a pass or so).
 constexpr int kTimedProfiles = 10000;
 
-const PartCatalog& regression_catalog() {
-  static const PartCatalog catalog =
-      read_part_catalog(fs::path(COSMOS_SOURCE_DIR) / "config/parts-regression.yaml");
+// The regression catalog, or $COSMOS_BENCH_CATALOG (e.g. config/parts.yaml with the default
+// cell's model base in $COSMOS_BENCH_MODEL_BASE).
+const PartCatalog& bench_catalog() {
+  static const PartCatalog catalog = [] {
+    const char* from_environment = std::getenv("COSMOS_BENCH_CATALOG");
+    return read_part_catalog(from_environment != nullptr && *from_environment != '\0'
+                                 ? fs::path(from_environment)
+                                 : fs::path(COSMOS_SOURCE_DIR) / "config/parts-regression.yaml");
+  }();
   return catalog;
 }
 
@@ -93,7 +100,7 @@ const SimStream& sim_stream(int points_per_profile) {
   try {
     ScannerParameters parameters;
     parameters.points_per_profile = points_per_profile;
-    SimulatedSource source(regression_catalog(), parameters, source_settings(kStreamParts));
+    SimulatedSource source(bench_catalog(), parameters, source_settings(kStreamParts));
     if (source.start() != SourceStatus::kOk) {
       stream.error = std::string(source.last_error());
       return stream;
@@ -226,9 +233,9 @@ PartRecognitionContext recognition_context(const BenchRecognition& recognition,
   context.recognizer = recognition.recognizer.get();
   context.model_base = recognition.base.get();
   for (const ModelPart& part : recognition.base->parts) {
-    const PartEntry* entry = regression_catalog().find(part.name);
+    const PartEntry* entry = bench_catalog().find(part.name);
     context.catalog_index_of_base_part.push_back(
-        entry != nullptr ? static_cast<int>(entry - regression_catalog().parts.data()) : -1);
+        entry != nullptr ? static_cast<int>(entry - bench_catalog().parts.data()) : -1);
   }
   context.mm_per_tick = ScannerParameters{}.encoder_mm_per_tick;
   context.x0_loop_mm = loop.x0_loop_mm();
@@ -250,7 +257,7 @@ bool run_bench_cell(benchmark::State& state, const BenchRecognition& recognition
                     bool paced, CellRunSummary& summary, std::vector<double>& latencies_ms,
                     const PoseObserver& on_part = {}) {
   try {
-    SimulatedSource source(regression_catalog(), ScannerParameters{}, source_settings(parts));
+    SimulatedSource source(bench_catalog(), ScannerParameters{}, source_settings(parts));
     if (source.start() != SourceStatus::kOk) {
       state.SkipWithError(std::string(source.last_error()).c_str());
       return false;
@@ -347,7 +354,7 @@ void PacedReplayLatency(benchmark::State& state) {
   const fs::path log_path = fs::temp_directory_path() /
                             ("cosmos-bench-replay-" + std::to_string(::getpid()) + ".lcmlog");
   try {
-    SimulatedSource source(regression_catalog(), ScannerParameters{},
+    SimulatedSource source(bench_catalog(), ScannerParameters{},
                            source_settings(kPacedParts));
     if (source.start() != SourceStatus::kOk) {
       state.SkipWithError(std::string(source.last_error()).c_str());
