@@ -83,6 +83,7 @@ void run(const CellOptions& options) {
   loop_settings.conditioning = config.conditioning;
   loop_settings.tracking = config.tracking.tracker;
   loop_settings.max_part_rows = config.max_part_rows();
+  loop_settings.builders = config.realtime.part_builders;
   loop_settings.part_queue_slots = config.realtime.part_queue_slots;
   loop_settings.wait_for_recognizer = unpaced;
   ScanLoop loop(loop_settings);

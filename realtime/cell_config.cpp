@@ -143,6 +143,7 @@ void read_realtime(const YAML::Node& node, const YamlInputErrors& errors,
   section.read("cpu", rt.thread.cpu, -1, 1023);  // CPU_SETSIZE - 1
   section.read("lock_memory", rt.thread.lock_memory);
   section.read("profile_ring_slots", rt.profile_ring_slots, 1, 1 << 20);
+  section.read("part_builders", rt.part_builders, 1, 64);
   section.read("part_queue_slots", rt.part_queue_slots, 1, 1024);
   section.read("pose_queue_slots", rt.pose_queue_slots, 1, 4096);
   section.reject_unknown_keys();

@@ -59,7 +59,10 @@ struct ScanLoopSettings {
   PartTrackerParameters tracking = cell_part_tracking();
   CosmosParameters cosmos;
   int max_part_rows = 750;  // 300 mm at 0.4 mm
-  int builders = 4;         // parts in flight (open + being recognized)
+  // Parts in flight (open, queued and being recognized). A part that starts while every
+  // builder is taken is dropped: at the default cell's 126 ms between parts, four left 7 % of
+  // the parts of a 200-part run behind the slowest recognitions (p99 0.5 s); eight none.
+  int builders = 8;
   int part_queue_slots = 8;
   // false (paced and hardware sources): a part that finds no free builder or queue slot is
   // dropped and counted. true (unpaced test and replay runs, no deadlines to keep): the loop

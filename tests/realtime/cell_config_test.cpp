@@ -76,6 +76,7 @@ TEST_F(CellConfigFile, ShippedConfigHoldsTheDocumentedDefaults) {
   EXPECT_EQ(config.realtime.thread.cpu, -1);
   EXPECT_FALSE(config.realtime.thread.lock_memory);
   EXPECT_EQ(config.realtime.profile_ring_slots, 4096);
+  EXPECT_EQ(config.realtime.part_builders, 8);
   EXPECT_EQ(config.realtime.part_queue_slots, 8);
   EXPECT_EQ(config.realtime.pose_queue_slots, 32);
 
@@ -110,7 +111,8 @@ TEST_F(CellConfigFile, ReadsEveryKindOfValue) {
             "tracking: {min_pixels: 200, max_part_length_mm: 150}\n"
             "lcm: {url: 'udpm://239.255.76.67:7667?ttl=1', pose_channel: POSES, publish_profiles: "
             "true, status_period_s: 0.5}\n"
-            "realtime: {sched_fifo_priority: 80, cpu: 1, lock_memory: true, part_queue_slots: 4}\n"
+            "realtime: {sched_fifo_priority: 80, cpu: 1, lock_memory: true, part_builders: 3, "
+            "part_queue_slots: 4}\n"
             "sim_source: {parts: 3, seed: 18446744073709551615, pose: resting, part_names: [bunny, "
             "cow]}\n"));
   EXPECT_EQ(config.scanner.points_per_profile, 1280);
@@ -136,6 +138,7 @@ TEST_F(CellConfigFile, ReadsEveryKindOfValue) {
   EXPECT_EQ(config.realtime.thread.sched_fifo_priority, 80);
   EXPECT_EQ(config.realtime.thread.cpu, 1);
   EXPECT_TRUE(config.realtime.thread.lock_memory);
+  EXPECT_EQ(config.realtime.part_builders, 3);
   EXPECT_EQ(config.realtime.part_queue_slots, 4);
   EXPECT_EQ(config.sim_source.parts, 3);
   EXPECT_EQ(config.sim_source.seed, 18446744073709551615ULL);
@@ -162,6 +165,8 @@ TEST_F(CellConfigFile, EveryBadValueNamesItsLineAndKey) {
       {"realtime:\n  sched_fifo_priority: 120\n", 2, "realtime.sched_fifo_priority",
        "must be in [0, 99], got 120"},
       {"realtime: {cpu: -2}\n", 1, "realtime.cpu", "must be in [-1, 1023], got -2"},
+      {"realtime:\n  part_builders: 0\n", 2, "realtime.part_builders",
+       "must be in [1, 64], got 0"},
       {"cell:\n  model_views: 321\n", 2, "cell.model_views", "must be in [1, 320], got 321"},
       {"cell:\n  T_cell_scanner:\n    rotation_deg: [1, 2]\n", 3,
        "cell.T_cell_scanner.rotation_deg", "expected a list of 3 numbers, got a list of 2"},
