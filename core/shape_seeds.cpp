@@ -29,6 +29,61 @@ std::int32_t find_root(std::vector<PixelNode>& nodes, std::int32_t x) {
   return x;
 }
 
+constexpr int kLeft = 3;
+constexpr int kRecentShift = 20;
+constexpr std::size_t kRecentPairs = std::size_t{1} << (32 - kRecentShift);
+
+// The growing-edge masks of one row: bit k set when backward neighbour k is inside the image,
+// on the same side of any depth jump and has the same label; planar pixels also need normals
+// within the crease angle.
+void backward_edges_of_row(const DarbouxFrameField& frames, const ShapeIndexField& field,
+                           int row, double crease_cos, std::uint8_t* edges) {
+  const int width = field.width();
+  const auto* own = reinterpret_cast<const std::uint8_t*>(field.label.row(row));
+  const std::uint8_t* side = field.same_side.row(row);
+  // Neighbours outside the image have no same-side bit: the masks below clear them, and the
+  // border columns are done apart so that no index leaves the image.
+  auto label_at = [&](int column, int dr, int dc) -> std::uint8_t {
+    if (!field.label.contains(column + dc, row + dr)) return 0xFF;
+    return static_cast<std::uint8_t>(field.label(column + dc, row + dr));
+  };
+  auto border_mask = [&](int column) {
+    std::uint8_t mask = 0;
+    for (int k = 0; k < kBackwardNeighbors; ++k)
+      mask |= static_cast<std::uint8_t>(
+          (label_at(column, kNeighborOffsets[k].row, kNeighborOffsets[k].column) == own[column])
+          << k);
+    return static_cast<std::uint8_t>(mask & side[column] & 0x0Fu);
+  };
+  if (row == 0) {
+    for (int column = 0; column < width; ++column) edges[column] = border_mask(column);
+  } else {
+    const auto* up = reinterpret_cast<const std::uint8_t*>(field.label.row(row - 1));
+    edges[0] = border_mask(0);
+    for (int column = 1; column + 1 < width; ++column) {
+      const std::uint8_t o = own[column];
+      const auto mask = static_cast<std::uint8_t>(
+          (up[column - 1] == o) | (up[column] == o) << 1 | (up[column + 1] == o) << 2 |
+          (own[column - 1] == o) << 3);
+      edges[column] = static_cast<std::uint8_t>(mask & side[column] & 0x0Fu);
+    }
+    if (width > 1) edges[width - 1] = border_mask(width - 1);
+  }
+  for (int column = 0; column < width; ++column) {
+    if (field.label.row(row)[column] != SurfaceLabel::kPlanar || edges[column] == 0) continue;
+    const std::size_t i = field.label.index(column, row);
+    for (int k = 0; k < kBackwardNeighbors; ++k) {
+      if (!((edges[column] >> k) & 1u)) continue;
+      const std::size_t j = field.label.index(column + kNeighborOffsets[k].column,
+                                              row + kNeighborOffsets[k].row);
+      double cosine = 0;
+      for (int axis = kNx; axis <= kNz; ++axis)
+        cosine += frames.frame[axis][i] * frames.frame[axis][j];
+      if (cosine < crease_cos) edges[column] &= static_cast<std::uint8_t>(~(1u << k));
+    }
+  }
+}
+
 }  // namespace
 
 ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexField& field,
@@ -45,57 +100,47 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
   std::vector<PixelNode> nodes(pixels, PixelNode{kNotRegion, 0.0f, 0.0f});
   std::vector<std::uint8_t> edges(pixels, 0);
   const auto quantum = static_cast<float>(parameters.seed_shape_index_quantum);
-  for (std::size_t i = 0; i < pixels; ++i) {
-    const SurfaceLabel own_label = field.label[i];
-    if (own_label == SurfaceLabel::kInvalid) continue;
-    // Neighbours outside the image have no same-side bit, so their indices are never read.
-    const std::uint8_t side = field.same_side[i] & 0x0Fu;
-    std::uint8_t joined = 0;
-    for (int k = 0; k < kBackwardNeighbors; ++k) {
-      const bool inside = (side >> k) & 1u;
-      const bool same_label = inside && field.label[i + step[k]] == own_label;
-      joined |= static_cast<std::uint8_t>(same_label << k);
-    }
-    if (own_label == SurfaceLabel::kPlanar) {
+  for (int row = 0; row < field.height(); ++row) {
+    const std::size_t row_start = static_cast<std::size_t>(row) * width;
+    backward_edges_of_row(frames, field, row, crease_cos, edges.data() + row_start);
+    std::int32_t left_root = kNotRegion;
+    for (std::size_t i = row_start; i < row_start + width; ++i) {
+      if (field.label[i] == SurfaceLabel::kInvalid) continue;
+      const std::uint8_t joined = edges[i];
+      auto root = static_cast<std::int32_t>(i);
+      const float shape_index = field.shape_index[i];
+      nodes[i] = {root, shape_index, shape_index};
+      // Join the neighbours' seeds, the one whose joined S_I range is least first (the growing
+      // order of §3.5.2), while the joined seed's range stays within one quantum.
+      std::int32_t roots[kBackwardNeighbors];
+      int count = 0;
       for (int k = 0; k < kBackwardNeighbors; ++k) {
         if (!((joined >> k) & 1u)) continue;
-        const std::size_t j = i + step[k];
-        double cosine = 0;
-        for (int axis = kNx; axis <= kNz; ++axis)
-          cosine += frames.frame[axis][i] * frames.frame[axis][j];
-        if (cosine < crease_cos) joined &= static_cast<std::uint8_t>(~(1u << k));
+        const std::int32_t other = k == kLeft ? left_root : find_root(nodes, static_cast<std::int32_t>(i + step[k]));
+        bool listed = false;
+        for (int n = 0; n < count; ++n) listed |= roots[n] == other;
+        if (!listed) roots[count++] = other;
       }
-    }
-    edges[i] = joined;
-    // Join the neighbours' seeds, the one whose joined S_I range is least first (the growing
-    // order of §3.5.2), while the joined seed's range stays within one quantum.
-    auto root = static_cast<std::int32_t>(i);
-    nodes[i] = {root, field.shape_index[i], field.shape_index[i]};
-    std::int32_t roots[kBackwardNeighbors];
-    int count = 0;
-    for (int k = 0; k < kBackwardNeighbors; ++k) {
-      if (!((joined >> k) & 1u)) continue;
-      const std::int32_t other = find_root(nodes, static_cast<std::int32_t>(i + step[k]));
-      if (std::find(roots, roots + count, other) == roots + count) roots[count++] = other;
-    }
-    while (count > 0) {
-      int best = -1;
-      float best_range = quantum;
-      for (int n = 0; n < count; ++n) {
-        const PixelNode& other = nodes[roots[n]];
-        const float range =
-            std::max(nodes[root].high, other.high) - std::min(nodes[root].low, other.low);
-        if (range <= best_range) best_range = range, best = n;
+      while (count > 0) {
+        int best = -1;
+        float best_range = quantum;
+        for (int n = 0; n < count; ++n) {
+          const PixelNode& other = nodes[roots[n]];
+          const float range =
+              std::max(nodes[root].high, other.high) - std::min(nodes[root].low, other.low);
+          if (range <= best_range) best_range = range, best = n;
+        }
+        if (best < 0) break;
+        const std::int32_t other = roots[best];
+        roots[best] = roots[--count];
+        // The joined set keeps the older root; the roots left in the list are untouched.
+        const std::int32_t kept = std::min(root, other), joined_root = std::max(root, other);
+        nodes[kept].low = std::min(nodes[kept].low, nodes[joined_root].low);
+        nodes[kept].high = std::max(nodes[kept].high, nodes[joined_root].high);
+        nodes[joined_root].parent = kept;
+        root = kept;
       }
-      if (best < 0) break;
-      const std::int32_t other = roots[best];
-      roots[best] = roots[--count];
-      // The joined set keeps the older root; the roots left in the list are untouched.
-      const std::int32_t kept = std::min(root, other), joined_root = std::max(root, other);
-      nodes[kept].low = std::min(nodes[kept].low, nodes[joined_root].low);
-      nodes[kept].high = std::max(nodes[kept].high, nodes[joined_root].high);
-      nodes[joined_root].parent = kept;
-      root = kept;
+      left_root = root;
     }
   }
 
@@ -125,30 +170,31 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
   }
 
   // Pass 3: growing edges between different seeds. Along a boundary the same pair recurs from
-  // pixel to pixel and from direction to direction: a pair is listed unless the previous pixel
-  // listed it in the same direction or this pixel already did in another.
-  seeds.adjacent.reserve(pixels / 4);
-  std::int32_t last_neighbor[kBackwardNeighbors];
-  std::fill(std::begin(last_neighbor), std::end(last_neighbor), kNotRegion);
-  std::int32_t last_seed = kNotRegion;
-  for (std::size_t i = 0; i < pixels; ++i) {
+  // pixel to pixel, row to row and direction to direction: a small table of recently listed
+  // pairs, indexed by a hash of the pair, keeps nearly all repeats out of the list. The scan
+  // runs backwards so that a pair keeps the place of its last edge, as the unfiltered list's
+  // last copy would have in the growing queue (segmentations then match the unfiltered ones
+  // closely; keeping first copies changed the relief views').
+  seeds.adjacent.reserve(pixels / 8);
+  std::vector<std::uint64_t> recent(kRecentPairs, ~std::uint64_t{0});
+  for (std::size_t i = pixels; i-- > 0;) {
     const std::uint8_t mask = edges[i];
     if (mask == 0) continue;
     const std::int32_t a = seed_of_pixel[i];
-    if (a != last_seed) {
-      std::fill(std::begin(last_neighbor), std::end(last_neighbor), kNotRegion);
-      last_seed = a;
-    }
-    std::int32_t listed = a;
-    for (int k = 0; k < kBackwardNeighbors; ++k) {
+    for (int k = kBackwardNeighbors; k-- > 0;) {
       if (!((mask >> k) & 1u)) continue;
       const std::int32_t b = seed_of_pixel[i + step[k]];
-      if (b == a || b == listed || b == last_neighbor[k]) continue;
-      last_neighbor[k] = b;
-      listed = b;
+      if (b == a) continue;
+      const auto low = static_cast<std::uint32_t>(std::min(a, b));
+      const auto high = static_cast<std::uint32_t>(std::max(a, b));
+      const std::uint64_t key = std::uint64_t{low} << 32 | high;
+      std::uint64_t& slot = recent[(low * 0x9E3779B1u ^ high * 0x85EBCA77u) >> kRecentShift];
+      if (slot == key) continue;
+      slot = key;
       seeds.adjacent.emplace_back(b, a);
     }
   }
+  std::reverse(seeds.adjacent.begin(), seeds.adjacent.end());
   return seeds;
 }
 
