@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 #include "core/region_merge_queue.hpp"
 #include "core/shape_seeds.hpp"
@@ -16,47 +17,64 @@ namespace {
 // halfway between the patches instead of where growing happened to stop. Each pass reads the
 // labels of the previous one only (the result does not depend on the scan order) and looks
 // only at pixels next to the previous pass's moves.
-void refine_boundaries(const ShapeIndexField& field, CsmpSegmentation& segmentation, int passes) {
-  std::vector<double> area(segmentation.patch_count, 0), shape_area(segmentation.patch_count, 0);
+// `area` and `shape_area` are per patch, over its curved pixels.
+void refine_boundaries(const ShapeIndexField& field, const std::vector<double>& area,
+                       const std::vector<double>& shape_area, CsmpSegmentation& segmentation,
+                       int passes) {
   auto& patch = segmentation.patch_of_pixel;
-  for (std::size_t i = 0; i < patch.size(); ++i) {
-    if (patch[i] == kNoPatch || field.label[i] != SurfaceLabel::kCurved) continue;
-    area[patch[i]] += field.area_mm2[i];
-    shape_area[patch[i]] += field.area_mm2[i] * field.shape_index[i];
-  }
-  std::vector<double> mean(segmentation.patch_count, kPlanarShapeIndex);
+  // Mean S_I per patch, shifted by one: entry 0 stands for "not a curved patch", a neighbour
+  // no pixel moves to, so the neighbour loop below needs no branch.
+  std::vector<double> mean_of(segmentation.patch_count + 1, kPlanarShapeIndex);
+  mean_of[0] = std::numeric_limits<double>::infinity();
   for (int p = 0; p < segmentation.patch_count; ++p)
-    if (area[p] > 0) mean[p] = shape_area[p] / area[p];
+    if (area[p] > 0) mean_of[p + 1] = shape_area[p] / area[p];
+  // The patch of each curved pixel, kNoPatch elsewhere: only curved pixels move, and only
+  // into curved patches.
+  std::vector<std::int32_t> curved_patch(patch.size());
+  for (std::size_t i = 0; i < patch.size(); ++i)
+    curved_patch[i] = field.label[i] == SurfaceLabel::kCurved ? patch[i] : kNoPatch;
   const int width = patch.width();
-  // Same-side bits are only set for neighbours inside the image, so plain index offsets do.
   std::ptrdiff_t step[8];
   for (int k = 0; k < 8; ++k)
     step[k] = kNeighborOffsets[k].row * width + kNeighborOffsets[k].column;
   std::vector<std::pair<std::size_t, std::int32_t>> moves;
   auto consider = [&](std::size_t i) {
-    if (patch[i] == kNoPatch || field.label[i] != SurfaceLabel::kCurved) return;
+    const std::int32_t own = curved_patch[i];
+    if (own == kNoPatch) return;
     const double s = field.shape_index[i];
-    double best_distance = std::abs(s - mean[patch[i]]);
-    std::int32_t best = patch[i];
+    double best_distance = std::abs(s - mean_of[own + 1]);
+    std::int32_t best = own;
+    const std::uint8_t side = field.same_side[i];
     for (int k = 0; k < 8; ++k) {
-      if (!((field.same_side[i] >> k) & 1u)) continue;
-      const std::size_t j = i + step[k];
-      const int other = patch[j];
-      if (other == kNoPatch || other == patch[i] || field.label[j] != SurfaceLabel::kCurved)
-        continue;
-      const double distance = std::abs(s - mean[other]);
-      if (distance < best_distance) best_distance = distance, best = other;
+      // Same-side bits are only set for neighbours inside the image; a neighbour without one
+      // reads the pixel itself, which is never nearer than itself.
+      const std::size_t j = ((side >> k) & 1u) ? i + step[k] : i;
+      const std::int32_t other = curved_patch[j];
+      const double distance = std::abs(s - mean_of[other + 1]);
+      const bool nearer = distance < best_distance;
+      best_distance = nearer ? distance : best_distance;
+      best = nearer ? other : best;
     }
-    if (best != patch[i]) moves.emplace_back(i, best);
+    if (best != own) moves.emplace_back(i, best);
   };
-  // A pixel whose eight neighbours all share its patch cannot move: the first pass skips the
-  // interior of the image's patches with one comparison per neighbour.
-  auto on_boundary = [&](std::size_t i, int column, int row) {
-    if (column == 0 || row == 0 || column + 1 == width || row + 1 == patch.height()) return true;
-    const std::int32_t own = patch[i];
-    bool differs = false;
-    for (int k = 0; k < 8; ++k) differs |= patch[i + step[k]] != own;
-    return differs;
+  // A pixel whose eight neighbours all share its patch cannot move: the first pass finds the
+  // others row by row, with comparisons the compiler vectorizes.
+  std::vector<std::uint8_t> differs(width);
+  auto mark_boundary_of_row = [&](int row) {
+    const std::int32_t* own = patch.row(row);
+    if (row == 0 || row + 1 == patch.height() || width < 3) {
+      std::fill(differs.begin(), differs.end(), 1);
+      return;
+    }
+    const std::int32_t* up = patch.row(row - 1);
+    const std::int32_t* down = patch.row(row + 1);
+    differs[0] = differs[width - 1] = 1;
+    for (int c = 1; c + 1 < width; ++c) {
+      const std::int32_t o = own[c];
+      differs[c] = static_cast<std::uint8_t>(
+          (up[c - 1] != o) | (up[c] != o) | (up[c + 1] != o) | (own[c - 1] != o) |
+          (own[c + 1] != o) | (down[c - 1] != o) | (down[c] != o) | (down[c + 1] != o));
+    }
   };
   std::vector<std::size_t> candidates;
   std::vector<int> stamp(patch.size(), -1);
@@ -64,11 +82,11 @@ void refine_boundaries(const ShapeIndexField& field, CsmpSegmentation& segmentat
   for (int pass = 0; pass < passes; ++pass) {
     moves.clear();
     if (pass == 0) {
-      for (int row = 0; row < patch.height(); ++row)
-        for (int column = 0; column < width; ++column) {
-          const std::size_t i = patch.index(column, row);
-          if (on_boundary(i, column, row)) consider(i);
-        }
+      for (int row = 0; row < patch.height(); ++row) {
+        mark_boundary_of_row(row);
+        for (int column = 0; column < width; ++column)
+          if (differs[column]) consider(patch.index(column, row));
+      }
     } else {
       if (candidates.empty()) break;
       for (std::size_t i : candidates) consider(i);
@@ -76,6 +94,7 @@ void refine_boundaries(const ShapeIndexField& field, CsmpSegmentation& segmentat
     candidates.clear();
     for (const auto& [i, to] : moves) {
       patch[i] = to;
+      curved_patch[i] = to;
       const int column = static_cast<int>(i % width), row = static_cast<int>(i / width);
       for (int dr = -1; dr <= 1; ++dr)
         for (int dc = -1; dc <= 1; ++dc)
@@ -140,7 +159,15 @@ CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndex
     if (patch == kUnnumbered) patch = result.patch_count++;
     result.patch_of_pixel[i] = patch;
   }
-  refine_boundaries(field, result, parameters.boundary_refinement_passes);
+  // The patches' curved area and S_I moments, from their seeds (a seed has one label).
+  std::vector<double> area(result.patch_count, 0), shape_area(result.patch_count, 0);
+  for (int seed = 0; seed < seeds.seed_count(); ++seed) {
+    const std::int32_t patch = patch_of_root[root_of_seed[seed]];
+    if (patch == kNoPatch || seeds.shape_index_max[seed] > 1.0f) continue;
+    area[patch] += seeds.area_mm2[seed];
+    shape_area[patch] += seeds.shape_area[seed];
+  }
+  refine_boundaries(field, area, shape_area, result, parameters.boundary_refinement_passes);
   return result;
 }
 
