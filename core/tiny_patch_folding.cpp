@@ -86,6 +86,15 @@ std::vector<bool> fold_tiny_patches(const ShapeSeeds& seeds, RegionMergeQueue& r
   auto mean = [&](int root) {
     return shape_area[root] / std::max(1e-12, static_cast<double>(regions.area_mm2(root)));
   };
+  // Each slot's neighbour list, lists[list_begin[slot], list_end[slot]): at first the starting
+  // groups'; the search of a cluster among tiny ones rewrites it (see below).
+  std::vector<int>& lists = groups.neighbors;
+  std::vector<int> list_begin(groups.neighbor_offset.begin(), groups.neighbor_offset.end() - 1);
+  std::vector<int> list_end(groups.neighbor_offset.begin() + 1, groups.neighbor_offset.end());
+  // Every root's mean S_I, kept up to date by fold().
+  std::vector<double> mean_of(regions.region_count());
+  for (int region = 0; region < static_cast<int>(regions.region_count()); ++region)
+    if (regions.is_root(region)) mean_of[region] = mean(region);
 
   // The most similar neighbour of group `root` (significant ones only, if asked), ties to the
   // lowest index; optionally collects its tiny neighbours, in the order of its neighbour list.
@@ -94,14 +103,15 @@ std::vector<bool> fold_tiny_patches(const ShapeSeeds& seeds, RegionMergeQueue& r
     int best = -1;
     double best_difference = 0;
     if (collect) tiny_neighbors.clear();
+    const double own_mean = mean_of[root];
     for (int member = groups.slot_of_root[root]; member >= 0; member = next_member[member]) {
-      for (int k = groups.neighbor_offset[member]; k < groups.neighbor_offset[member + 1]; ++k) {
-        const int other = regions.find(groups.neighbors[k]);
+      for (int k = list_begin[member]; k < list_end[member]; ++k) {
+        const int other = regions.find(lists[k]);
         if (other == root) continue;
         const bool significant = regions.area_mm2(other) >= min_area_mm2;
         if (collect && !significant) tiny_neighbors.push_back(other);
         if (significant_only && !significant) continue;
-        const double difference = std::abs(mean(other) - mean(root));
+        const double difference = std::abs(mean_of[other] - own_mean);
         if (best < 0 || difference < best_difference ||
             (difference == best_difference && other < best)) {
           best = other;
@@ -116,6 +126,7 @@ std::vector<bool> fold_tiny_patches(const ShapeSeeds& seeds, RegionMergeQueue& r
     regions.unite(root, into);
     const int merged = regions.find(root), absorbed = merged == root ? into : root;
     shape_area[merged] = merged_shape_area;
+    mean_of[merged] = mean(merged);
     const int merged_slot = groups.slot_of_root[merged];
     const int absorbed_slot = groups.slot_of_root[absorbed];
     // A group that absorbs a significant one is significant: it is never searched again.
@@ -145,17 +156,55 @@ std::vector<bool> fold_tiny_patches(const ShapeSeeds& seeds, RegionMergeQueue& r
       }
     }
   }
-  // Then tiny clusters among themselves (islands away from any significant patch).
+  // Then tiny clusters among themselves (islands away from any significant patch), in rounds
+  // over the tiny roots that are left. The nearest neighbour does not depend on the order of
+  // the list, so each search leaves its cluster one list of its current outside neighbours:
+  // a cluster formed in one round is not searched through all its members' lists, mostly
+  // about each other, in the next.
+  std::vector<int> seen_by(regions.region_count(), -1);
+  int search = 0;
+  auto nearest_neighbor_compacting = [&](int root) {
+    const int head = groups.slot_of_root[root];
+    const int begin = static_cast<int>(lists.size());
+    int best = -1;
+    double best_difference = 0;
+    const double own_mean = mean_of[root];
+    for (int member = head; member >= 0; member = next_member[member]) {
+      for (int k = list_begin[member]; k < list_end[member]; ++k) {
+        const int other = regions.find(lists[k]);
+        if (other == root || seen_by[other] == search) continue;
+        seen_by[other] = search;
+        lists.push_back(other);
+        const double difference = std::abs(mean_of[other] - own_mean);
+        if (best < 0 || difference < best_difference ||
+            (difference == best_difference && other < best)) {
+          best = other;
+          best_difference = difference;
+        }
+      }
+    }
+    ++search;
+    list_begin[head] = begin;
+    list_end[head] = static_cast<int>(lists.size());
+    next_member[head] = -1;
+    last_member[head] = head;
+    return best;
+  };
+  std::vector<int> left(tiny.begin(), tiny.end());
   for (bool changed = true; changed;) {
     changed = false;
-    for (int patch : tiny) {
+    std::size_t kept = 0;
+    for (int patch : left) {
       const int root = regions.find(patch);
+      // A group that stops being a tiny root never becomes one again.
       if (root != patch || regions.area_mm2(root) >= min_area_mm2) continue;
-      const int best = best_neighbor(root, false, false);
+      left[kept++] = patch;
+      const int best = nearest_neighbor_compacting(root);
       if (best < 0) continue;
       fold(root, best);
       changed = true;
     }
+    left.resize(kept);
   }
   std::vector<bool> dropped(regions.region_count(), false);
   for (int patch : tiny) {
