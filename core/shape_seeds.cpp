@@ -84,6 +84,39 @@ void backward_edges_of_row(const DarbouxFrameField& frames, const ShapeIndexFiel
   }
 }
 
+// The growing edges of one row that cross from one seed into another (bits as in `edges`),
+// compared a row at a time so the compiler vectorizes it.
+void crossing_edges_of_row(const std::int32_t* seed_of_pixel, const std::uint8_t* edges,
+                           std::size_t row_start, std::ptrdiff_t width, bool has_row_above,
+                           std::uint8_t* crossing) {
+  const std::int32_t* own = seed_of_pixel + row_start;
+  const std::uint8_t* edge = edges + row_start;
+  // Border pixels first: edges leaving the image are never set, so only existing neighbours
+  // are compared.
+  auto border = [&](std::ptrdiff_t column) {
+    std::uint8_t mask = 0;
+    for (int k = 0; k < kBackwardNeighbors; ++k) {
+      if (!((edge[column] >> k) & 1u)) continue;
+      const std::ptrdiff_t j = kNeighborOffsets[k].row * width + column + kNeighborOffsets[k].column;
+      mask |= static_cast<std::uint8_t>((own[j] != own[column]) << k);
+    }
+    return mask;
+  };
+  if (!has_row_above || width < 3) {
+    for (std::ptrdiff_t column = 0; column < width; ++column) crossing[column] = border(column);
+    return;
+  }
+  const std::int32_t* up = own - width;
+  crossing[0] = border(0);
+  for (std::ptrdiff_t c = 1; c + 1 < width; ++c) {
+    const std::int32_t o = own[c];
+    const auto differs = static_cast<std::uint8_t>((up[c - 1] != o) | (up[c] != o) << 1 |
+                                                   (up[c + 1] != o) << 2 | (own[c - 1] != o) << 3);
+    crossing[c] = differs & edge[c];
+  }
+  crossing[width - 1] = border(width - 1);
+}
+
 }  // namespace
 
 ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexField& field,
@@ -114,12 +147,22 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
       // order of §3.5.2), while the joined seed's range stays within one quantum.
       std::int32_t roots[kBackwardNeighbors];
       int count = 0;
-      for (int k = 0; k < kBackwardNeighbors; ++k) {
-        if (!((joined >> k) & 1u)) continue;
-        const std::int32_t other = k == kLeft ? left_root : find_root(nodes, static_cast<std::int32_t>(i + step[k]));
-        bool listed = false;
-        for (int n = 0; n < count; ++n) listed |= roots[n] == other;
-        if (!listed) roots[count++] = other;
+      // Inside a seed, the pixels above point straight at the left pixel's root (the previous
+      // pixel's, a root still): then it is the only one, without a search.
+      bool inside = (joined >> kLeft) & 1u;
+      for (int k = 0; k < kLeft; ++k)
+        inside &= !((joined >> k) & 1u) || nodes[i + step[k]].parent == left_root;
+      if (inside) {
+        roots[count++] = left_root;
+      } else {
+        for (int k = 0; k < kBackwardNeighbors; ++k) {
+          if (!((joined >> k) & 1u)) continue;
+          const std::int32_t other =
+              k == kLeft ? left_root : find_root(nodes, static_cast<std::int32_t>(i + step[k]));
+          bool listed = false;
+          for (int n = 0; n < count; ++n) listed |= roots[n] == other;
+          if (!listed) roots[count++] = other;
+        }
       }
       while (count > 0) {
         int best = -1;
@@ -177,21 +220,27 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
   // closely; keeping first copies changed the relief views').
   seeds.adjacent.reserve(pixels / 8);
   std::vector<std::uint64_t> recent(kRecentPairs, ~std::uint64_t{0});
-  for (std::size_t i = pixels; i-- > 0;) {
-    const std::uint8_t mask = edges[i];
-    if (mask == 0) continue;
-    const std::int32_t a = seed_of_pixel[i];
-    for (int k = kBackwardNeighbors; k-- > 0;) {
-      if (!((mask >> k) & 1u)) continue;
-      const std::int32_t b = seed_of_pixel[i + step[k]];
-      if (b == a) continue;
-      const auto low = static_cast<std::uint32_t>(std::min(a, b));
-      const auto high = static_cast<std::uint32_t>(std::max(a, b));
-      const std::uint64_t key = std::uint64_t{low} << 32 | high;
-      std::uint64_t& slot = recent[(low * 0x9E3779B1u ^ high * 0x85EBCA77u) >> kRecentShift];
-      if (slot == key) continue;
-      slot = key;
-      seeds.adjacent.emplace_back(b, a);
+  std::vector<std::uint8_t> crossing(width);
+  for (int row = field.height(); row-- > 0;) {
+    const std::size_t row_start = static_cast<std::size_t>(row) * width;
+    crossing_edges_of_row(seed_of_pixel.data(), edges.data(), row_start, width, row > 0,
+                          crossing.data());
+    for (std::size_t column = width; column-- > 0;) {
+      const std::uint8_t mask = crossing[column];
+      if (mask == 0) continue;
+      const std::size_t i = row_start + column;
+      const std::int32_t a = seed_of_pixel[i];
+      for (int k = kBackwardNeighbors; k-- > 0;) {
+        if (!((mask >> k) & 1u)) continue;
+        const std::int32_t b = seed_of_pixel[i + step[k]];
+        const auto low = static_cast<std::uint32_t>(std::min(a, b));
+        const auto high = static_cast<std::uint32_t>(std::max(a, b));
+        const std::uint64_t key = std::uint64_t{low} << 32 | high;
+        std::uint64_t& slot = recent[(low * 0x9E3779B1u ^ high * 0x85EBCA77u) >> kRecentShift];
+        if (slot == key) continue;
+        slot = key;
+        seeds.adjacent.emplace_back(b, a);
+      }
     }
   }
   std::reverse(seeds.adjacent.begin(), seeds.adjacent.end());
