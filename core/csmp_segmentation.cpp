@@ -92,16 +92,25 @@ void refine_boundaries(const ShapeIndexField& field, const std::vector<double>& 
       for (std::size_t i : candidates) consider(i);
     }
     candidates.clear();
+    for (const auto& [i, to] : moves) patch[i] = curved_patch[i] = to;
+    // A pixel that did not move had its own patch nearest among its neighbours' (or had all
+    // neighbours in its patch); it can move next pass only if a neighbour moved into a patch
+    // nearer than its own. Others need no second look.
     for (const auto& [i, to] : moves) {
-      patch[i] = to;
-      curved_patch[i] = to;
       const int column = static_cast<int>(i % width), row = static_cast<int>(i / width);
-      for (int dr = -1; dr <= 1; ++dr)
-        for (int dc = -1; dc <= 1; ++dc)
-          if (patch.contains(column + dc, row + dr)) {
-            const std::size_t j = patch.index(column + dc, row + dr);
-            if (stamp[j] != pass) stamp[j] = pass, candidates.push_back(j);
-          }
+      for (int k = 0; k < 8; ++k) {
+        if (!patch.contains(column + kNeighborOffsets[k].column, row + kNeighborOffsets[k].row))
+          continue;
+        const std::size_t j = i + step[k];
+        const std::int32_t own = curved_patch[j];
+        if (own == kNoPatch || own == to || stamp[j] == pass) continue;
+        if (!((field.same_side[j] >> (7 - k)) & 1u)) continue;  // 7 - k: back towards i
+        const double s = field.shape_index[j];
+        if (std::abs(s - mean_of[to + 1]) < std::abs(s - mean_of[own + 1])) {
+          stamp[j] = pass;
+          candidates.push_back(j);
+        }
+      }
     }
   }
 }
@@ -128,6 +137,7 @@ CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndex
   double limit = adaptive ? parameters.adaptive_start_limit : parameters.shape_diameter_limit;
   regions.grow(limit);
   std::vector<bool> dropped;
+  GroupPairs group_pairs = seeds.adjacent;
   for (;;) {
     while (adaptive && limit < parameters.adaptive_max_limit &&
            regions.significant_region_count() > parameters.max_patches) {
@@ -135,7 +145,7 @@ CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndex
       regions.grow(limit);
     }
     // Folding can join tiny patches into new significant ones: grow on if that overshoots.
-    dropped = fold_tiny_patches(seeds, regions, min_area_mm2);
+    dropped = fold_tiny_patches(seeds, group_pairs, regions, min_area_mm2);
     if (!adaptive || limit >= parameters.adaptive_max_limit ||
         regions.significant_region_count() <= parameters.max_patches)
       break;

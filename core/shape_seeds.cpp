@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <numbers>
+#include <span>
 
 namespace cosmos {
 namespace {
@@ -21,7 +23,7 @@ struct PixelNode {
   float high;
 };
 
-std::int32_t find_root(std::vector<PixelNode>& nodes, std::int32_t x) {
+std::int32_t find_root(std::span<PixelNode> nodes, std::int32_t x) {
   while (nodes[x].parent != x) {
     nodes[x].parent = nodes[nodes[x].parent].parent;  // path halving
     x = nodes[x].parent;
@@ -130,15 +132,21 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
 
   // Pass 1: union-find over pixels in raster order, every root the first pixel of its set, so
   // a parent always precedes its child. `edges` keeps each pixel's backward growing edges.
-  std::vector<PixelNode> nodes(pixels, PixelNode{kNotRegion, 0.0f, 0.0f});
-  std::vector<std::uint8_t> edges(pixels, 0);
+  // Every node is written in raster order before it is read: no fill beforehand.
+  const std::unique_ptr<PixelNode[]> node_storage(new PixelNode[pixels]);
+  const std::span<PixelNode> nodes(node_storage.get(), pixels);
+  const std::unique_ptr<std::uint8_t[]> edge_storage(new std::uint8_t[pixels]);
+  const std::span<std::uint8_t> edges(edge_storage.get(), pixels);
   const auto quantum = static_cast<float>(parameters.seed_shape_index_quantum);
   for (int row = 0; row < field.height(); ++row) {
     const std::size_t row_start = static_cast<std::size_t>(row) * width;
     backward_edges_of_row(frames, field, row, crease_cos, edges.data() + row_start);
     std::int32_t left_root = kNotRegion;
     for (std::size_t i = row_start; i < row_start + width; ++i) {
-      if (field.label[i] == SurfaceLabel::kInvalid) continue;
+      if (field.label[i] == SurfaceLabel::kInvalid) {
+        nodes[i].parent = kNotRegion;
+        continue;
+      }
       const std::uint8_t joined = edges[i];
       auto root = static_cast<std::int32_t>(i);
       const float shape_index = field.shape_index[i];

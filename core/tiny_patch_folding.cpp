@@ -1,9 +1,11 @@
 #include "core/tiny_patch_folding.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 
 namespace cosmos {
 namespace {
@@ -21,32 +23,57 @@ struct StartingGroups {
   std::vector<int> neighbors;        // starting roots
 };
 
-StartingGroups starting_groups(const ShapeSeeds& seeds, RegionMergeQueue& regions,
-                               double min_area_mm2) {
+// Stable sort of `roots` (in index order) by area: a radix sort on the bits of the areas,
+// which order as unsigned integers since areas are positive floats.
+void sort_by_area(const RegionMergeQueue& regions, std::vector<int>& roots) {
+  constexpr int kDigitBits = 11;
+  constexpr std::uint32_t kDigits = 1u << kDigitBits;
+  std::vector<std::pair<std::uint32_t, int>> keyed(roots.size()), sorted(roots.size());
+  for (std::size_t k = 0; k < roots.size(); ++k)
+    keyed[k] = {std::bit_cast<std::uint32_t>(regions.area_mm2(roots[k])), roots[k]};
+  std::vector<std::uint32_t> start(kDigits);
+  for (int shift = 0; shift < 32; shift += kDigitBits) {
+    std::fill(start.begin(), start.end(), 0u);
+    for (const auto& entry : keyed) ++start[(entry.first >> shift) & (kDigits - 1)];
+    std::uint32_t offset = 0;
+    for (std::uint32_t& count : start) offset += std::exchange(count, offset);
+    for (const auto& entry : keyed) sorted[start[(entry.first >> shift) & (kDigits - 1)]++] = entry;
+    keyed.swap(sorted);
+  }
+  for (std::size_t k = 0; k < roots.size(); ++k) roots[k] = keyed[k].second;
+}
+
+StartingGroups starting_groups(const ShapeSeeds& seeds, GroupPairs& group_pairs,
+                               RegionMergeQueue& regions, double min_area_mm2) {
   const std::size_t n = regions.region_count();
   StartingGroups groups;
   groups.shape_area.assign(n, 0.0);
   groups.slot_of_root.assign(n, -1);
-  std::vector<int> root_of_seed(n);
+  std::vector<int> root_of(n);
   for (std::size_t seed = 0; seed < n; ++seed) {
-    const int root = regions.find(static_cast<int>(seed));
-    root_of_seed[seed] = root;
-    groups.shape_area[root] += seeds.shape_area[seed];
+    root_of[seed] = regions.find(static_cast<int>(seed));
+    groups.shape_area[root_of[seed]] += seeds.shape_area[seed];
   }
   for (int region = 0; region < static_cast<int>(n); ++region)
     if (regions.is_root(region) && regions.area_mm2(region) < min_area_mm2)
       groups.tiny.push_back(region);
-  std::stable_sort(groups.tiny.begin(), groups.tiny.end(),
-                   [&](int a, int b) { return regions.area_mm2(a) < regions.area_mm2(b); });
+  sort_by_area(regions, groups.tiny);
   const int slots = static_cast<int>(groups.tiny.size());
   for (int slot = 0; slot < slots; ++slot) groups.slot_of_root[groups.tiny[slot]] = slot;
+
+  // The pairs, now of groups: those inside one group are dropped for good (groups only grow),
+  // the order is kept.
+  std::size_t kept = 0;
+  for (const auto& [a, b] : group_pairs) {
+    const int root_a = root_of[a], root_b = root_of[b];
+    if (root_a != root_b) group_pairs[kept++] = {root_a, root_b};
+  }
+  group_pairs.resize(kept);
 
   // Each adjacent pair of different groups, seen from each tiny side: counted, then filed.
   std::vector<int> fill(slots + 1, 0);
   auto for_each_side = [&](auto&& visit) {
-    for (const auto& [a, b] : seeds.adjacent) {
-      const int root_a = root_of_seed[a], root_b = root_of_seed[b];
-      if (root_a == root_b) continue;
+    for (const auto& [root_a, root_b] : group_pairs) {
       if (groups.slot_of_root[root_a] >= 0) visit(groups.slot_of_root[root_a], root_b);
       if (groups.slot_of_root[root_b] >= 0) visit(groups.slot_of_root[root_b], root_a);
     }
@@ -74,9 +101,9 @@ StartingGroups starting_groups(const ShapeSeeds& seeds, RegionMergeQueue& region
 
 }  // namespace
 
-std::vector<bool> fold_tiny_patches(const ShapeSeeds& seeds, RegionMergeQueue& regions,
-                                    double min_area_mm2) {
-  StartingGroups groups = starting_groups(seeds, regions, min_area_mm2);
+std::vector<bool> fold_tiny_patches(const ShapeSeeds& seeds, GroupPairs& group_pairs,
+                                    RegionMergeQueue& regions, double min_area_mm2) {
+  StartingGroups groups = starting_groups(seeds, group_pairs, regions, min_area_mm2);
   const std::vector<int>& tiny = groups.tiny;
   std::vector<double>& shape_area = groups.shape_area;
   const int slots = static_cast<int>(tiny.size());
@@ -137,7 +164,9 @@ std::vector<bool> fold_tiny_patches(const ShapeSeeds& seeds, RegionMergeQueue& r
   // Into significant neighbours: smallest first, then, as folding makes a significant patch
   // the neighbour of more tiny ones, those (a worklist, so each is searched again only when a
   // neighbour of it has folded).
-  std::vector<int> worklist(tiny.begin(), tiny.end());
+  // With no significant group yet, no tiny one has a neighbour to fold into.
+  std::vector<int> worklist;
+  if (regions.significant_region_count() > 0) worklist.assign(tiny.begin(), tiny.end());
   std::vector<std::uint8_t> queued(slots, 1);
   for (std::size_t next = 0; next < worklist.size(); ++next) {
     const int patch = worklist[next];
