@@ -77,7 +77,8 @@ void refine_boundaries(const ShapeIndexField& field, const std::vector<double>& 
     }
   };
   std::vector<std::size_t> candidates;
-  std::vector<int> stamp(patch.size(), -1);
+  std::vector<int> stamp;
+  stamp.assign(patch.size(), -1);
   // Moves are decided on the previous pass's labels, so the order of the candidates is free.
   for (int pass = 0; pass < passes; ++pass) {
     moves.clear();
