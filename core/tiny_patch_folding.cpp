@@ -21,6 +21,7 @@ struct StartingGroups {
   std::vector<int> slot_of_root;     // index into `tiny` (-1: not tiny)
   std::vector<int> neighbor_offset;  // per slot, into `neighbors`
   std::vector<int> neighbors;        // starting roots
+  int significant = 0;               // starting roots of at least the minimum area
 };
 
 // Stable sort of `roots` (in index order) by area: a radix sort on the bits of the areas,
@@ -54,9 +55,14 @@ StartingGroups starting_groups(const ShapeSeeds& seeds, GroupPairs& group_pairs,
     root_of[seed] = regions.find(static_cast<int>(seed));
     groups.shape_area[root_of[seed]] += seeds.shape_area[seed];
   }
-  for (int region = 0; region < static_cast<int>(n); ++region)
-    if (regions.is_root(region) && regions.area_mm2(region) < min_area_mm2)
+  for (int region = 0; region < static_cast<int>(n); ++region) {
+    if (!regions.is_root(region)) continue;
+    if (regions.area_mm2(region) < min_area_mm2) {
       groups.tiny.push_back(region);
+    } else {
+      ++groups.significant;
+    }
+  }
   sort_by_area(regions, groups.tiny);
   const int slots = static_cast<int>(groups.tiny.size());
   for (int slot = 0; slot < slots; ++slot) groups.slot_of_root[groups.tiny[slot]] = slot;
@@ -166,7 +172,7 @@ std::vector<bool> fold_tiny_patches(const ShapeSeeds& seeds, GroupPairs& group_p
   // neighbour of it has folded).
   // With no significant group yet, no tiny one has a neighbour to fold into.
   std::vector<int> worklist;
-  if (regions.significant_region_count() > 0) worklist.assign(tiny.begin(), tiny.end());
+  if (groups.significant > 0) worklist.assign(tiny.begin(), tiny.end());
   std::vector<std::uint8_t> queued(slots, 1);
   for (std::size_t next = 0; next < worklist.size(); ++next) {
     const int patch = worklist[next];
