@@ -155,25 +155,25 @@ CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndex
   CsmpSegmentation result;
   result.shape_diameter_limit = limit;
   result.patch_of_pixel = PixelGrid<std::int32_t>(field.width(), field.height(), kNoPatch);
-  // Patches are numbered in raster order of their first pixel.
+  // Patches are numbered in raster order of their first pixel: the order of their first
+  // seeds, since seeds are numbered so.
   constexpr std::int32_t kUnnumbered = -2;
   std::vector<std::int32_t> patch_of_root(regions.region_count(), kUnnumbered);
-  std::vector<std::int32_t> root_of_seed(seeds.seed_count());
+  std::vector<std::int32_t> patch_of_seed(seeds.seed_count());
   for (int seed = 0; seed < seeds.seed_count(); ++seed) {
-    root_of_seed[seed] = regions.find(seed);
-    if (dropped[root_of_seed[seed]]) patch_of_root[root_of_seed[seed]] = kNoPatch;
+    const int root = regions.find(seed);
+    std::int32_t& patch = patch_of_root[root];
+    if (patch == kUnnumbered) patch = dropped[root] ? kNoPatch : result.patch_count++;
+    patch_of_seed[seed] = patch;
   }
   for (std::size_t i = 0; i < pixels; ++i) {
     const std::int32_t seed = seeds.seed_of_pixel[i];
-    if (seed < 0) continue;
-    std::int32_t& patch = patch_of_root[root_of_seed[seed]];
-    if (patch == kUnnumbered) patch = result.patch_count++;
-    result.patch_of_pixel[i] = patch;
+    if (seed >= 0) result.patch_of_pixel[i] = patch_of_seed[seed];
   }
   // The patches' curved area and S_I moments, from their seeds (a seed has one label).
   std::vector<double> area(result.patch_count, 0), shape_area(result.patch_count, 0);
   for (int seed = 0; seed < seeds.seed_count(); ++seed) {
-    const std::int32_t patch = patch_of_root[root_of_seed[seed]];
+    const std::int32_t patch = patch_of_seed[seed];
     if (patch == kNoPatch || seeds.shape_index_max[seed] > 1.0f) continue;
     area[patch] += seeds.area_mm2[seed];
     shape_area[patch] += seeds.shape_area[seed];

@@ -15,6 +15,7 @@ constexpr std::int32_t kNotRegion = -1;
 // 8-neighbourhood already visited in raster order: every adjacency is seen once, from its
 // later pixel.
 constexpr int kBackwardNeighbors = 4;
+constexpr int kLeft = 3;
 
 // A pixel's union-find node; at a root, the S_I range of its set.
 struct PixelNode {
@@ -31,15 +32,15 @@ std::int32_t find_root(std::span<PixelNode> nodes, std::int32_t x) {
   return x;
 }
 
-constexpr int kLeft = 3;
+// The table of recently listed seed pairs: 4096 entries, indexed by the top bits of a hash.
 constexpr int kRecentShift = 20;
 constexpr std::size_t kRecentPairs = std::size_t{1} << (32 - kRecentShift);
 
 // The growing-edge masks of one row: bit k set when backward neighbour k is inside the image,
 // on the same side of any depth jump and has the same label; planar pixels also need normals
 // within the crease angle.
-void backward_edges_of_row(const DarbouxFrameField& frames, const ShapeIndexField& field,
-                           int row, double crease_cos, std::uint8_t* edges) {
+void backward_edges_of_row(const DarbouxFrameField& frames, const ShapeIndexField& field, int row,
+                           double crease_cos, std::uint8_t* edges) {
   const int width = field.width();
   const auto* own = reinterpret_cast<const std::uint8_t*>(field.label.row(row));
   const std::uint8_t* side = field.same_side.row(row);
@@ -64,9 +65,9 @@ void backward_edges_of_row(const DarbouxFrameField& frames, const ShapeIndexFiel
     edges[0] = border_mask(0);
     for (int column = 1; column + 1 < width; ++column) {
       const std::uint8_t o = own[column];
-      const auto mask = static_cast<std::uint8_t>(
-          (up[column - 1] == o) | (up[column] == o) << 1 | (up[column + 1] == o) << 2 |
-          (own[column - 1] == o) << 3);
+      const auto mask =
+          static_cast<std::uint8_t>((up[column - 1] == o) | (up[column] == o) << 1 |
+                                    (up[column + 1] == o) << 2 | (own[column - 1] == o) << 3);
       edges[column] = static_cast<std::uint8_t>(mask & side[column] & 0x0Fu);
     }
     if (width > 1) edges[width - 1] = border_mask(width - 1);
@@ -76,8 +77,8 @@ void backward_edges_of_row(const DarbouxFrameField& frames, const ShapeIndexFiel
     const std::size_t i = field.label.index(column, row);
     for (int k = 0; k < kBackwardNeighbors; ++k) {
       if (!((edges[column] >> k) & 1u)) continue;
-      const std::size_t j = field.label.index(column + kNeighborOffsets[k].column,
-                                              row + kNeighborOffsets[k].row);
+      const std::size_t j =
+          field.label.index(column + kNeighborOffsets[k].column, row + kNeighborOffsets[k].row);
       double cosine = 0;
       for (int axis = kNx; axis <= kNz; ++axis)
         cosine += frames.frame[axis][i] * frames.frame[axis][j];
@@ -99,7 +100,8 @@ void crossing_edges_of_row(const std::int32_t* seed_of_pixel, const std::uint8_t
     std::uint8_t mask = 0;
     for (int k = 0; k < kBackwardNeighbors; ++k) {
       if (!((edge[column] >> k) & 1u)) continue;
-      const std::ptrdiff_t j = kNeighborOffsets[k].row * width + column + kNeighborOffsets[k].column;
+      const std::ptrdiff_t j =
+          kNeighborOffsets[k].row * width + column + kNeighborOffsets[k].column;
       mask |= static_cast<std::uint8_t>((own[j] != own[column]) << k);
     }
     return mask;
@@ -195,8 +197,9 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
     }
   }
 
-  // Pass 2: a root opens the next seed, any other pixel takes its parent's seed (the parent
-  // precedes it, so it is already numbered).
+  // Pass 2: a root opens the next seed, with the S_I range pass 1 kept at it; any other pixel
+  // takes its parent's seed (the parent precedes it, so it is already numbered). Areas are
+  // summed pixel by pixel.
   ShapeSeeds seeds;
   std::vector<std::int32_t>& seed_of_pixel = seeds.seed_of_pixel;
   seed_of_pixel.assign(pixels, kNotRegion);
@@ -206,15 +209,13 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
     const float shape_index = field.shape_index[i], area_mm2 = field.area_mm2[i];
     if (p == static_cast<std::int32_t>(i)) {
       seed_of_pixel[i] = seeds.seed_count();
-      seeds.shape_index_min.push_back(shape_index);
-      seeds.shape_index_max.push_back(shape_index);
+      seeds.shape_index_min.push_back(nodes[i].low);
+      seeds.shape_index_max.push_back(nodes[i].high);
       seeds.area_mm2.push_back(area_mm2);
       seeds.shape_area.push_back(static_cast<double>(shape_index) * area_mm2);
     } else {
       const std::int32_t seed = seed_of_pixel[p];
       seed_of_pixel[i] = seed;
-      seeds.shape_index_min[seed] = std::min(seeds.shape_index_min[seed], shape_index);
-      seeds.shape_index_max[seed] = std::max(seeds.shape_index_max[seed], shape_index);
       seeds.area_mm2[seed] += area_mm2;
       seeds.shape_area[seed] += static_cast<double>(shape_index) * area_mm2;
     }
