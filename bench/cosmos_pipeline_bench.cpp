@@ -14,11 +14,11 @@ namespace cosmos {
 namespace {
 
 // A smooth free-form relief: a few Gaussian bumps and dents on a gentle wave, 0.4 mm pixels,
-// with 0.02 mm sensor noise.
-RangeImage free_form_surface() {
+// with sensor noise (the simulated cell's: 0.4 mm grid, 0.02 mm noise).
+RangeImage free_form_surface(double noise_mm = 0.02) {
   RangeImage image(640, 480, 0.4, 0.4);
   std::mt19937_64 generator(5);
-  std::normal_distribution<double> noise(0.0, 0.02);
+  std::normal_distribution<double> unit_noise(0.0, 1.0);
   struct Bump {
     double x, y, sigma, height;
   };
@@ -31,7 +31,7 @@ RangeImage free_form_surface() {
       for (const Bump& b : bumps)
         z += b.height *
              std::exp(-((x - b.x) * (x - b.x) + (y - b.y) * (y - b.y)) / (2 * b.sigma * b.sigma));
-      image.z_mm(column, row) = static_cast<float>(z + noise(generator));
+      image.z_mm(column, row) = static_cast<float>(z + noise_mm * unit_noise(generator));
     }
   }
   return image;
@@ -84,21 +84,22 @@ struct Classified {
   ShapeIndexField field;
 };
 
+Classified classify(const RangeImage& image) {
+  const CosmosParameters parameters;
+  Classified c;
+  c.frames = fit_local_surfaces(image, parameters.fit);
+  smooth_curvatures(c.frames, 0.4, 0.4, parameters.smoothing);
+  c.field = classify_surface(c.frames, 0.4, 0.4, parameters.shape_index);
+  return c;
+}
+
 const Classified& classified() {
-  static const Classified result = [] {
-    const CosmosParameters parameters;
-    Classified c;
-    c.frames = fit_local_surfaces(surface(), parameters.fit);
-    smooth_curvatures(c.frames, 0.4, 0.4, parameters.smoothing);
-    c.field = classify_surface(c.frames, 0.4, 0.4, parameters.shape_index);
-    return c;
-  }();
+  static const Classified result = classify(surface());
   return result;
 }
 
-void BM_Segmentation(benchmark::State& state) {
+void segment(benchmark::State& state, const Classified& c) {
   const CosmosParameters parameters;
-  const auto& c = classified();
   int patches = 0;
   for (auto _ : state) {
     const auto segmentation = segment_csmps(c.frames, c.field, parameters.segmentation);
@@ -106,7 +107,18 @@ void BM_Segmentation(benchmark::State& state) {
   }
   state.counters["patches"] = patches;
 }
+
+void BM_Segmentation(benchmark::State& state) { segment(state, classified()); }
 BENCHMARK(BM_Segmentation)->Unit(benchmark::kMillisecond);
+
+// The same relief without sensor noise: what segmentation costs when the shape index is
+// smooth everywhere (noise leaves many small seeds in the low-curvature regions, and the
+// growing and folding work follows their number).
+void BM_SegmentationNoiseFree(benchmark::State& state) {
+  static const Classified noise_free = classify(free_form_surface(0.0));
+  segment(state, noise_free);
+}
+BENCHMARK(BM_SegmentationNoiseFree)->Unit(benchmark::kMillisecond);
 
 void BM_CosmosAndSpectrum(benchmark::State& state) {
   const CosmosParameters parameters;
