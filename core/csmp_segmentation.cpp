@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <limits>
 
+#include "core/neighbor_equality.hpp"
 #include "core/region_merge_queue.hpp"
 #include "core/shape_seeds.hpp"
 #include "core/tiny_patch_folding.hpp"
@@ -58,24 +59,8 @@ void refine_boundaries(const ShapeIndexField& field, const std::vector<double>& 
     if (best != own) moves.emplace_back(i, best);
   };
   // A pixel whose eight neighbours all share its patch cannot move: the first pass finds the
-  // others row by row, with comparisons the compiler vectorizes.
-  std::vector<std::uint8_t> differs(width);
-  auto mark_boundary_of_row = [&](int row) {
-    const std::int32_t* own = patch.row(row);
-    if (row == 0 || row + 1 == patch.height() || width < 3) {
-      std::fill(differs.begin(), differs.end(), 1);
-      return;
-    }
-    const std::int32_t* up = patch.row(row - 1);
-    const std::int32_t* down = patch.row(row + 1);
-    differs[0] = differs[width - 1] = 1;
-    for (int c = 1; c + 1 < width; ++c) {
-      const std::int32_t o = own[c];
-      differs[c] = static_cast<std::uint8_t>(
-          (up[c - 1] != o) | (up[c] != o) | (up[c + 1] != o) | (own[c - 1] != o) |
-          (own[c + 1] != o) | (down[c - 1] != o) | (down[c] != o) | (down[c + 1] != o));
-    }
-  };
+  // others row by row (a pixel on the image border always counts as a boundary pixel).
+  std::vector<std::uint8_t> equal(width);
   std::vector<std::size_t> candidates;
   std::vector<int> stamp;
   stamp.assign(patch.size(), -1);
@@ -84,9 +69,9 @@ void refine_boundaries(const ShapeIndexField& field, const std::vector<double>& 
     moves.clear();
     if (pass == 0) {
       for (int row = 0; row < patch.height(); ++row) {
-        mark_boundary_of_row(row);
+        equal_neighbors_of_row<8>(patch.data(), width, patch.height(), row, equal.data());
         for (int column = 0; column < width; ++column)
-          if (differs[column]) consider(patch.index(column, row));
+          if (equal[column] != 0xFFu) consider(patch.index(column, row));
       }
     } else {
       if (candidates.empty()) break;

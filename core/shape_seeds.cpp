@@ -7,6 +7,8 @@
 #include <numbers>
 #include <span>
 
+#include "core/neighbor_equality.hpp"
+
 namespace cosmos {
 namespace {
 
@@ -42,36 +44,10 @@ constexpr std::size_t kRecentPairs = std::size_t{1} << (32 - kRecentShift);
 void backward_edges_of_row(const DarbouxFrameField& frames, const ShapeIndexField& field, int row,
                            double crease_cos, std::uint8_t* edges) {
   const int width = field.width();
-  const auto* own = reinterpret_cast<const std::uint8_t*>(field.label.row(row));
   const std::uint8_t* side = field.same_side.row(row);
-  // Neighbours outside the image have no same-side bit: the masks below clear them, and the
-  // border columns are done apart so that no index leaves the image.
-  auto label_at = [&](int column, int dr, int dc) -> std::uint8_t {
-    if (!field.label.contains(column + dc, row + dr)) return 0xFF;
-    return static_cast<std::uint8_t>(field.label(column + dc, row + dr));
-  };
-  auto border_mask = [&](int column) {
-    std::uint8_t mask = 0;
-    for (int k = 0; k < kBackwardNeighbors; ++k)
-      mask |= static_cast<std::uint8_t>(
-          (label_at(column, kNeighborOffsets[k].row, kNeighborOffsets[k].column) == own[column])
-          << k);
-    return static_cast<std::uint8_t>(mask & side[column] & 0x0Fu);
-  };
-  if (row == 0) {
-    for (int column = 0; column < width; ++column) edges[column] = border_mask(column);
-  } else {
-    const auto* up = reinterpret_cast<const std::uint8_t*>(field.label.row(row - 1));
-    edges[0] = border_mask(0);
-    for (int column = 1; column + 1 < width; ++column) {
-      const std::uint8_t o = own[column];
-      const auto mask =
-          static_cast<std::uint8_t>((up[column - 1] == o) | (up[column] == o) << 1 |
-                                    (up[column + 1] == o) << 2 | (own[column - 1] == o) << 3);
-      edges[column] = static_cast<std::uint8_t>(mask & side[column] & 0x0Fu);
-    }
-    if (width > 1) edges[width - 1] = border_mask(width - 1);
-  }
+  equal_neighbors_of_row<kBackwardNeighbors>(field.label.data(), width, field.height(), row, edges);
+  for (int column = 0; column < width; ++column)
+    edges[column] = static_cast<std::uint8_t>(edges[column] & side[column] & 0x0Fu);
   for (int column = 0; column < width; ++column) {
     if (field.label.row(row)[column] != SurfaceLabel::kPlanar || edges[column] == 0) continue;
     const std::size_t i = field.label.index(column, row);
@@ -85,40 +61,6 @@ void backward_edges_of_row(const DarbouxFrameField& frames, const ShapeIndexFiel
       if (cosine < crease_cos) edges[column] &= static_cast<std::uint8_t>(~(1u << k));
     }
   }
-}
-
-// The growing edges of one row that cross from one seed into another (bits as in `edges`),
-// compared a row at a time so the compiler vectorizes it.
-void crossing_edges_of_row(const std::int32_t* seed_of_pixel, const std::uint8_t* edges,
-                           std::size_t row_start, std::ptrdiff_t width, bool has_row_above,
-                           std::uint8_t* crossing) {
-  const std::int32_t* own = seed_of_pixel + row_start;
-  const std::uint8_t* edge = edges + row_start;
-  // Border pixels first: edges leaving the image are never set, so only existing neighbours
-  // are compared.
-  auto border = [&](std::ptrdiff_t column) {
-    std::uint8_t mask = 0;
-    for (int k = 0; k < kBackwardNeighbors; ++k) {
-      if (!((edge[column] >> k) & 1u)) continue;
-      const std::ptrdiff_t j =
-          kNeighborOffsets[k].row * width + column + kNeighborOffsets[k].column;
-      mask |= static_cast<std::uint8_t>((own[j] != own[column]) << k);
-    }
-    return mask;
-  };
-  if (!has_row_above || width < 3) {
-    for (std::ptrdiff_t column = 0; column < width; ++column) crossing[column] = border(column);
-    return;
-  }
-  const std::int32_t* up = own - width;
-  crossing[0] = border(0);
-  for (std::ptrdiff_t c = 1; c + 1 < width; ++c) {
-    const std::int32_t o = own[c];
-    const auto differs = static_cast<std::uint8_t>((up[c - 1] != o) | (up[c] != o) << 1 |
-                                                   (up[c + 1] != o) << 2 | (own[c - 1] != o) << 3);
-    crossing[c] = differs & edge[c];
-  }
-  crossing[width - 1] = border(width - 1);
 }
 
 }  // namespace
@@ -232,8 +174,11 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
   std::vector<std::uint8_t> crossing(width);
   for (int row = field.height(); row-- > 0;) {
     const std::size_t row_start = static_cast<std::size_t>(row) * width;
-    crossing_edges_of_row(seed_of_pixel.data(), edges.data(), row_start, width, row > 0,
-                          crossing.data());
+    // The growing edges that cross from one seed into another.
+    equal_neighbors_of_row<kBackwardNeighbors>(seed_of_pixel.data(), static_cast<int>(width),
+                                               field.height(), row, crossing.data());
+    for (std::ptrdiff_t column = 0; column < width; ++column)
+      crossing[column] = static_cast<std::uint8_t>(edges[row_start + column] & ~crossing[column]);
     for (std::size_t column = width; column-- > 0;) {
       const std::uint8_t mask = crossing[column];
       if (mask == 0) continue;
