@@ -129,30 +129,38 @@ std::vector<bool> fold_tiny_patches(const ShapeSeeds& seeds, GroupPairs& group_p
   for (int region = 0; region < static_cast<int>(regions.region_count()); ++region)
     if (regions.is_root(region)) mean_of[region] = mean(region);
 
-  // The most similar neighbour of group `root` (significant ones only, if asked), ties to the
-  // lowest index; optionally collects its tiny neighbours, in the order of its neighbour list.
+  // The most similar of the offered groups: least difference of mean S_I, ties to the lowest
+  // index.
+  struct Nearest {
+    int group = -1;
+    double difference = 0;
+    void offer(int other, double other_difference) {
+      if (group < 0 || other_difference < difference ||
+          (other_difference == difference && other < group)) {
+        group = other;
+        difference = other_difference;
+      }
+    }
+  };
+  // The most similar significant neighbour of group `root`; collects its tiny neighbours too,
+  // in the order of its neighbour list.
   std::vector<int> tiny_neighbors;
-  auto best_neighbor = [&](int root, bool significant_only, bool collect) {
-    int best = -1;
-    double best_difference = 0;
-    if (collect) tiny_neighbors.clear();
+  auto nearest_significant_neighbor = [&](int root) {
+    Nearest nearest;
+    tiny_neighbors.clear();
     const double own_mean = mean_of[root];
     for (int member = groups.slot_of_root[root]; member >= 0; member = next_member[member]) {
       for (int k = list_begin[member]; k < list_end[member]; ++k) {
         const int other = regions.find(lists[k]);
         if (other == root) continue;
-        const bool significant = regions.area_mm2(other) >= min_area_mm2;
-        if (collect && !significant) tiny_neighbors.push_back(other);
-        if (significant_only && !significant) continue;
-        const double difference = std::abs(mean_of[other] - own_mean);
-        if (best < 0 || difference < best_difference ||
-            (difference == best_difference && other < best)) {
-          best = other;
-          best_difference = difference;
+        if (regions.area_mm2(other) < min_area_mm2) {
+          tiny_neighbors.push_back(other);
+        } else {
+          nearest.offer(other, std::abs(mean_of[other] - own_mean));
         }
       }
     }
-    return best;
+    return nearest.group;
   };
   auto fold = [&](int root, int into) {
     const double merged_shape_area = shape_area[root] + shape_area[into];
@@ -179,7 +187,7 @@ std::vector<bool> fold_tiny_patches(const ShapeSeeds& seeds, GroupPairs& group_p
     queued[groups.slot_of_root[patch]] = 0;
     const int root = regions.find(patch);
     if (root != patch || regions.area_mm2(root) >= min_area_mm2) continue;
-    const int best = best_neighbor(root, true, true);
+    const int best = nearest_significant_neighbor(root);
     if (best < 0) continue;
     fold(root, best);
     for (int neighbor : tiny_neighbors) {
@@ -201,8 +209,7 @@ std::vector<bool> fold_tiny_patches(const ShapeSeeds& seeds, GroupPairs& group_p
   auto nearest_neighbor_compacting = [&](int root) {
     const int head = groups.slot_of_root[root];
     const int begin = static_cast<int>(lists.size());
-    int best = -1;
-    double best_difference = 0;
+    Nearest nearest;
     const double own_mean = mean_of[root];
     for (int member = head; member >= 0; member = next_member[member]) {
       for (int k = list_begin[member]; k < list_end[member]; ++k) {
@@ -210,12 +217,7 @@ std::vector<bool> fold_tiny_patches(const ShapeSeeds& seeds, GroupPairs& group_p
         if (other == root || seen_by[other] == search) continue;
         seen_by[other] = search;
         lists.push_back(other);
-        const double difference = std::abs(mean_of[other] - own_mean);
-        if (best < 0 || difference < best_difference ||
-            (difference == best_difference && other < best)) {
-          best = other;
-          best_difference = difference;
-        }
+        nearest.offer(other, std::abs(mean_of[other] - own_mean));
       }
     }
     ++search;
@@ -223,7 +225,7 @@ std::vector<bool> fold_tiny_patches(const ShapeSeeds& seeds, GroupPairs& group_p
     list_end[head] = static_cast<int>(lists.size());
     next_member[head] = -1;
     last_member[head] = head;
-    return best;
+    return nearest.group;
   };
   std::vector<int> left(tiny.begin(), tiny.end());
   for (bool changed = true; changed;) {
