@@ -83,14 +83,14 @@ void refine_boundaries(const ShapeIndexField& field, const std::vector<double>& 
     // neighbours in its patch); it can move next pass only if a neighbour moved into a patch
     // nearer than its own. Others need no second look.
     for (const auto& [i, to] : moves) {
-      const int column = static_cast<int>(i % width), row = static_cast<int>(i / width);
+      // Links between two labelled pixels are symmetric (a depth-jump test of the pair), and
+      // only set towards neighbours inside the image.
+      const std::uint8_t side = field.same_side[i];
       for (int k = 0; k < 8; ++k) {
-        if (!patch.contains(column + kNeighborOffsets[k].column, row + kNeighborOffsets[k].row))
-          continue;
+        if (!((side >> k) & 1u)) continue;
         const std::size_t j = i + step[k];
         const std::int32_t own = curved_patch[j];
         if (own == kNoPatch || own == to || stamp[j] == pass) continue;
-        if (!((field.same_side[j] >> (7 - k)) & 1u)) continue;  // 7 - k: back towards i
         const double s = field.shape_index[j];
         if (std::abs(s - mean_of[to + 1]) < std::abs(s - mean_of[own + 1])) {
           stamp[j] = pass;

@@ -100,21 +100,30 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
       std::int32_t roots[kBackwardNeighbors];
       int count = 0;
       // Inside a seed, the pixels above point straight at the left pixel's root (the previous
-      // pixel's, a root still): then it is the only one, without a search.
+      // pixel's, a root still): then it is the only seed to join, without a search, and the
+      // pixel joins it when the joined range stays within one quantum (the loop below would
+      // do the same, more slowly; half the pixels of a smooth view are inside).
       bool inside = (joined >> kLeft) & 1u;
       for (int k = 0; k < kLeft; ++k)
         inside &= !((joined >> k) & 1u) || nodes[i + step[k]].parent == left_root;
       if (inside) {
-        roots[count++] = left_root;
-      } else {
-        for (int k = 0; k < kBackwardNeighbors; ++k) {
-          if (!((joined >> k) & 1u)) continue;
-          const std::int32_t other =
-              k == kLeft ? left_root : find_root(nodes, static_cast<std::int32_t>(i + step[k]));
-          bool listed = false;
-          for (int n = 0; n < count; ++n) listed |= roots[n] == other;
-          if (!listed) roots[count++] = other;
+        PixelNode& left = nodes[left_root];
+        if (std::max(shape_index, left.high) - std::min(shape_index, left.low) <= quantum) {
+          left.low = std::min(left.low, shape_index);
+          left.high = std::max(left.high, shape_index);
+          nodes[i].parent = left_root;
+        } else {
+          left_root = root;
         }
+        continue;
+      }
+      for (int k = 0; k < kBackwardNeighbors; ++k) {
+        if (!((joined >> k) & 1u)) continue;
+        const std::int32_t other =
+            k == kLeft ? left_root : find_root(nodes, static_cast<std::int32_t>(i + step[k]));
+        bool listed = false;
+        for (int n = 0; n < count; ++n) listed |= roots[n] == other;
+        if (!listed) roots[count++] = other;
       }
       while (count > 0) {
         int best = -1;
