@@ -181,6 +181,7 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
   seeds.adjacent.reserve(pixels / 8);
   std::vector<std::uint64_t> recent(kRecentPairs, ~std::uint64_t{0});
   std::vector<std::uint8_t> crossing(width);
+  std::vector<std::int32_t> crossing_columns(width);
   for (int row = field.height(); row-- > 0;) {
     const std::size_t row_start = static_cast<std::size_t>(row) * width;
     // The growing edges that cross from one seed into another.
@@ -188,9 +189,16 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
                                                field.height(), row, crossing.data());
     for (std::ptrdiff_t column = 0; column < width; ++column)
       crossing[column] = static_cast<std::uint8_t>(edges[row_start + column] & ~crossing[column]);
-    for (std::size_t column = width; column-- > 0;) {
+    // The columns with crossing edges, right to left, listed without branches: which
+    // pixels border another seed is as good as random on a noisy view.
+    int listed = 0;
+    for (std::ptrdiff_t column = width; column-- > 0;) {
+      crossing_columns[listed] = static_cast<std::int32_t>(column);
+      listed += crossing[column] != 0;
+    }
+    for (int n = 0; n < listed; ++n) {
+      const std::size_t column = crossing_columns[n];
       const std::uint8_t mask = crossing[column];
-      if (mask == 0) continue;
       const std::size_t i = row_start + column;
       const std::int32_t a = seed_of_pixel[i];
       for (int k = kBackwardNeighbors; k-- > 0;) {
