@@ -95,10 +95,6 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
       auto root = static_cast<std::int32_t>(i);
       const float shape_index = field.shape_index[i];
       nodes[i] = {root, shape_index, shape_index};
-      // Join the neighbours' seeds, the one whose joined S_I range is least first (the growing
-      // order of §3.5.2), while the joined seed's range stays within one quantum.
-      std::int32_t roots[kBackwardNeighbors];
-      int count = 0;
       // Inside a seed, the pixels above point straight at the left pixel's root (the previous
       // pixel's, a root still): then it is the only seed to join, without a search, and the
       // pixel joins it when the joined range stays within one quantum (the loop below would
@@ -117,6 +113,10 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
         }
         continue;
       }
+      // Join the neighbours' seeds, the one whose joined S_I range is least first (the growing
+      // order of §3.5.2), while the joined seed's range stays within one quantum.
+      std::int32_t roots[kBackwardNeighbors];
+      int count = 0;
       for (int k = 0; k < kBackwardNeighbors; ++k) {
         if (!((joined >> k) & 1u)) continue;
         const std::int32_t other =
