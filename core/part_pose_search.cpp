@@ -79,8 +79,7 @@ std::vector<ViewPoseHypothesis> distinct_hypotheses(const ModelBase& base,
   for (const ViewPoseHypothesis& hypothesis : sorted) {
     if (distinct.size() >= static_cast<std::size_t>(count)) break;
     if (hypothesis.truncated_mean_square_mm2 >
-        parameters.kept_score_factor * sorted.front().truncated_mean_square_mm2 +
-            parameters.kept_score_margin_mm2)
+        parameters.worst_kept_score_mm2(sorted.front().truncated_mean_square_mm2))
       break;
     const RigidTransform pose = T_part_scene(hypothesis);
     const bool repeated =

@@ -43,6 +43,11 @@ struct PartPoseSearchParameters {
   // 10-100 times the true one's 0.05-0.3 mm^2).
   double kept_score_factor = 3.0;
   double kept_score_margin_mm2 = 0.5;
+  // The worst field score kept beside a best one of best_mm2 (the rule above; the recognizer
+  // applies it to whole parts too).
+  double worst_kept_score_mm2(double best_mm2) const {
+    return kept_score_factor * best_mm2 + kept_score_margin_mm2;
+  }
 };
 
 // What the search needs of one part beyond the base: its distance field and, per coarse

@@ -262,8 +262,7 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
   });
   // As among one part's poses: a part that fits many times worse than the best one cannot
   // explain the scene as well, and is not registered.
-  const double hopeless_fit_mm2 = parameters_.search.kept_score_factor * best_fit_mm2_of_all +
-                                  parameters_.search.kept_score_margin_mm2;
+  const double hopeless_fit_mm2 = parameters_.search.worst_kept_score_mm2(best_fit_mm2_of_all);
   for (const WaitingPart& part : waiting) {
     if (part.best_fit_mm2 > hopeless_fit_mm2) break;
     if (register_part(part.part, part.field_poses)) return;

@@ -144,8 +144,7 @@ TEST_F(PartPoseSearch, FieldStagesAloneTellTheScansPartFromTheOthers) {
         best_other = std::min(best_other, best_fit_mm2[static_cast<std::size_t>(other)]);
     ranked_first += own < best_other;
     convincing += own <= parameters.convincing_field_fit_mm2;
-    others_hopeless += best_other > parameters.search.kept_score_factor * own +
-                                        parameters.search.kept_score_margin_mm2;
+    others_hopeless += best_other > parameters.search.worst_kept_score_mm2(own);
   }
   // Measured: own 0.06-0.16 mm^2, the best other part 2.1-30 mm^2.
   EXPECT_EQ(ranked_first, 10);
