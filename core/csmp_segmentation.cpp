@@ -61,7 +61,7 @@ void refine_boundaries(const ShapeIndexField& field, const std::vector<double>& 
   // A pixel whose eight neighbours all share its patch cannot move: the first pass finds the
   // others row by row (a pixel on the image border always counts as a boundary pixel).
   std::vector<std::uint8_t> equal(width);
-  std::vector<int> boundary_columns(width);
+  std::vector<std::int32_t> boundary_columns(width);
   std::vector<std::size_t> candidates;
   std::vector<int> stamp;
   stamp.assign(patch.size(), -1);
@@ -71,12 +71,8 @@ void refine_boundaries(const ShapeIndexField& field, const std::vector<double>& 
     if (pass == 0) {
       for (int row = 0; row < patch.height(); ++row) {
         equal_neighbors_of_row<8>(patch.data(), width, patch.height(), row, equal.data());
-        // Listed first without branches, then looked at: boundary pixels are scattered.
-        int listed = 0;
-        for (int column = 0; column < width; ++column) {
-          boundary_columns[listed] = column;
-          listed += equal[column] != 0xFFu;
-        }
+        const int listed =
+            columns_with_mask_other_than(equal.data(), width, 0xFFu, boundary_columns.data());
         for (int n = 0; n < listed; ++n) consider(patch.index(boundary_columns[n], row));
       }
     } else {

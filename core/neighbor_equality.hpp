@@ -46,4 +46,18 @@ void equal_neighbors_of_row(const T* values, int width, int height, int row, std
   equal[width - 1] = border(width - 1);
 }
 
+// The columns of a row whose mask is not `value` (e.g. pixels with a neighbour of another
+// patch), in increasing order, written to `columns`; returns their number. Listed without
+// branches, since such pixels lie scattered along a row: looking at them from the list costs
+// less than testing every column in the loop that looks at them.
+inline int columns_with_mask_other_than(const std::uint8_t* masks, int width, std::uint8_t value,
+                                        std::int32_t* columns) {
+  int listed = 0;
+  for (int column = 0; column < width; ++column) {
+    columns[listed] = column;
+    listed += masks[column] != value;
+  }
+  return listed;
+}
+
 }  // namespace cosmos

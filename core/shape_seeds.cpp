@@ -189,14 +189,10 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
                                                field.height(), row, crossing.data());
     for (std::ptrdiff_t column = 0; column < width; ++column)
       crossing[column] = static_cast<std::uint8_t>(edges[row_start + column] & ~crossing[column]);
-    // The columns with crossing edges, right to left, listed without branches: which
-    // pixels border another seed is as good as random on a noisy view.
-    int listed = 0;
-    for (std::ptrdiff_t column = width; column-- > 0;) {
-      crossing_columns[listed] = static_cast<std::int32_t>(column);
-      listed += crossing[column] != 0;
-    }
-    for (int n = 0; n < listed; ++n) {
+    // The columns with crossing edges, looked at right to left.
+    for (int n = columns_with_mask_other_than(crossing.data(), static_cast<int>(width), 0,
+                                              crossing_columns.data());
+         n-- > 0;) {
       const std::size_t column = crossing_columns[n];
       const std::uint8_t mask = crossing[column];
       const std::size_t i = row_start + column;

@@ -58,5 +58,19 @@ TEST(NeighborEquality, AUniformGridIsEqualEverywhereInsideAndNowhereOutside) {
   EXPECT_EQ(all[3], 0x08u);  // the rest of the first row only its left one
 }
 
+TEST(NeighborEquality, ListsTheColumnsWhoseMaskDiffersInOrder) {
+  const std::vector<std::uint8_t> masks = {0xFF, 0x01, 0xFF, 0xFF, 0x00, 0x80, 0xFF};
+  std::vector<std::int32_t> columns(masks.size());
+  const int width = static_cast<int>(masks.size());
+  ASSERT_EQ(columns_with_mask_other_than(masks.data(), width, 0xFF, columns.data()), 3);
+  EXPECT_EQ(columns[0], 1);
+  EXPECT_EQ(columns[1], 4);
+  EXPECT_EQ(columns[2], 5);
+  ASSERT_EQ(columns_with_mask_other_than(masks.data(), width, 0x00, columns.data()), 6);
+  EXPECT_EQ(columns[3], 3);  // all but column 4
+  EXPECT_EQ(columns[4], 5);
+  EXPECT_EQ(columns[5], 6);
+}
+
 }  // namespace
 }  // namespace cosmos
