@@ -20,6 +20,7 @@ void add_cosmos(ParameterText& t, const CosmosParameters& p) {
   t.set_number("cosmos.smoothing.normal_scale_deg", p.smoothing.normal_scale_deg);
   t.set_number("cosmos.smoothing.curvature_scale", p.smoothing.curvature_scale);
   t.set_number("cosmos.smoothing.self_weight", p.smoothing.self_weight);
+  t.set_number("cosmos.smoothing.curvature_floor_per_mm", p.smoothing.curvature_floor_per_mm);
   t.set_number("cosmos.shape_index.planar_sensitivity_mm", p.shape_index.planar_sensitivity_mm);
   t.set_number("cosmos.shape_index.max_tilt_deg", p.shape_index.max_tilt_deg);
   t.set_number("cosmos.segmentation.shape_diameter_limit", p.segmentation.shape_diameter_limit);

@@ -21,6 +21,12 @@ struct SmoothingParameters {
   double normal_scale_deg = 8.0;  // robust scale of a predicted normal's deviation
   double curvature_scale = 0.5;   // robust scale of relative curvature-tensor disagreement
   double self_weight = 1.0;       // weight of a pixel's own frame among its neighbours'
+  // Tensor disagreement is relative to |W_i|^2 + |W_j|^2 + floor^2: below the fit's own
+  // curvature noise a disagreement is no evidence of a curvature edge. 0.04/mm is the median
+  // |W| the 5x5 fit gives a plane under the cell's noise (0.02 mm on a 0.4 mm grid); at 1e-3
+  // noisy low-curvature regions barely smoothed (their neighbours' weights fell below the
+  // pixel's own).
+  double curvature_floor_per_mm = 0.04;
 };
 
 struct ShapeIndexParameters {

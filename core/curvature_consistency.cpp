@@ -9,15 +9,12 @@
 namespace cosmos {
 namespace {
 
-// Below this curvature (1/mm, a 1 m radius) tensor disagreement is measured absolutely, so
-// near-planar pixels do not see noise as relative disagreement.
-constexpr float kCurvatureFloorPerMm = 1e-3f;
-
 struct RobustScales {
   float inverse_normal_scale;  // 1 / (1 - cos(normal scale))
   float one_plus_inverse_normal_scale;
   float inverse_curvature_scale2;  // 1 / curvature_scale^2
   float self_weight;
+  float curvature_floor2;  // curvature_floor_per_mm^2
 };
 
 RobustScales robust_scales(const SmoothingParameters& p) {
@@ -26,7 +23,8 @@ RobustScales robust_scales(const SmoothingParameters& p) {
   return {static_cast<float>(inverse_normal_scale),
           static_cast<float>(1.0 + inverse_normal_scale),
           static_cast<float>(1.0 / (p.curvature_scale * p.curvature_scale)),
-          static_cast<float>(p.self_weight)};
+          static_cast<float>(p.self_weight),
+          static_cast<float>(p.curvature_floor_per_mm * p.curvature_floor_per_mm)};
 }
 
 // |W|^2 (Frobenius) of a symmetric tensor stored as xx, xy, xz, yy, yz, zz.
@@ -56,7 +54,7 @@ void smooth_columns(const SmoothingRowInput& in, const NeighborRows (&neighbors)
   const std::uint8_t* mask = in.same_side;
   const float step_x = in.pixel_size_x_mm, step_y = in.pixel_size_y_mm;
   const std::uint8_t* valid = in.valid;
-  const float floor2 = kCurvatureFloorPerMm * kCurvatureFloorPerMm;
+  const float floor2 = s.curvature_floor2;
   float* o[kFrameComponents];
   const float* fi[kFrameComponents];
   for (int m = 0; m < kFrameComponents; ++m) o[m] = out[m], fi[m] = f[m];
