@@ -4,9 +4,10 @@
 // its valid same-side 8-neighbours predict for it. A neighbour j predicts, by transporting its
 // local quadric to pixel i, the normal n_j + W_j (p_i - p_j) and its own Weingarten tensor
 // re-projected onto the new tangent plane. Predictions are weighted by how well they agree
-// with pixel i's current frame (Cauchy weights on the normal deviation and on the relative
-// curvature-tensor disagreement) and by the neighbour's reliability (its tilt), so frames are
-// never averaged across creases and silhouettes do not bleed inwards.
+// with pixel i's current frame (Cauchy weights on the normal deviation and on the curvature-
+// tensor disagreement relative to the tensors' size, floored at the fit's curvature noise) and
+// by the neighbour's reliability (its tilt), so frames are never averaged across creases and
+// silhouettes do not bleed inwards, while noise is not taken for a curvature edge.
 //
 // One iteration of one row reads only rows r-1..r+1 of the previous iteration, so the real-time
 // loop can pipeline the iterations row by row. The row kernel is branch-free over a row of
