@@ -75,23 +75,27 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
     step[k] = kNeighborOffsets[k].row * width + kNeighborOffsets[k].column;
 
   // Pass 1: union-find over pixels in raster order, every root the first pixel of its set, so
-  // a parent always precedes its child. `edges` keeps each pixel's backward growing edges.
-  // Every node is written in raster order before it is read: no fill beforehand.
+  // a parent always precedes its child. Every node is written in raster order before it is
+  // read: no fill beforehand. Where a pixel does not join a neighbour's set, the two sets'
+  // roots make a crossing: the sets may still join later through other pixels, so a crossing
+  // names pixels, resolved to seeds once seeds are numbered. A crossing repeating the one
+  // before it (the same two sets along a boundary) is listed once.
   const std::unique_ptr<PixelNode[]> node_storage(new PixelNode[pixels]);
   const std::span<PixelNode> nodes(node_storage.get(), pixels);
-  const std::unique_ptr<std::uint8_t[]> edge_storage(new std::uint8_t[pixels]);
-  const std::span<std::uint8_t> edges(edge_storage.get(), pixels);
+  std::vector<std::uint8_t> row_edges(width);
+  std::vector<std::pair<std::int32_t, std::int32_t>> crossings;
+  crossings.reserve(pixels / 4);
   const auto quantum = static_cast<float>(parameters.seed_shape_index_quantum);
   for (int row = 0; row < field.height(); ++row) {
     const std::size_t row_start = static_cast<std::size_t>(row) * width;
-    backward_edges_of_row(frames, field, row, crease_cos, edges.data() + row_start);
+    backward_edges_of_row(frames, field, row, crease_cos, row_edges.data());
     std::int32_t left_root = kNotRegion;
     for (std::size_t i = row_start; i < row_start + width; ++i) {
       if (field.label[i] == SurfaceLabel::kInvalid) {
         nodes[i].parent = kNotRegion;
         continue;
       }
-      const std::uint8_t joined = edges[i];
+      const std::uint8_t joined = row_edges[i - row_start];
       auto root = static_cast<std::int32_t>(i);
       const float shape_index = field.shape_index[i];
       nodes[i] = {root, shape_index, shape_index};
@@ -109,6 +113,7 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
           left.high = std::max(left.high, shape_index);
           nodes[i].parent = left_root;
         } else {
+          crossings.emplace_back(root, left_root);
           left_root = root;
         }
         continue;
@@ -144,6 +149,10 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
         nodes[joined_root].parent = kept;
         root = kept;
       }
+      for (int n = 0; n < count; ++n) {
+        const std::pair<std::int32_t, std::int32_t> crossing{root, roots[n]};
+        if (crossings.empty() || crossings.back() != crossing) crossings.push_back(crossing);
+      }
       left_root = root;
     }
   }
@@ -172,43 +181,23 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
     }
   }
 
-  // Pass 3: growing edges between different seeds. Along a boundary the same pair recurs from
-  // pixel to pixel, row to row and direction to direction: a small table of recently listed
-  // pairs, indexed by a hash of the pair, keeps nearly all repeats out of the list. The scan
-  // runs backwards so that a pair keeps the place of its last edge, as the unfiltered list's
-  // last copy would have in the growing queue (segmentations then match the unfiltered ones
-  // closely; keeping first copies changed the relief views').
-  seeds.adjacent.reserve(pixels / 8);
+  // Pass 3: the crossings between different seeds. Along a boundary the same pair recurs from
+  // pixel to pixel and row to row: a small table of recently listed pairs, indexed by a hash
+  // of the pair, keeps nearly all repeats out of the list. The scan runs backwards so that a
+  // pair keeps the place of its last crossing, as the unfiltered list's last copy would have
+  // in the growing queue (keeping first copies changed the relief views' segmentations).
+  seeds.adjacent.reserve(crossings.size() / 2);
   std::vector<std::uint64_t> recent(kRecentPairs, ~std::uint64_t{0});
-  std::vector<std::uint8_t> crossing(width);
-  std::vector<std::int32_t> crossing_columns(width);
-  for (int row = field.height(); row-- > 0;) {
-    const std::size_t row_start = static_cast<std::size_t>(row) * width;
-    // The growing edges that cross from one seed into another.
-    equal_neighbors_of_row<kBackwardNeighbors>(seed_of_pixel.data(), static_cast<int>(width),
-                                               field.height(), row, crossing.data());
-    for (std::ptrdiff_t column = 0; column < width; ++column)
-      crossing[column] = static_cast<std::uint8_t>(edges[row_start + column] & ~crossing[column]);
-    // The columns with crossing edges, looked at right to left.
-    for (int n = columns_with_mask_other_than(crossing.data(), static_cast<int>(width), 0,
-                                              crossing_columns.data());
-         n-- > 0;) {
-      const std::size_t column = crossing_columns[n];
-      const std::uint8_t mask = crossing[column];
-      const std::size_t i = row_start + column;
-      const std::int32_t a = seed_of_pixel[i];
-      for (int k = kBackwardNeighbors; k-- > 0;) {
-        if (!((mask >> k) & 1u)) continue;
-        const std::int32_t b = seed_of_pixel[i + step[k]];
-        const auto low = static_cast<std::uint32_t>(std::min(a, b));
-        const auto high = static_cast<std::uint32_t>(std::max(a, b));
-        const std::uint64_t key = std::uint64_t{low} << 32 | high;
-        std::uint64_t& slot = recent[(low * 0x9E3779B1u ^ high * 0x85EBCA77u) >> kRecentShift];
-        if (slot == key) continue;
-        slot = key;
-        seeds.adjacent.emplace_back(b, a);
-      }
-    }
+  for (auto crossing = crossings.rbegin(); crossing != crossings.rend(); ++crossing) {
+    const std::int32_t a = seed_of_pixel[crossing->first], b = seed_of_pixel[crossing->second];
+    if (a == b) continue;
+    const auto low = static_cast<std::uint32_t>(std::min(a, b));
+    const auto high = static_cast<std::uint32_t>(std::max(a, b));
+    const std::uint64_t key = std::uint64_t{low} << 32 | high;
+    std::uint64_t& slot = recent[(low * 0x9E3779B1u ^ high * 0x85EBCA77u) >> kRecentShift];
+    if (slot == key) continue;
+    slot = key;
+    seeds.adjacent.emplace_back(b, a);
   }
   std::reverse(seeds.adjacent.begin(), seeds.adjacent.end());
   return seeds;
