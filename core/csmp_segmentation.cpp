@@ -79,27 +79,31 @@ void refine_boundaries(const ShapeIndexField& field, const std::vector<double>& 
       if (candidates.empty()) break;
       for (std::size_t i : candidates) consider(i);
     }
-    candidates.clear();
     for (const auto& [i, to] : moves) patch[i] = curved_patch[i] = to;
     // A pixel that did not move had its own patch nearest among its neighbours' (or had all
     // neighbours in its patch); it can move next pass only if a neighbour moved into a patch
-    // nearer than its own. Others need no second look.
+    // nearer than its own. Others need no second look. Listed without branches: whether a
+    // neighbour is listed is as unpredictable as the noise.
+    candidates.resize(moves.size() * 8);
+    std::size_t listed = 0;
     for (const auto& [i, to] : moves) {
       // Links between two labelled pixels are symmetric (a depth-jump test of the pair), and
-      // only set towards neighbours inside the image.
+      // only set towards neighbours inside the image; a neighbour without one reads the pixel
+      // itself, now in `to`.
       const std::uint8_t side = field.same_side[i];
+      const double mean_to = mean_of[to + 1];
       for (int k = 0; k < 8; ++k) {
-        if (!((side >> k) & 1u)) continue;
-        const std::size_t j = i + step[k];
+        const std::size_t j = ((side >> k) & 1u) ? i + step[k] : i;
         const std::int32_t own = curved_patch[j];
-        if (own == kNoPatch || own == to || stamp[j] == pass) continue;
         const double s = field.shape_index[j];
-        if (std::abs(s - mean_of[to + 1]) < std::abs(s - mean_of[own + 1])) {
-          stamp[j] = pass;
-          candidates.push_back(j);
-        }
+        const bool nearer = std::abs(s - mean_to) < std::abs(s - mean_of[own + 1]);
+        const bool listing = own != kNoPatch && own != to && stamp[j] != pass && nearer;
+        stamp[j] = listing ? pass : stamp[j];
+        candidates[listed] = j;
+        listed += listing;
       }
     }
+    candidates.resize(listed);
   }
 }
 
