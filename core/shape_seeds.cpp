@@ -85,6 +85,10 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
   std::vector<std::uint8_t> row_edges(width);
   std::vector<std::pair<std::int32_t, std::int32_t>> crossings;
   crossings.reserve(pixels / 4);
+  auto add_crossing = [&](std::int32_t root, std::int32_t other) {
+    const std::pair<std::int32_t, std::int32_t> crossing{root, other};
+    if (crossings.empty() || crossings.back() != crossing) crossings.push_back(crossing);
+  };
   const auto quantum = static_cast<float>(parameters.seed_shape_index_quantum);
   for (int row = 0; row < field.height(); ++row) {
     const std::size_t row_start = static_cast<std::size_t>(row) * width;
@@ -113,19 +117,20 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
           left.high = std::max(left.high, shape_index);
           nodes[i].parent = left_root;
         } else {
-          crossings.emplace_back(root, left_root);
+          add_crossing(root, left_root);
           left_root = root;
         }
         continue;
       }
       // Join the neighbours' seeds, the one whose joined S_I range is least first (the growing
       // order of §3.5.2), while the joined seed's range stays within one quantum.
-      std::int32_t roots[kBackwardNeighbors];
+      std::int32_t roots[kBackwardNeighbors], root_in_direction[kBackwardNeighbors];
       int count = 0;
       for (int k = 0; k < kBackwardNeighbors; ++k) {
         if (!((joined >> k) & 1u)) continue;
         const std::int32_t other =
             k == kLeft ? left_root : find_root(nodes, static_cast<std::int32_t>(i + step[k]));
+        root_in_direction[k] = other;
         bool listed = false;
         for (int n = 0; n < count; ++n) listed |= roots[n] == other;
         if (!listed) roots[count++] = other;
@@ -149,9 +154,17 @@ ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexFie
         nodes[joined_root].parent = kept;
         root = kept;
       }
-      for (int n = 0; n < count; ++n) {
-        const std::pair<std::int32_t, std::int32_t> crossing{root, roots[n]};
-        if (crossings.empty() || crossings.back() != crossing) crossings.push_back(crossing);
+      if (count == 1) {
+        add_crossing(root, roots[0]);
+      } else if (count > 1) {
+        // Edge by edge, in direction order, into the sets left unjoined (roots still, and not
+        // this pixel's): the seed pairs then keep the order a scan of every growing edge gives
+        // them, which orders ties in the growing queue.
+        for (int k = 0; k < kBackwardNeighbors; ++k) {
+          const std::int32_t other = root_in_direction[k];
+          if (((joined >> k) & 1u) && other != root && nodes[other].parent == other)
+            add_crossing(root, other);
+        }
       }
       left_root = root;
     }
