@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <map>
 #include <set>
 #include <utility>
 
@@ -147,6 +149,55 @@ TEST(ShapeSeeds, CreasesDepthJumpsAndLabelsSeparateSeeds) {
   EXPECT_FLOAT_EQ(seeds.shape_index_min[seed(0, 0)], kPlanarShapeIndex);
   EXPECT_FLOAT_EQ(seeds.area_mm2[seed(0, 2)], 8.0f);
   EXPECT_TRUE(seeds.adjacent.empty());  // no growing edge crosses a crease, jump or label
+}
+
+TEST(ShapeSeeds, PairsComeInRasterOrderOfTheirLastCrossingEdge) {
+  // Shape indices scattered over 0.1 of S_I: seeds of a few pixels, and pixels whose
+  // neighbours lie in two or three seeds they do not join.
+  const HandField noisy = hand_field(16, 12, [](int column, int row) {
+    const auto hash = static_cast<std::uint32_t>(column * 73856093 ^ row * 19349663) * 2654435761u;
+    return 0.4f + 0.1f * static_cast<float>(hash >> 8) / static_cast<float>(1u << 24);
+  });
+  const ShapeSeeds seeds = find_shape_seeds(noisy.frames, noisy.field, SegmentationParameters{});
+  ASSERT_GT(seeds.seed_count(), 30);
+  // Every backward edge (all are growing edges here) between different seeds, in raster order
+  // of its later pixel, then by direction: a pair's place is that of its last such edge, and
+  // it is listed as (earlier pixel's seed, later pixel's seed) of that edge.
+  std::map<std::pair<int, int>, std::pair<int, std::pair<int, int>>> last_edge;
+  int crossing_pixels = 0;  // pixels with edges into two or more other seeds
+  for (int row = 0; row < 12; ++row) {
+    for (int column = 0; column < 16; ++column) {
+      const int a = seeds.seed_of_pixel[noisy.field.label.index(column, row)];
+      std::set<int> others;
+      for (int k = 0; k < 4; ++k) {
+        const PixelOffset offset = kNeighborOffsets[k];
+        if (!noisy.field.label.contains(column + offset.column, row + offset.row)) continue;
+        const int b =
+            seeds.seed_of_pixel[noisy.field.label.index(column + offset.column, row + offset.row)];
+        if (a == b) continue;
+        others.insert(b);
+        const int place = (row * 16 + column) * 4 + k;
+        last_edge[{std::min(a, b), std::max(a, b)}] = {place, {b, a}};
+      }
+      crossing_pixels += others.size() >= 2;
+    }
+  }
+  ASSERT_GT(crossing_pixels, 10);
+  std::vector<std::pair<int, std::pair<int, int>>> by_place;
+  for (const auto& [pair, edge] : last_edge) by_place.push_back(edge);
+  std::sort(by_place.begin(), by_place.end());
+  std::vector<std::pair<std::int32_t, std::int32_t>> expected;
+  for (const auto& [place, pair] : by_place) expected.emplace_back(pair.first, pair.second);
+  // A pair the table of recent pairs lost is listed again at an earlier edge: its last copy
+  // keeps its place.
+  std::vector<std::pair<std::int32_t, std::int32_t>> last_copies;
+  std::set<std::pair<int, int>> seen;
+  for (auto pair = seeds.adjacent.rbegin(); pair != seeds.adjacent.rend(); ++pair)
+    if (seen.insert({std::min(pair->first, pair->second), std::max(pair->first, pair->second)})
+            .second)
+      last_copies.push_back(*pair);
+  std::reverse(last_copies.begin(), last_copies.end());
+  EXPECT_EQ(last_copies, expected);
 }
 
 }  // namespace
