@@ -5,8 +5,8 @@
 // builds a new base instead of loading a stale one.
 #include <filesystem>
 
-#include "core/model_base.hpp"
-#include "realtime/cell_config.hpp"
+#include "core/modelbase/model_base.hpp"
+#include "realtime/config/cell_config.hpp"
 #include "sim/part_catalog.hpp"
 
 namespace cosmos {

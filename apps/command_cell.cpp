@@ -1,6 +1,6 @@
 // `cosmos cell --config config/cell.yaml [--source sim|hardware] [--hardware FILE] [--parts N]
 // [--duration-s S] [--unpaced] [--replay FILE]`: the work cell. Profiles from the scanner
-// source run through the real-time loop (realtime/cell_runner.hpp); each part's pose goes out
+// source run through the real-time loop (realtime/cell/cell_runner.hpp); each part's pose goes out
 // on COSMOS_POSE while a live table shows it; a summary ends the run.
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -12,13 +12,13 @@
 #include "apps/cell_model_base.hpp"
 #include "apps/command_registry.hpp"
 #include "core/input_error.hpp"
-#include "core/recognizer.hpp"
-#include "realtime/cell_config.hpp"
-#include "realtime/cell_runner.hpp"
-#include "realtime/hardware_config.hpp"
-#include "realtime/hardware_source.hpp"
-#include "realtime/replay_source.hpp"
-#include "realtime/simulated_source.hpp"
+#include "core/recognition/recognizer.hpp"
+#include "realtime/config/cell_config.hpp"
+#include "realtime/cell/cell_runner.hpp"
+#include "realtime/config/hardware_config.hpp"
+#include "realtime/sources/hardware_source.hpp"
+#include "realtime/sources/replay_source.hpp"
+#include "sim/source/simulated_source.hpp"
 
 namespace cosmos::cli {
 namespace {

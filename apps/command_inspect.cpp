@@ -8,7 +8,7 @@
 #include <system_error>
 
 #include "apps/command_registry.hpp"
-#include "core/cosmos_pipeline.hpp"
+#include "core/representation/cosmos_pipeline.hpp"
 #include "core/input_error.hpp"
 #include "core/io/cosmos_json.hpp"
 #include "core/io/range_image_file.hpp"

@@ -14,10 +14,10 @@
 #include <vector>
 
 #include "apps/command_registry.hpp"
-#include "realtime/lcm_channels.hpp"
-#include "realtime/lcm_codec.hpp"
-#include "realtime/lcm_connection.hpp"
-#include "realtime/lcm_message_conversion.hpp"
+#include "realtime/lcm/lcm_channels.hpp"
+#include "realtime/lcm/lcm_codec.hpp"
+#include "realtime/lcm/lcm_connection.hpp"
+#include "realtime/lcm/lcm_message_conversion.hpp"
 
 namespace cosmos::cli {
 namespace {

@@ -14,12 +14,12 @@
 #include <type_traits>
 
 #include "apps/command_registry.hpp"
-#include "apps/model_base_builder.hpp"
+#include "sim/model_base_build/model_base_builder.hpp"
 #include "apps/model_base_progress.hpp"
 #include "core/input_error.hpp"
 #include "core/io/model_base_file.hpp"
 #include "sim/part_catalog.hpp"
-#include "sim/scanner_config.hpp"
+#include "scanner/scanner_config.hpp"
 
 namespace cosmos::cli {
 namespace {

@@ -19,7 +19,7 @@
 #include "sim/part_catalog.hpp"
 #include "sim/part_pose.hpp"
 #include "sim/part_scan.hpp"
-#include "sim/scanner_config.hpp"
+#include "scanner/scanner_config.hpp"
 #include "sim/seeded_random.hpp"
 
 namespace cosmos::cli {

@@ -6,8 +6,8 @@
 // `part` is the part's name (null when rejected), `view` its view-sphere index.
 #include <nlohmann/json.hpp>
 
-#include "core/model_base.hpp"
-#include "core/recognizer.hpp"
+#include "core/modelbase/model_base.hpp"
+#include "core/recognition/recognizer.hpp"
 
 namespace cosmos {
 

@@ -8,9 +8,9 @@
 #include <map>
 #include <random>
 
-#include "core/cosmos_pipeline.hpp"
-#include "core/curvature_consistency.hpp"
-#include "core/local_surface_fit.hpp"
+#include "core/representation/cosmos_pipeline.hpp"
+#include "core/surface/curvature_consistency.hpp"
+#include "core/surface/local_surface_fit.hpp"
 
 namespace cosmos {
 namespace {

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <vector>
 
-#include "core/patch_group_matching.hpp"
-#include "core/pose_from_patches.hpp"
+#include "core/matching/patch_group_matching.hpp"
+#include "core/matching/pose_from_patches.hpp"
 #include "tests/core/matching_fixture.hpp"
 
 namespace cosmos {

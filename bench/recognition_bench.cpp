@@ -1,4 +1,4 @@
-// Recognition (core/recognizer.hpp) stage by stage, on the seeded simulated scans of
+// Recognition (core/recognition/recognizer.hpp) stage by stage, on the seeded simulated scans of
 // bench/recognition_scan_set.hpp (regression catalog, 5-part x 80-view base), so a reader sees
 // where the time of one recognition goes; then the whole recognizer, with and without the
 // features (the real-time cell builds them incrementally and pays only recognize_analyzed).
@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "bench/recognition_scan_set.hpp"
-#include "core/model_surface.hpp"
-#include "core/part_pose_search.hpp"
-#include "core/part_support.hpp"
-#include "core/pose_hypotheses.hpp"
-#include "core/recognizer.hpp"
+#include "core/modelbase/model_surface.hpp"
+#include "core/recognition/part_pose_search.hpp"
+#include "core/recognition/part_support.hpp"
+#include "core/recognition/pose_hypotheses.hpp"
+#include "core/recognition/recognizer.hpp"
 
 namespace cosmos::bench {
 namespace {

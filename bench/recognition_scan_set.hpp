@@ -1,6 +1,6 @@
 #pragma once
 // The recognition bench's scan set: the first kScans test scans `cosmos eval --seed 11` makes
-// of the regression catalog (apps/evaluation_scans.hpp), against the regression model base
+// of the regression catalog (sim/evaluation/evaluation_scans.hpp), against the regression model base
 // ($COSMOS_BENCH_MODEL_BASE, default <build>/test-data/regression-80.cmb, which ctest's
 // build_regression_model_base makes; catalog $COSMOS_BENCH_CATALOG, default
 // config/parts-regression.yaml), each with the output of every recognition stage computed
@@ -20,14 +20,14 @@
 #include <string>
 #include <vector>
 
-#include "apps/evaluation_scans.hpp"
-#include "core/cosmos_pipeline.hpp"
+#include "sim/evaluation/evaluation_scans.hpp"
+#include "core/representation/cosmos_pipeline.hpp"
 #include "core/io/model_base_file.hpp"
-#include "core/model_surface.hpp"
-#include "core/pose_hypotheses.hpp"
-#include "core/recognizer.hpp"
+#include "core/modelbase/model_surface.hpp"
+#include "core/recognition/pose_hypotheses.hpp"
+#include "core/recognition/recognizer.hpp"
 #include "sim/part_catalog.hpp"
-#include "sim/scanner_model.hpp"
+#include "scanner/scanner_model.hpp"
 
 namespace cosmos::bench {
 

@@ -5,8 +5,8 @@
 // and read the medians (the machine is shared).
 #include <benchmark/benchmark.h>
 
-#include "core/registration_points.hpp"
-#include "core/view_registration.hpp"
+#include "core/registration/registration_points.hpp"
+#include "core/registration/view_registration.hpp"
 #include "sim/free_form_view_pair.hpp"
 
 namespace cosmos {

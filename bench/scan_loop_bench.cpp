@@ -36,20 +36,20 @@
 #include <vector>
 
 #include "core/io/model_base_file.hpp"
-#include "core/model_base.hpp"
-#include "core/recognizer.hpp"
+#include "core/modelbase/model_base.hpp"
+#include "core/recognition/recognizer.hpp"
 #include "firmware_bridge/kernel_timestamp.hpp"
-#include "realtime/cell_runner.hpp"
-#include "realtime/latency_histogram.hpp"
-#include "realtime/memory_publisher.hpp"
-#include "realtime/part_recognition.hpp"
-#include "realtime/profile_conditioner.hpp"
-#include "realtime/profile_log_writer.hpp"
-#include "realtime/replay_source.hpp"
-#include "realtime/scan_loop.hpp"
-#include "realtime/simulated_source.hpp"
+#include "realtime/cell/cell_runner.hpp"
+#include "realtime/rt/latency_histogram.hpp"
+#include "realtime/lcm/memory_publisher.hpp"
+#include "realtime/cell/part_recognition.hpp"
+#include "realtime/loop/profile_conditioner.hpp"
+#include "realtime/lcm/profile_log_writer.hpp"
+#include "realtime/sources/replay_source.hpp"
+#include "realtime/loop/scan_loop.hpp"
+#include "sim/source/simulated_source.hpp"
 #include "sim/part_catalog.hpp"
-#include "sim/scanner_model.hpp"
+#include "scanner/scanner_model.hpp"
 
 namespace cosmos {
 namespace {

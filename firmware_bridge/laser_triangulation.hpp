@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "firmware_bridge/laser_stripe_extraction.hpp"
-#include "firmware_bridge/triangulation_geometry.hpp"
+#include "scanner/triangulation_geometry.hpp"
 
 namespace cosmos {
 

@@ -1,7 +1,7 @@
 #pragma once
 // One camera frame → one Profile: laser-stripe extraction, triangulation, and resampling onto
 // the profile's uniform x grid. This is the whole per-frame path of a laser-line scanner, held
-// in one place because two callers run it: the live scanner (realtime/hardware_source.hpp)
+// in one place because two callers run it: the live scanner (realtime/sources/hardware_source.hpp)
 // and the simulator's camera mode (sim/simulated_scanner.hpp). Sharing it is what makes the
 // simulated cell a test of the hardware path rather than of a look-alike.
 //
@@ -13,7 +13,7 @@
 #include "firmware_bridge/laser_stripe_extraction.hpp"
 #include "firmware_bridge/laser_triangulation.hpp"
 #include "firmware_bridge/profile_resampling.hpp"
-#include "firmware_bridge/triangulation_geometry.hpp"
+#include "scanner/triangulation_geometry.hpp"
 
 namespace cosmos {
 

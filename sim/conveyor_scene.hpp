@@ -17,7 +17,7 @@
 
 #include "sim/height_bound_grid.hpp"
 #include "sim/mesh.hpp"
-#include "sim/scanner_model.hpp"
+#include "scanner/scanner_model.hpp"
 
 namespace cosmos {
 

@@ -29,9 +29,9 @@
 #include <limits>
 #include <vector>
 
-#include "firmware_bridge/triangulation_geometry.hpp"
+#include "scanner/triangulation_geometry.hpp"
 #include "sim/conveyor_scene.hpp"
-#include "sim/scanner_model.hpp"
+#include "scanner/scanner_model.hpp"
 
 namespace cosmos {
 

@@ -15,7 +15,7 @@
 #include "core/range_image.hpp"
 #include "sim/conveyor_scene.hpp"
 #include "sim/mesh.hpp"
-#include "sim/scanner_model.hpp"
+#include "scanner/scanner_model.hpp"
 #include "sim/simulated_scanner.hpp"
 
 namespace cosmos {

@@ -11,7 +11,7 @@
 #include <unistd.h>
 
 #include "core/input_error.hpp"
-#include "sim/yaml_input_errors.hpp"
+#include "core/io/yaml_input_errors.hpp"
 
 namespace cosmos {
 namespace {

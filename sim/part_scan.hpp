@@ -9,7 +9,7 @@
 #include "core/range_image.hpp"
 #include "sim/mesh.hpp"
 #include "sim/range_image_scan.hpp"
-#include "sim/scanner_model.hpp"
+#include "scanner/scanner_model.hpp"
 #include "sim/simulated_scanner.hpp"
 
 namespace cosmos {

@@ -22,7 +22,7 @@
 #include "firmware_bridge/laser_stripe_extraction.hpp"
 #include "sim/conveyor_scene.hpp"
 #include "sim/laser_line_scanner.hpp"
-#include "sim/scanner_model.hpp"
+#include "scanner/scanner_model.hpp"
 
 namespace cosmos {
 

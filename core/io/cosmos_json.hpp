@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "core/cosmos_pipeline.hpp"
+#include "core/representation/cosmos_pipeline.hpp"
 
 namespace cosmos {
 

@@ -20,7 +20,7 @@
 #include <optional>
 #include <string>
 
-#include "core/model_base.hpp"
+#include "core/modelbase/model_base.hpp"
 
 namespace cosmos {
 

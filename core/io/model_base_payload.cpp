@@ -95,7 +95,7 @@ std::size_t estimated_payload_bytes(const ModelBase& base) {
     const std::size_t points = static_cast<std::size_t>(packed ? view.registration_packed.size() : view.registration.size());
     const std::size_t cells = packed ? view.registration_packed.occupied_bytes()
                                      : (view.registration.cell_point.size() + 7) / 8;
-    bytes += 1024 + 24 * points + cells;  // core/packed_registration_points.hpp
+    bytes += 1024 + 24 * points + cells;  // core/registration/packed_registration_points.hpp
     for (const Csmp& p : view.cosmos.patches) bytes += 160 + 8 * p.neighbors.size();
     for (const GaussMapPoint& g : view.cosmos.gauss_map) {
       bytes += 64;

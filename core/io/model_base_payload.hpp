@@ -9,7 +9,7 @@
 
 #include <flatbuffers/flatbuffers.h>
 
-#include "core/model_base.hpp"
+#include "core/modelbase/model_base.hpp"
 
 namespace cosmos {
 

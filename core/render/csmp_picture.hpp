@@ -4,7 +4,7 @@
 // of no patch black. The field is placed by field_layout() of the label image.
 #include <vector>
 
-#include "core/csmp_segmentation.hpp"
+#include "core/segmentation/csmp_segmentation.hpp"
 #include "core/render/bgr_picture.hpp"
 
 namespace cosmos {

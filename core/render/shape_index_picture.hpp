@@ -3,7 +3,7 @@
 // planar grey, invalid black, with a legend naming the categories. The field is placed by
 // field_layout() of the field size and the given pixel size.
 #include "core/render/bgr_picture.hpp"
-#include "core/shape_index.hpp"
+#include "core/surface/shape_index.hpp"
 
 namespace cosmos {
 

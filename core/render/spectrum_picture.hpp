@@ -4,7 +4,7 @@
 // bar on the right (on its own 0-100 % axis, since it often dwarfs every curved bin), and the
 // first moments (Eqs. 4.1-4.2) in the title.
 #include "core/render/bgr_picture.hpp"
-#include "core/shape_spectrum.hpp"
+#include "core/representation/shape_spectrum.hpp"
 
 namespace cosmos {
 

@@ -2,7 +2,7 @@
 // The pictures `cosmos inspect` writes for a person to look at.
 #include <filesystem>
 
-#include "core/cosmos_pipeline.hpp"
+#include "core/representation/cosmos_pipeline.hpp"
 #include "core/range_image.hpp"
 
 namespace cosmos {

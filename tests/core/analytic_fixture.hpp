@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "core/cosmos_pipeline.hpp"
+#include "core/representation/cosmos_pipeline.hpp"
 #include "sim/analytic_surface.hpp"
 
 namespace cosmos::testing {

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/cosmos_pipeline.hpp"
+#include "core/representation/cosmos_pipeline.hpp"
 
 namespace cosmos::testing {
 

@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/cosmos_pipeline.hpp"
+#include "core/representation/cosmos_pipeline.hpp"
 #include "sim/analytic_surface.hpp"
 
 namespace cosmos::testing {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "firmware_bridge/laser_stripe_extraction.hpp"
-#include "firmware_bridge/triangulation_geometry.hpp"
+#include "scanner/triangulation_geometry.hpp"
 #include "tests/firmware_bridge/synthetic_stripe.hpp"
 
 namespace cosmos {

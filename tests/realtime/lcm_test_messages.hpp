@@ -9,8 +9,8 @@
 #include <string>
 
 #include "core/profile.hpp"
-#include "realtime/cell_status.hpp"
-#include "realtime/part_pose.hpp"
+#include "realtime/cell/cell_status.hpp"
+#include "realtime/cell/part_pose.hpp"
 
 namespace cosmos::testing {
 

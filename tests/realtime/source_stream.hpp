@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "realtime/scanner_source.hpp"
+#include "realtime/sources/scanner_source.hpp"
 #include "tests/common/allocation_counter.hpp"
 
 namespace cosmos::testing {

@@ -12,7 +12,7 @@
 
 #include "core/input_error.hpp"
 #include "core/io/range_image_file.hpp"
-#include "handmade_image_files.hpp"
+#include "tests/sim/handmade_image_files.hpp"
 #include "sim/analytic_surface.hpp"
 
 namespace cosmos {

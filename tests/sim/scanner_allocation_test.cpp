@@ -1,39 +1,24 @@
 // The simulated scanner's profile loop allocates nothing after warm-up, in both modes: it runs
 // on the acquisition thread of the simulated cell, under the same rule as the real one.
 //
-// Allocations are counted by replacing the global operator new. The replacement is weak so it
-// cannot clash with another test's counting allocator; if one replaces it, this test sees no
-// counts and fails rather than passing vacuously.
+// Allocations are counted by the binary's one replacement operator new
+// (tests/common/allocation_counter.hpp), per thread.
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
 #include <functional>
-#include <new>
 #include <vector>
 
 #include "sim/procedural_meshes.hpp"
+#include "tests/common/allocation_counter.hpp"
 #include "tests/sim/scanner_test_scenes.hpp"
-
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-__attribute__((weak)) void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* memory = std::malloc(size == 0 ? 1 : size)) return memory;
-  throw std::bad_alloc();
-}
-__attribute__((weak)) void operator delete(void* memory) noexcept { std::free(memory); }
-__attribute__((weak)) void operator delete(void* memory, std::size_t) noexcept { std::free(memory); }
 
 namespace cosmos {
 namespace {
 
 long allocations_while(const std::function<void()>& work) {
-  const long before = g_allocations.load();
+  const std::uint64_t before = test::allocations_on_this_thread();
   work();
-  return g_allocations.load() - before;
+  return static_cast<long>(test::allocations_on_this_thread() - before);
 }
 
 class ScannerAllocation : public ::testing::TestWithParam<ScanMode> {};

@@ -1,0 +1,221 @@
+#include "core/recognition/part_pose_search.hpp"
+
+#include <algorithm>
+
+#include "core/modelbase/model_surface.hpp"
+#include "core/recognition/pose_hypotheses.hpp"
+
+namespace cosmos {
+namespace {
+
+// Best first; ties keep generation order (views in base order, turns by angle).
+void keep_best(std::vector<FieldHypothesis>& hypotheses, std::size_t count) {
+  std::stable_sort(hypotheses.begin(), hypotheses.end(),
+                   [](const FieldHypothesis& a, const FieldHypothesis& b) {
+                     return a.truncated_mean_square_mm2 < b.truncated_mean_square_mm2;
+                   });
+  if (hypotheses.size() > count) hypotheses.resize(count);
+}
+
+// Every hypothesis `iterations` alignment steps in the field (none: as it is), then its score
+// on `points`.
+void align_and_rescore(const RegistrationPoints& points, const PartDistanceField& field,
+                       int iterations, double truncation_mm,
+                       std::vector<FieldHypothesis>& hypotheses) {
+  for (FieldHypothesis& hypothesis : hypotheses) {
+    if (iterations > 0)
+      hypothesis.T_part_scene = align_in_distance_field(points, field, hypothesis.T_part_scene,
+                                                        iterations, truncation_mm);
+    hypothesis.truncated_mean_square_mm2 =
+        field_truncated_mean_square_mm2(points, field, hypothesis.T_part_scene, truncation_mm);
+  }
+}
+
+// Turns about the viewing axis of every start view, the scene's centroid on the view's: as
+// part-frame poses.
+std::vector<FieldHypothesis> turned_view_starts(const RegistrationPoints& scoring,
+                                                const ModelBase& base, const PartSearchModel& model,
+                                                int turns) {
+  const Eigen::Vector3d scene_centre = scoring.position_mm.rowwise().mean();
+  std::vector<FieldHypothesis> starts;
+  for (std::size_t s = 0; s < model.start_views.size(); ++s) {
+    const ModelBaseView& view = base.views[static_cast<std::size_t>(model.start_views[s])];
+    const Eigen::Vector3d& model_centre = model.start_view_centroid_mm[s];
+    const RigidTransform T_part_view = view.T_scanner_part.inverse();
+    for (int k = 0; k < turns; ++k)
+      starts.push_back({T_part_view * in_plane_turn(k, turns, scene_centre, model_centre), 0.0});
+  }
+  return starts;
+}
+
+// The part's view nearest to the direction the scanner looks from under T_part_scene.
+int nearest_view(const ModelBase& base, int part, const RigidTransform& T_part_scene) {
+  const Eigen::Vector3d seen_from_part = T_part_scene.rotation * Eigen::Vector3d::UnitZ();
+  int nearest = -1;
+  for (std::size_t v = 0; v < base.views.size(); ++v) {
+    const ModelBaseView& view = base.views[v];
+    if (view.part_index != part) continue;
+    if (nearest < 0 ||
+        view.direction_part.dot(seen_from_part) >
+            base.views[static_cast<std::size_t>(nearest)].direction_part.dot(seen_from_part))
+      nearest = static_cast<int>(v);
+  }
+  return nearest;
+}
+
+// Starts that converged to one pose of the part (on one view or neighbouring ones) are one
+// hypothesis, and one that fits the part much worse than the best is none: the caller
+// registers each. `sorted`: best first.
+std::vector<ViewPoseHypothesis> distinct_hypotheses(const ModelBase& base,
+                                                    const std::vector<ViewPoseHypothesis>& sorted,
+                                                    const PartPoseSearchParameters& parameters,
+                                                    int count) {
+  const auto T_part_scene = [&base](const ViewPoseHypothesis& hypothesis) {
+    return base.views[static_cast<std::size_t>(hypothesis.view)].T_scanner_part.inverse() *
+           hypothesis.T_model_scene;
+  };
+  std::vector<ViewPoseHypothesis> distinct;
+  std::vector<RigidTransform> distinct_poses;
+  for (const ViewPoseHypothesis& hypothesis : sorted) {
+    if (distinct.size() >= static_cast<std::size_t>(count)) break;
+    if (hypothesis.truncated_mean_square_mm2 >
+        parameters.worst_kept_score_mm2(sorted.front().truncated_mean_square_mm2))
+      break;
+    const RigidTransform pose = T_part_scene(hypothesis);
+    const bool repeated =
+        std::any_of(distinct_poses.begin(), distinct_poses.end(), [&](const RigidTransform& kept) {
+          return rotation_angle_between_rad(kept.rotation, pose.rotation) <
+                     parameters.same_pose_rad &&
+                 (kept.translation_mm - pose.translation_mm).norm() < parameters.same_pose_mm;
+        });
+    if (repeated) continue;
+    distinct.push_back(hypothesis);
+    distinct_poses.push_back(pose);
+  }
+  return distinct;
+}
+
+}  // namespace
+
+PartSearchModel build_part_search_model(const ModelBase& base, int part,
+                                        const PartDistanceFieldParameters& parameters) {
+  PartSearchModel model;
+  bool has_coarse_views = false;
+  for (const ModelBaseView& view : base.views)
+    has_coarse_views |= view.part_index == part && is_once_subdivided_view(view.view_index);
+  std::vector<Eigen::Vector3d> points_part_mm;
+  for (std::size_t v = 0; v < base.views.size(); ++v) {
+    const ModelBaseView& view = base.views[v];
+    if (view.part_index != part) continue;
+    const ModelSurface surface(view);
+    const Eigen::Matrix3Xd& position = surface.points().position_mm;
+    if (position.cols() == 0) continue;
+    const RigidTransform T_part_view = view.T_scanner_part.inverse();
+    for (Eigen::Index i = 0; i < position.cols(); ++i)
+      points_part_mm.push_back(T_part_view.apply(position.col(i)));
+    if (has_coarse_views && !is_once_subdivided_view(view.view_index)) continue;
+    model.start_views.push_back(static_cast<int>(v));
+    model.start_view_centroid_mm.push_back(position.rowwise().mean());
+  }
+  model.field = PartDistanceField(points_part_mm, parameters);
+  return model;
+}
+
+std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& scene,
+                                                   const ModelBase& base,
+                                                   const PartSearchModel& model,
+                                                   const PartPoseSearchParameters& parameters) {
+  const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
+  const PartDistanceField& field = model.field;
+  if (scoring.size() == 0 || field.empty()) return {};
+  const double truncation_mm = parameters.field_truncation_mm;
+  // The first stages on a sparser subset still: most starts are far off, and which few
+  // hundred are not shows on fewer points.
+  const RegistrationPoints sparse = spread_subset(scoring, parameters.start_scoring_points);
+  // Against the whole part, in stages: every start as it is, the best after one alignment
+  // step, the best of those after a few more.
+  std::vector<FieldHypothesis> hypotheses =
+      turned_view_starts(scoring, base, model, parameters.in_plane_turns);
+  align_and_rescore(sparse, field, 0, truncation_mm, hypotheses);
+  keep_best(hypotheses, static_cast<std::size_t>(parameters.field_candidates));
+  align_and_rescore(sparse, field, 1, truncation_mm, hypotheses);
+  keep_best(hypotheses, static_cast<std::size_t>(parameters.field_aligned));
+  align_and_rescore(scoring, field, parameters.field_iterations, truncation_mm, hypotheses);
+  keep_best(hypotheses, static_cast<std::size_t>(parameters.refined_hypotheses));
+  return hypotheses;
+}
+
+std::vector<ViewPoseHypothesis> register_field_hypotheses(
+    const RegistrationPoints& scene, const ModelBase& base, int part,
+    const PartSearchModel& model, const std::vector<FieldHypothesis>& hypotheses,
+    const RegistrationParameters& registration, const PartPoseSearchParameters& parameters,
+    ModelSurfaces& surfaces) {
+  std::vector<ViewPoseHypothesis> best;
+  const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
+  const PartDistanceField& field = model.field;
+  if (scoring.size() == 0 || field.empty()) return best;
+  // Each pose onto the part's view nearest to its viewing direction, registered there
+  // (ch. 6) on the subset, and ranked against the whole part again.
+  RegistrationParameters short_registration = registration;
+  short_registration.max_iterations = parameters.refinement_iterations;
+  for (const FieldHypothesis& hypothesis : hypotheses) {
+    if (!parameters.refinement_gate.passes(scoring, field, hypothesis.T_part_scene)) continue;
+    const int view = nearest_view(base, part, hypothesis.T_part_scene);
+    const ModelBaseView& model_view = base.views[static_cast<std::size_t>(view)];
+    const RigidTransform T_model_scene = model_view.T_scanner_part * hypothesis.T_part_scene;
+    const RegistrationResult refined =
+        register_views(scoring, surfaces.points(view), T_model_scene, short_registration);
+    const RigidTransform& T =
+        refined.status == RegistrationStatus::invalid_input ? T_model_scene : refined.T_model_scene;
+    best.push_back({view, T,
+                    field_truncated_mean_square_mm2(scoring, field,
+                                                    model_view.T_scanner_part.inverse() * T,
+                                                    parameters.field_truncation_mm)});
+  }
+  std::stable_sort(best.begin(), best.end(),
+                   [](const ViewPoseHypothesis& a, const ViewPoseHypothesis& b) {
+                     return a.truncated_mean_square_mm2 < b.truncated_mean_square_mm2;
+                   });
+  return distinct_hypotheses(base, best, parameters, parameters.best_hypotheses);
+}
+
+std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene,
+                                                 const ModelBase& base, int part,
+                                                 const PartSearchModel& model,
+                                                 const RegistrationParameters& registration,
+                                                 const PartPoseSearchParameters& parameters,
+                                                 ModelSurfaces& surfaces) {
+  return register_field_hypotheses(scene, base, part, model,
+                                   field_pose_hypotheses(scene, base, model, parameters),
+                                   registration, parameters, surfaces);
+}
+
+std::vector<ViewPoseHypothesis> align_view_starts_in_field(
+    const RegistrationPoints& scene, const ModelBase& base, int view,
+    const std::vector<RigidTransform>& starts, const PartSearchModel& model,
+    const FieldAlignedStartParameters& parameters, const PartPoseSearchParameters& search,
+    int count) {
+  std::vector<ViewPoseHypothesis> best;
+  const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
+  if (scoring.size() == 0 || model.field.empty() || starts.empty()) return best;
+  const ModelBaseView& start_view = base.views[static_cast<std::size_t>(view)];
+  const RigidTransform T_part_view = start_view.T_scanner_part.inverse();
+  const double truncation_mm = parameters.field_truncation_mm;
+  std::vector<FieldHypothesis> hypotheses;
+  for (const RigidTransform& T_model_scene : starts)
+    hypotheses.push_back({T_part_view * T_model_scene, 0.0});
+  align_and_rescore(scoring, model.field, 0, truncation_mm, hypotheses);
+  keep_best(hypotheses, static_cast<std::size_t>(parameters.aligned_starts));
+  align_and_rescore(scoring, model.field, parameters.field_iterations, truncation_mm, hypotheses);
+  keep_best(hypotheses, hypotheses.size());
+  for (const FieldHypothesis& hypothesis : hypotheses) {
+    const int nearest = nearest_view(base, start_view.part_index, hypothesis.T_part_scene);
+    best.push_back({nearest,
+                    base.views[static_cast<std::size_t>(nearest)].T_scanner_part *
+                        hypothesis.T_part_scene,
+                    hypothesis.truncated_mean_square_mm2});
+  }
+  return distinct_hypotheses(base, best, search, count);
+}
+
+}  // namespace cosmos

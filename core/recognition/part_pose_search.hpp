@@ -1,0 +1,123 @@
+#pragma once
+// Pose search over all views of one part: the fallback when the views that spectral selection
+// proposed (§5.2) do not register. Shape-spectrum moments are invariant to the view's
+// orientation but not very selective among the views of one part: views with similar spectra
+// lie all over the view sphere, so the few selected views may all be 40 degrees or more from
+// the scene's true viewing direction, beyond what registration (ch. 6) converges from. Here
+// every coarse view of the part proposes starts (turns about the viewing axis, the centroids
+// aligned), which are scored and aligned against the part's distance field
+// (part_distance_field.hpp) on a small, evenly spread subset of the scene's control points,
+// in stages that keep fewer and align more. Against one view a start near the truth scored
+// no better than a wrong one (its view, up to 15 degrees away, lacks much of what the scene
+// shows; its centroid is 10-40 mm off); against the whole part it does. The best poses then
+// move onto the part's view nearest to their viewing direction, take a few registration
+// iterations there (ch. 6) and are ranked by that view's fit. Every stage has a fixed budget.
+#include <vector>
+
+#include "core/modelbase/model_base.hpp"
+#include "core/modelbase/model_surface.hpp"
+#include "core/registration/part_distance_field.hpp"
+#include "core/registration/registration_points.hpp"
+#include "core/rigid_transform.hpp"
+#include "core/registration/view_registration.hpp"
+
+namespace cosmos {
+
+struct PartPoseSearchParameters {
+  // Scene control points used to score and align a hypothesis: 100 rank as well as 200
+  // (measured on the 20-part catalog), at half the cost.
+  int scoring_points = 100;
+  int start_scoring_points = 50;  // the first two stages (the starts, one alignment step)
+  int in_plane_turns = 12;
+  double field_truncation_mm = 10.0;  // farther points count as this far, and do not align
+  int field_candidates = 512;         // kept after scoring the starts as they are
+  int field_aligned = 128;            // kept after one alignment step
+  int field_iterations = 3;           // alignment steps for those
+  int refined_hypotheses = 32;        // registered on their nearest view
+  int refinement_iterations = 8;
+  FieldGate refinement_gate;          // those that fail it are not registered, nor returned
+  int best_hypotheses = 4;  // returned, best first, no two poses of the part within:
+  double same_pose_rad = 0.02;
+  double same_pose_mm = 0.5;
+  // and none whose field score exceeds factor x the best's + margin (a wrong pose scores
+  // 10-100 times the true one's 0.05-0.3 mm^2).
+  double kept_score_factor = 3.0;
+  double kept_score_margin_mm2 = 0.5;
+  // The worst field score kept beside a best one of best_mm2 (the rule above; the recognizer
+  // applies it to whole parts too).
+  double worst_kept_score_mm2(double best_mm2) const {
+    return kept_score_factor * best_mm2 + kept_score_margin_mm2;
+  }
+};
+
+// What the search needs of one part beyond the base: its distance field and, per coarse
+// view (every view when the base has no coarse ones), the centroid of its control points
+// (unpacking 80 views per part and search only to take their centroids was a tenth of the
+// recognizer's time).
+struct PartSearchModel {
+  PartDistanceField field;
+  std::vector<int> start_views;  // indices into ModelBase::views
+  std::vector<Eigen::Vector3d> start_view_centroid_mm;
+};
+
+PartSearchModel build_part_search_model(const ModelBase& base, int part,
+                                        const PartDistanceFieldParameters& parameters);
+
+struct ViewPoseHypothesis {
+  int view = -1;  // index into ModelBase::views
+  RigidTransform T_model_scene;
+  double truncated_mean_square_mm2 = 0;
+};
+
+// A pose of the scene in the part's frame and its fit to the part's distance field.
+struct FieldHypothesis {
+  RigidTransform T_part_scene;
+  double truncated_mean_square_mm2 = 0;
+};
+
+// The search's field stages alone: at most parameters.refined_hypotheses poses, best first.
+// Their best score already tells the scene's part from the others (on the 25-part cell
+// catalog: 0.02-0.07 mm^2 against 2-47 mm^2), at half the cost of the whole search.
+std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& scene,
+                                                   const ModelBase& base,
+                                                   const PartSearchModel& model,
+                                                   const PartPoseSearchParameters& parameters);
+
+// The search's second half: those poses moved onto the part's views nearest to them,
+// registered there and ranked by that view's fit.
+std::vector<ViewPoseHypothesis> register_field_hypotheses(
+    const RegistrationPoints& scene, const ModelBase& base, int part,
+    const PartSearchModel& model, const std::vector<FieldHypothesis>& hypotheses,
+    const RegistrationParameters& registration, const PartPoseSearchParameters& parameters,
+    ModelSurfaces& surfaces);
+
+// Both halves. `model`: the part's build_part_search_model.
+// The views' surfaces come from (and stay in) `surfaces`.
+std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene,
+                                                 const ModelBase& base, int part,
+                                                 const PartSearchModel& model,
+                                                 const RegistrationParameters& registration,
+                                                 const PartPoseSearchParameters& parameters,
+                                                 ModelSurfaces& surfaces);
+
+// The same against the part's field, for the few starts verification has on one selected view
+// (§5.3.5 patch groups, §6.7.2 principal axes, turns): a start half a view away from the
+// truth fits that view no better than a wrong one, but the whole part clearly better, and
+// aligning in the field takes it the rest of the way without correspondences.
+struct FieldAlignedStartParameters {
+  int scoring_points = 100;
+  int aligned_starts = 4;  // the best-scoring starts, aligned
+  int field_iterations = 10;
+  double field_truncation_mm = 10.0;
+};
+
+// `starts` are T_model_scene on `view` (a view of the part `model` belongs to). Returns at
+// most `count` distinct poses, best first, each on the part's view nearest its viewing
+// direction, with the distinctness and score cut of `search`.
+std::vector<ViewPoseHypothesis> align_view_starts_in_field(
+    const RegistrationPoints& scene, const ModelBase& base, int view,
+    const std::vector<RigidTransform>& starts, const PartSearchModel& model,
+    const FieldAlignedStartParameters& parameters, const PartPoseSearchParameters& search,
+    int count);
+
+}  // namespace cosmos

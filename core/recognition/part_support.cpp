@@ -1,0 +1,67 @@
+#include "core/recognition/part_support.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+
+namespace cosmos {
+
+PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBase& base,
+                                 int matched, const RigidTransform& T_model_scene,
+                                 const RegistrationParameters& registration,
+                                 const PartSupportParameters& parameters,
+                                 ModelSurfaces& surfaces) {
+  PartSupport support;
+  if (scene.size() == 0) return support;
+  RegistrationParameters strict = registration;
+  strict.max_correspondence_distance_mm = parameters.inlier_distance_mm;
+  const ModelBaseView& view = base.views[static_cast<std::size_t>(matched)];
+  std::vector<double> nearest_mm, distance_mm;
+  correspondence_distances(scene, surfaces.points(matched), T_model_scene, strict, nearest_mm);
+  support.views_used = 1;
+
+  const RigidTransform T_part_scene = view.T_scanner_part.inverse() * T_model_scene;
+  const double min_cosine = std::cos(parameters.neighbour_view_angle_deg * std::numbers::pi / 180);
+  std::vector<std::pair<double, int>> neighbours;  // (-cosine, view): nearest first
+  for (std::size_t v = 0; v < base.views.size(); ++v) {
+    const ModelBaseView& other = base.views[v];
+    if (static_cast<int>(v) == matched || other.part_index != view.part_index) continue;
+    const double cosine = other.direction_part.dot(view.direction_part);
+    if (cosine >= min_cosine) neighbours.emplace_back(-cosine, static_cast<int>(v));
+  }
+  std::sort(neighbours.begin(), neighbours.end());
+  if (neighbours.size() > static_cast<std::size_t>(parameters.max_neighbour_views))
+    neighbours.resize(static_cast<std::size_t>(parameters.max_neighbour_views));
+  // Each further view is asked only about the points no view has explained yet: a point
+  // within the inlier distance keeps the distance of the first view that explained it.
+  std::vector<int> unexplained;
+  for (const auto& [negative_cosine, v] : neighbours) {
+    unexplained.clear();
+    for (std::size_t i = 0; i < nearest_mm.size(); ++i)
+      if (!(nearest_mm[i] <= parameters.inlier_distance_mm))
+        unexplained.push_back(static_cast<int>(i));
+    if (unexplained.empty()) break;
+    const ModelBaseView& other = base.views[static_cast<std::size_t>(v)];
+    correspondence_distances(select_points(scene, unexplained), surfaces.points(v),
+                             other.T_scanner_part * T_part_scene, strict, distance_mm);
+    for (std::size_t k = 0; k < unexplained.size(); ++k) {
+      double& nearest = nearest_mm[static_cast<std::size_t>(unexplained[k])];
+      nearest = std::min(nearest, distance_mm[k]);
+    }
+    ++support.views_used;
+  }
+
+  int inliers = 0;
+  double sum_squares = 0;
+  for (double d : nearest_mm) {
+    if (!(d <= parameters.inlier_distance_mm)) continue;
+    ++inliers;
+    sum_squares += d * d;
+  }
+  support.inlier_fraction = static_cast<double>(inliers) / scene.size();
+  support.rms_mm = inliers > 0 ? std::sqrt(sum_squares / inliers) : 0.0;
+  return support;
+}
+
+}  // namespace cosmos

@@ -1,0 +1,42 @@
+#pragma once
+// How much of a scene a registered part explains (the decision of ch. 5-6 recognition): the
+// fraction of scene control points lying within inlier_distance_mm of the part's surface, and
+// their RMS distance. The part's surface is not one model view but the union of its views
+// whose directions lie within neighbour_view_angle_deg of the matched one, each brought into
+// the matched view's frame through the part frame (T_v_scene = T_v_part T_part_matched
+// T_matched_scene). A single view misses what the scene sees beyond that view's
+// self-occlusions; the views around it fill that in, so a correct part is judged on its whole
+// visible surface while a wrong one still fits only by chance.
+#include <vector>
+
+#include "core/modelbase/model_base.hpp"
+#include "core/modelbase/model_surface.hpp"
+#include "core/registration/registration_points.hpp"
+#include "core/rigid_transform.hpp"
+#include "core/registration/view_registration.hpp"
+
+namespace cosmos {
+
+struct PartSupportParameters {
+  double inlier_distance_mm = 0.2;
+  double neighbour_view_angle_deg = 40.0;
+  // At most this many of them, the nearest first: a 320-view base has ~37 within 40 degrees,
+  // where 12 (~20 degrees) already cover what one view misses.
+  int max_neighbour_views = 20;
+};
+
+struct PartSupport {
+  double inlier_fraction = 0;  // of all scene control points
+  double rms_mm = 0;           // over the inliers
+  int views_used = 0;
+};
+
+// `matched` indexes ModelBase::views; T_model_scene registers the scene onto it. The views'
+// surfaces come from (and stay in) `surfaces`.
+PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBase& base,
+                                 int matched, const RigidTransform& T_model_scene,
+                                 const RegistrationParameters& registration,
+                                 const PartSupportParameters& parameters,
+                                 ModelSurfaces& surfaces);
+
+}  // namespace cosmos

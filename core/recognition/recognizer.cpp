@@ -1,0 +1,326 @@
+#include "core/recognition/recognizer.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+
+#include "core/modelbase/model_surface.hpp"
+#include "core/recognition/part_pose_search.hpp"
+#include "core/recognition/part_support.hpp"
+#include "core/recognition/pose_hypotheses.hpp"
+
+namespace cosmos {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double elapsed_ms(Clock::time_point since) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
+}
+
+// Support and residual of a registered pose, from one correspondence pass with the inlier
+// distance as the limit: the fraction of scene points the model surface explains, and the
+// RMS distance over those.
+struct Support {
+  double inlier_fraction = 0;
+  double rms_mm = 0;
+};
+
+Support measure_support(const RegistrationPoints& scene, const RegistrationPoints& model,
+                        const RigidTransform& T_model_scene,
+                        const RecognitionParameters& parameters) {
+  RegistrationParameters strict = parameters.registration;
+  strict.max_correspondence_distance_mm = parameters.support.inlier_distance_mm;
+  const AlignmentScore score = score_alignment(scene, model, T_model_scene, strict);
+  Support support;
+  support.inlier_fraction = score.matched_fraction;
+  // The truncated mean square counts unmatched points at the limit; take them out again.
+  const double limit2 =
+      parameters.support.inlier_distance_mm * parameters.support.inlier_distance_mm;
+  const double unmatched = 1.0 - score.matched_fraction;
+  if (score.matched_fraction > 0)
+    support.rms_mm = std::sqrt(std::max(
+        0.0, (score.truncated_mean_square_mm2 - unmatched * limit2) / score.matched_fraction));
+  return support;
+}
+
+// The decision's figure of merit (§5.3.3 goodness and the ch. 6 residual together): support
+// dominates, a residual near the limit and a poor COSMOS match lower it.
+double candidate_score(double inlier_fraction, double rms_mm, double goodness,
+                       const RecognitionParameters& parameters) {
+  const double residual_factor = std::max(0.0, 1.0 - rms_mm / (2.0 * parameters.max_rms_mm));
+  return inlier_fraction * residual_factor * (0.8 + 0.2 * std::clamp(goodness, 0.0, 1.0));
+}
+
+const RecognitionCandidate* best_candidate(const std::vector<RecognitionCandidate>& candidates) {
+  const RecognitionCandidate* best = nullptr;
+  for (const RecognitionCandidate& candidate : candidates)
+    if (candidate.registered && (!best || candidate.score > best->score)) best = &candidate;
+  return best;
+}
+
+}  // namespace
+
+const char* to_string(RecognitionStatus status) {
+  return status == RecognitionStatus::kOk ? "ok" : "rejected";
+}
+
+Recognizer::Recognizer(const ModelBase& model_base, const CosmosParameters& cosmos,
+                       const RecognitionParameters& parameters)
+    : model_base_(model_base),
+      cosmos_(cosmos),
+      parameters_(parameters),
+      selector_(model_base, parameters.selection) {
+  for (int part = 0; part < static_cast<int>(model_base.parts.size()); ++part)
+    part_search_models_.push_back(build_part_search_model(model_base, part, parameters.field));
+}
+
+RecognitionResult Recognizer::recognize(const RangeImage& scene) const {
+  const Clock::time_point start = Clock::now();
+  if (scene.width() == 0 || scene.count_valid() == 0) {
+    RecognitionResult empty;
+    empty.reason = "empty scan: no range data";
+    empty.timings.total_ms = elapsed_ms(start);
+    return empty;
+  }
+  const ViewAnalysis analysis = analyze_view(scene, cosmos_);
+  return recognize_analyzed(scene, analysis, elapsed_ms(start));
+}
+
+RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
+                                                 const ViewAnalysis& analysis,
+                                                 double features_ms) const {
+  const Clock::time_point start = Clock::now();
+  RecognitionResult result;
+  result.moments = analysis.moments;
+  result.scene_patches = static_cast<int>(analysis.view.patches.size());
+  result.timings.features_ms = features_ms;
+  const auto finish = [&](std::string reason) {
+    result.reason = std::move(reason);
+    result.timings.total_ms = features_ms + elapsed_ms(start);
+    return result;
+  };
+  if (analysis.valid_pixels == 0) return finish("no object: no surface could be fitted");
+
+  Clock::time_point stage = Clock::now();
+  RegistrationPointsResult scene_points =
+      build_registration_points(scene, parameters_.scene_points, &analysis.frames);
+  // A small visible surface gets denser control points: a hundred points do not tell a
+  // good pose from a poor one reliably.
+  for (RegistrationPointParameters denser = parameters_.scene_points;
+       scene_points.points.size() < parameters_.min_dense_scene_points && denser.stride_px > 1;) {
+    denser.stride_px /= 2;
+    scene_points = build_registration_points(scene, denser, &analysis.frames);
+  }
+  result.scene_points = scene_points.points.size();
+  result.timings.features_ms += elapsed_ms(stage);
+  if (scene_points.status != RegistrationPointsStatus::ok ||
+      result.scene_points < parameters_.min_scene_points)
+    return finish("too little smooth surface to register (" + std::to_string(result.scene_points) +
+                  " control points)");
+  if (model_base_.views.empty()) return finish("the model base has no views");
+
+  stage = Clock::now();
+  const std::vector<SpectralCandidate> selected = selector_.select(analysis.moments);
+  result.timings.selection_ms = elapsed_ms(stage);
+
+  ScenePoints points{std::move(scene_points.points), {}};
+  points.coarse = spread_subset(points.all, parameters_.coarse_points);
+  ModelSurfaces surfaces(model_base_);
+  for (const SpectralCandidate& candidate : selected) {
+    result.candidates.push_back(verify(analysis, points, candidate, surfaces,
+                                       result.timings.matching_ms,
+                                       result.timings.registration_ms));
+    ++result.views_examined;
+    if (result.candidates.back().registered &&
+        result.candidates.back().inlier_fraction >= parameters_.sufficient_support)
+      break;
+  }
+  const RecognitionCandidate* best = best_candidate(result.candidates);
+  if (!best || best->inlier_fraction < parameters_.sufficient_support) {
+    search_candidate_parts(analysis, points, surfaces, result);
+    best = best_candidate(result.candidates);
+  }
+  if (!best) return finish("no candidate view could be registered");
+
+  result.part = best->part;
+  result.view = best->view;
+  result.score = best->score;
+  result.spectral_distance = best->spectral_distance;
+  result.registration_rms_mm = best->rms_mm;
+  result.inlier_fraction = best->inlier_fraction;
+  const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(best->view)];
+  result.T_scanner_part = (best->T_model_scene.inverse() * view.T_scanner_part).normalized();
+  if (best->inlier_fraction < parameters_.min_inlier_fraction) {
+    result.part = -1;
+    return finish("best candidate explains only " +
+                  std::to_string(static_cast<int>(100 * best->inlier_fraction)) +
+                  " % of the surface");
+  }
+  if (best->rms_mm > parameters_.max_rms_mm) {
+    result.part = -1;
+    return finish("best candidate's registration residual is too large");
+  }
+  result.status = RecognitionStatus::kOk;
+  return finish("");
+}
+
+RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene, const ScenePoints& scene_points,
+                                        const SpectralCandidate& selected,
+                                        ModelSurfaces& surfaces, double& matching_ms,
+                                        double& registration_ms) const {
+  const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(selected.view)];
+  RecognitionCandidate candidate;
+  candidate.view = selected.view;
+  candidate.part = view.part_index;
+  candidate.spectral_distance = selected.distance;
+
+  Clock::time_point stage = Clock::now();
+  const PatchGroupMatch match = match_patch_groups(scene.view, view.cosmos, parameters_.matching);
+  candidate.goodness = match.score;
+  const PoseFromPatches from_patches =
+      estimate_pose_from_patches(scene.view, view.cosmos, match.pairs, parameters_.pose);
+  matching_ms += elapsed_ms(stage);
+
+  stage = Clock::now();
+  const std::vector<ViewPoseHypothesis> starts = align_view_starts_in_field(
+      scene_points.all, model_base_, selected.view,
+      generate_pose_hypotheses(scene_points.coarse, surfaces.points(selected.view), from_patches,
+                               {.in_plane_turns = parameters_.in_plane_hypotheses}),
+      part_search_model(view.part_index), parameters_.field_starts, parameters_.search,
+      parameters_.registered_hypotheses);
+  register_candidate(scene_points, starts, surfaces, candidate);
+  registration_ms += elapsed_ms(stage);
+  return candidate;
+}
+
+void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
+                                        ModelSurfaces& surfaces,
+                                        RecognitionResult& result) const {
+  // Parts in the order of their closest view.
+  std::vector<int> parts = selector_.rank_parts(scene.moments);
+  if (parts.size() > static_cast<std::size_t>(parameters_.searched_parts))
+    parts.resize(static_cast<std::size_t>(parameters_.searched_parts));
+  // Registers one part's field poses; true when one explains enough to end the search.
+  auto register_part = [&](int part, const std::vector<FieldHypothesis>& field_poses) {
+    Clock::time_point stage = Clock::now();
+    const std::vector<ViewPoseHypothesis> hypotheses =
+        register_field_hypotheses(scene_points.all, model_base_, part, part_search_model(part),
+                                  field_poses, parameters_.registration, parameters_.search,
+                                  surfaces);
+    result.timings.registration_ms += elapsed_ms(stage);
+    for (const ViewPoseHypothesis& hypothesis : hypotheses) {
+      const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(hypothesis.view)];
+      RecognitionCandidate candidate;
+      candidate.view = hypothesis.view;
+      candidate.part = part;
+      candidate.from_pose_search = true;
+      candidate.spectral_distance = selector_.distance(scene.moments, view.moments);
+      stage = Clock::now();
+      candidate.goodness = match_patch_groups(scene.view, view.cosmos, parameters_.matching).score;
+      result.timings.matching_ms += elapsed_ms(stage);
+      stage = Clock::now();
+      register_candidate(scene_points, {hypothesis}, surfaces, candidate);
+      result.timings.registration_ms += elapsed_ms(stage);
+      result.candidates.push_back(candidate);
+      // As in verification: a pose that explains this much of the scene ends the search.
+      if (candidate.registered && candidate.inlier_fraction >= parameters_.sufficient_support)
+        return true;
+    }
+    return false;
+  };
+  // The field stages rank the parts far better than the spectra do: a part whose fit is
+  // convincing is registered at once, the others wait and are registered in the order of
+  // their fit, so a scene whose part ranks tenth by spectrum no longer registers nine wrong
+  // parts first.
+  struct WaitingPart {
+    int part;
+    std::vector<FieldHypothesis> field_poses;
+    double best_fit_mm2;
+  };
+  std::vector<WaitingPart> waiting;
+  double best_fit_mm2_of_all = std::numeric_limits<double>::infinity();
+  for (int part : parts) {
+    for (const ModelBaseView& view : model_base_.views)
+      result.views_examined += view.part_index == part;
+    Clock::time_point stage = Clock::now();
+    std::vector<FieldHypothesis> field_poses = field_pose_hypotheses(
+        scene_points.all, model_base_, part_search_model(part), parameters_.search);
+    result.timings.registration_ms += elapsed_ms(stage);
+    const double best_fit_mm2 = field_poses.empty()
+                                    ? std::numeric_limits<double>::infinity()
+                                    : field_poses.front().truncated_mean_square_mm2;
+    best_fit_mm2_of_all = std::min(best_fit_mm2_of_all, best_fit_mm2);
+    if (best_fit_mm2 <= parameters_.convincing_field_fit_mm2) {
+      if (register_part(part, field_poses)) return;
+    } else {
+      waiting.push_back({part, std::move(field_poses), best_fit_mm2});
+    }
+  }
+  std::stable_sort(waiting.begin(), waiting.end(), [](const WaitingPart& a, const WaitingPart& b) {
+    return a.best_fit_mm2 < b.best_fit_mm2;
+  });
+  // As among one part's poses: a part that fits many times worse than the best one cannot
+  // explain the scene as well, and is not registered.
+  const double hopeless_fit_mm2 = parameters_.search.worst_kept_score_mm2(best_fit_mm2_of_all);
+  for (const WaitingPart& part : waiting) {
+    if (part.best_fit_mm2 > hopeless_fit_mm2) break;
+    if (register_part(part.part, part.field_poses)) return;
+  }
+}
+
+void Recognizer::register_candidate(const ScenePoints& scene_points,
+                                    const std::vector<ViewPoseHypothesis>& starts,
+                                    ModelSurfaces& surfaces,
+                                    RecognitionCandidate& candidate) const {
+  RegistrationResult best;
+  int best_view = -1;
+  Support best_support;
+  // Coarse to fine: the iterations far from the optimum on a spread subset, the last few on
+  // every control point (ch. 6's estimate is the fine one).
+  RegistrationParameters coarse = parameters_.registration;
+  coarse.max_iterations = parameters_.coarse_registration_iterations;
+  RegistrationParameters fine = parameters_.registration;
+  fine.max_iterations = parameters_.fine_registration_iterations;
+  for (const ViewPoseHypothesis& start : starts) {
+    const ModelBaseView& start_view = model_base_.views[static_cast<std::size_t>(start.view)];
+    if (!parameters_.registration_gate.passes(scene_points.coarse,
+                                              part_search_model(candidate.part).field,
+                                              start_view.T_scanner_part.inverse() *
+                                                  start.T_model_scene))
+      continue;
+    const RegistrationPoints& model = surfaces.points(start.view);
+    RegistrationResult registration =
+        register_views(scene_points.coarse, model, start.T_model_scene, coarse);
+    if (registration.status == RegistrationStatus::invalid_input) continue;
+    registration = register_views(scene_points.all, model, registration.T_model_scene, fine);
+    // A degenerate (still planar) result is kept: its support decides.
+    if (registration.status == RegistrationStatus::invalid_input) continue;
+    const Support support =
+        measure_support(scene_points.all, model, registration.T_model_scene, parameters_);
+    if (candidate.registered && support.inlier_fraction <= best_support.inlier_fraction) continue;
+    candidate.registered = true;
+    best = registration;
+    best_support = support;
+    best_view = start.view;
+  }
+  if (!candidate.registered) return;
+  candidate.view = best_view;
+  // Most candidates of the pose search are wrong parts: the spread subset tells them apart at
+  // a fifth of the cost, and only the plausible ones are measured on every point.
+  PartSupport support =
+      measure_part_support(scene_points.coarse, model_base_, candidate.view, best.T_model_scene,
+                           parameters_.registration, parameters_.support, surfaces);
+  if (support.inlier_fraction >= parameters_.plausible_support)
+    support = measure_part_support(scene_points.all, model_base_, candidate.view,
+                                   best.T_model_scene, parameters_.registration,
+                                   parameters_.support, surfaces);
+  candidate.registration_status = best.status;
+  candidate.T_model_scene = best.T_model_scene;
+  candidate.rms_mm = support.rms_mm;
+  candidate.inlier_fraction = support.inlier_fraction;
+  candidate.score =
+      candidate_score(support.inlier_fraction, support.rms_mm, candidate.goodness, parameters_);
+}
+
+}  // namespace cosmos

@@ -1,0 +1,186 @@
+#pragma once
+// The recognizer (thesis ch. 5 and 6): from one part's range image to "which model-base part,
+// in which pose", or a rejection.
+//
+//   features      the chapter-3 pipeline (analyze_view) and the scene's registration control
+//                 points (§6.7.1);
+//   selection     spectral model-view selection (§5.2): K best clusters, m best views;
+//   matching      for each selected view, COSMOS verification by patch-group graph matching
+//                 (§5.3) and the initial pose it implies (§5.3.5);
+//   registration  initial-pose hypotheses per candidate — the patch-group pose, the principal
+//                 axes (§6.7.2) and turns about the viewing axis (scene and model views are
+//                 both seen from the scanner, so the unknown is mostly that turn) — scored by
+//                 one correspondence pass each; the best are refined by the minimum-variance
+//                 estimator (§6.6) or Chen-Medioni;
+//   decision      each registered candidate is judged by its support (the fraction of scene
+//                 control points within inlier_distance_mm of the model surface), its RMS
+//                 residual and its COSMOS goodness; the best wins, and below the thresholds
+//                 the part is rejected as unknown rather than forced onto a catalog part.
+//
+// Everything is counted in operations (views, hypotheses, iterations), so the result depends
+// only on the input; only the timings vary between runs.
+#include <string>
+#include <vector>
+
+#include "core/cosmos_parameters.hpp"
+#include "core/representation/cosmos_pipeline.hpp"
+#include "core/modelbase/model_base.hpp"
+#include "core/recognition/part_pose_search.hpp"
+#include "core/recognition/part_support.hpp"
+#include "core/matching/patch_group_matching.hpp"
+#include "core/matching/pose_from_patches.hpp"
+#include "core/range_image.hpp"
+#include "core/registration/registration_points.hpp"
+#include "core/rigid_transform.hpp"
+#include "core/matching/spectral_view_selection.hpp"
+#include "core/registration/view_registration.hpp"
+
+namespace cosmos {
+
+struct RecognitionParameters {
+  SpectralSelectionParameters selection;
+  PatchGroupMatchParameters matching;
+  PoseFromPatchesParameters pose;
+  RegistrationParameters registration;
+  // Scene control points every 4th pixel (1.6 mm on the 0.4 mm grid): a few thousand points
+  // on a catalog part, enough to fix 6 parameters many times over.
+  RegistrationPointParameters scene_points{.stride_px = 4};
+  int min_dense_scene_points = 600;  // fewer: halve the stride (down to every pixel)
+  int in_plane_hypotheses = 12;      // turns about the viewing axis tried per candidate view
+  // Verification's initial poses are ranked and aligned against the part's distance field
+  // (part_pose_search.hpp), and at most this many distinct ones registered per selected view
+  // (1 lost a scan of the hardest 29 and gained nothing in the median).
+  FieldAlignedStartParameters field_starts;
+  int registered_hypotheses = 2;
+  FieldGate registration_gate;  // a start that fails it is not registered
+  // Registration converges on this many evenly spread scene control points (and the
+  // principal-axes estimate uses them) before at most fine_registration_iterations passes on
+  // all the points.
+  int coarse_points = 300;
+  // The coarse passes stop at convergence or after this many: from the starts the search
+  // and the hypotheses give, further passes on the subset moved no decision of the 1,000-scan
+  // acceptance run's hardest 27 scans and a 60-scan sample, and cost 10 % of the time.
+  int coarse_registration_iterations = 20;
+  int fine_registration_iterations = 10;
+  // Verification stops at the first selected view whose part support reaches this: the
+  // others cannot beat it by much, and a wrong part rarely explains 90 % of a scene. Below
+  // it the pose search runs too, so a mechanical part whose flat faces another explains at
+  // 60-80 % gets the chance to be explained better by its own views.
+  double sufficient_support = 0.9;
+  PartSupportParameters support;  // what counts as explained scene surface
+  // When no selected view reaches sufficient_support: the pose search over every view of
+  // up to `searched_parts` parts (SpectralViewSelector::rank_parts, closest single view
+  // first), until one reaches it. On the 1,000-scan acceptance run, searching all 20 parts
+  // instead of 8 identified 1.1 % more (0.972 against 0.961).
+  int searched_parts = 20;
+  // The spectral order is a poor guide for the scans that need the search (in the cell, the
+  // scene's part often ranked tenth), the search's field stages a sharp one: a part whose best
+  // field pose fits this well (mean square distance of the scene to the part,
+  // part_pose_search.hpp) is registered at once; the others after every part's field stages,
+  // best fit first, and not at all when they fit worse than search.kept_score_factor x the
+  // best part's + search.kept_score_margin_mm2. Scenes fit their own part at 0.02-0.16 mm^2,
+  // other parts at 2 mm^2 and more.
+  double convincing_field_fit_mm2 = 0.5;
+  PartPoseSearchParameters search;
+  PartDistanceFieldParameters field;
+  // Decision thresholds (rejection as unknown part).
+  double min_inlier_fraction = 0.6;
+  // A registered candidate whose support on the coarse points is below this is judged on
+  // them alone (it cannot pass min_inlier_fraction on all points).
+  double plausible_support = 0.45;
+  double max_rms_mm = 0.12;
+  int min_scene_points = 30;
+};
+
+enum class RecognitionStatus { kOk, kRejected };
+
+struct RecognitionCandidate {
+  int view = -1;  // index into ModelBase::views
+  int part = -1;  // index into ModelBase::parts
+  double spectral_distance = 0;
+  double goodness = 0;  // COSMOS match score (§5.3.3)
+  bool registered = false;
+  RegistrationStatus registration_status = RegistrationStatus::invalid_input;
+  double rms_mm = 0;
+  double inlier_fraction = 0;
+  double score = 0;  // the decision's figure of merit, in [0, 1]
+  RigidTransform T_model_scene;
+  bool from_pose_search = false;  // proposed by the fallback search, not by §5.2 selection
+};
+
+struct RecognitionTimings {
+  double features_ms = 0;
+  double selection_ms = 0;
+  double matching_ms = 0;
+  double registration_ms = 0;
+  double total_ms = 0;
+};
+
+struct RecognitionResult {
+  RecognitionStatus status = RecognitionStatus::kRejected;
+  std::string reason;  // why rejected; empty when ok
+  int part = -1;       // ModelBase::parts index of the winner, -1 when rejected
+  int view = -1;       // ModelBase::views index of the winner
+  double score = 0;
+  double spectral_distance = 0;
+  double registration_rms_mm = 0;
+  double inlier_fraction = 0;
+  // The scene's pose in its own image frame: T_scene_model (registration) composed with the
+  // model view's T_scanner_part.
+  RigidTransform T_scanner_part;
+  MomentVector moments{};
+  int scene_patches = 0;
+  int scene_points = 0;
+  int views_examined = 0;  // model views compared with the scene (selected + searched)
+  std::vector<RecognitionCandidate> candidates;  // spectral order
+  RecognitionTimings timings;
+};
+
+class Recognizer {
+ public:
+  // The base must outlive the recognizer. `cosmos` must be what the base was built with.
+  Recognizer(const ModelBase& model_base, const CosmosParameters& cosmos,
+             const RecognitionParameters& parameters);
+
+  RecognitionResult recognize(const RangeImage& scene) const;
+  // For a scene whose chapter-3 analysis already exists (the incremental builder's).
+  RecognitionResult recognize_analyzed(const RangeImage& scene, const ViewAnalysis& analysis,
+                                       double features_ms = 0) const;
+
+  const SpectralViewSelector& selector() const { return selector_; }
+  // What the pose search needs of each base part (built with the recognizer).
+  const PartSearchModel& part_search_model(int part) const {
+    return part_search_models_[static_cast<std::size_t>(part)];
+  }
+  const RecognitionParameters& parameters() const { return parameters_; }
+
+ private:
+  // The scene's control points, and the spread subset of coarse_points taken once.
+  struct ScenePoints {
+    RegistrationPoints all;
+    RegistrationPoints coarse;
+  };
+
+  RecognitionCandidate verify(const ViewAnalysis& scene, const ScenePoints& scene_points,
+                              const SpectralCandidate& selected, ModelSurfaces& surfaces,
+                              double& matching_ms, double& registration_ms) const;
+  // The fallback: every view of the candidates' parts (part_pose_search.hpp).
+  void search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
+                              ModelSurfaces& surfaces, RecognitionResult& result) const;
+  // Registers from each start on its view, keeps the pose its view supports best (the
+  // candidate's view becomes that one), then judges it against the part's views around it
+  // (part_support.hpp).
+  void register_candidate(const ScenePoints& scene_points,
+                          const std::vector<ViewPoseHypothesis>& starts, ModelSurfaces& surfaces,
+                          RecognitionCandidate& candidate) const;
+
+  const ModelBase& model_base_;
+  CosmosParameters cosmos_;
+  RecognitionParameters parameters_;
+  SpectralViewSelector selector_;
+  std::vector<PartSearchModel> part_search_models_;
+};
+
+const char* to_string(RecognitionStatus status);
+
+}  // namespace cosmos

@@ -1,0 +1,103 @@
+#pragma once
+// Registration of a scene view onto a model view (chapter 6): from an initial
+// T_model_scene, iterate (§6.4)
+//   (i)  for every scene control point p_i: intersect the line T p_i + s T n_i with the model
+//        surface, take the tangent plane S_i there (TangentPlaneCorrespondence);
+//   (ii) find the increment that minimizes the sum of (weighted) squared point-to-plane
+//        distances, linearized in a small rotation about the inliers' centroid;
+//   (iii) T <- increment * T,
+// either unweighted (Chen-Medioni, Eq. 6.4) or with each d_s^2 weighted by 1/sigma_ds^2
+// (the minimum-variance estimator, Eqs. 6.8 and 6.21-6.23).
+//
+// Outliers (occluded or missing surface, §6.5: "occluded and noisy surface points can be
+// considered such") are rejected before each solve: a correspondence is kept when the line
+// met the model within max_correspondence_distance_mm, the two normals agree within
+// max_normal_angle_deg, and |d_s| is at most the rejection distance
+//   clamp(rejection_mad_factor * 1.4826 * median |d_s|, min_rejection_distance_mm,
+//         max_correspondence_distance_mm),
+// i.e. a few robust standard deviations of the current residuals: wide while the views are
+// far apart, tight (but never below sensor-noise scale) near convergence. A previous inlier
+// keeps its place up to 1.25 times that distance, so points on the threshold do not flicker.
+//
+// Convergence is tested on the increment (rotation and shift of the inliers' centroid below
+// tolerances) rather than on the change of e^k as in §6.4, which jumps whenever the inlier
+// set changes; a period-2 oscillation below the tolerances (a point at the model's edge
+// matched every other pass) also counts as converged. Budgets are iterations and
+// intersection steps, never time.
+#include <vector>
+
+#include "core/registration/registration_points.hpp"
+#include "core/rigid_transform.hpp"
+
+namespace cosmos {
+
+enum class RegistrationEstimator {
+  chen_medioni,      // §6.4, Eq. 6.4: every d_s^2 counts the same
+  minimum_variance,  // §6.6, Eq. 6.23: d_s^2 / sigma_ds^2
+};
+
+struct RegistrationParameters {
+  RegistrationEstimator estimator = RegistrationEstimator::minimum_variance;
+  int max_iterations = 50;         // iteration budget
+  int max_intersection_steps = 6;  // per control point and iteration (correspondence budget)
+  double max_correspondence_distance_mm = 5.0;
+  double max_normal_angle_deg = 45.0;
+  double rejection_mad_factor = 3.0;
+  double min_rejection_distance_mm = 0.2;  // several times the d_s noise of 0.02-0.05 mm data
+  // MVE: sigma_ds never below this, so that the weight of near-vertical surface, where
+  // Eq. 6.21 tends to 0, stays bounded by the model's interpolation error rather than
+  // growing without limit.
+  double min_distance_sigma_mm = 0.002;
+  // Converged when one increment rotates less than this and translates less than that.
+  double convergence_rotation_rad = 1e-6;
+  double convergence_translation_mm = 1e-5;
+  int min_inliers = 12;  // 6 parameters, twice over
+};
+
+enum class RegistrationStatus {
+  converged,
+  iteration_budget_exhausted,  // T is the last iterate
+  too_few_correspondences,     // T is the last iterate with enough inliers (or the initial one)
+  degenerate,  // the last pass's inliers left 3 or more of the 6 parameters free (a plane):
+               // T is the last iterate, stepped only in the constrained directions. 1 or 2
+               // free ones (a cylinder, a surface of revolution) keep their current value
+               // without this status.
+  invalid_input,
+};
+
+struct RegistrationResult {
+  RegistrationStatus status = RegistrationStatus::invalid_input;
+  bool converged = false;
+  RigidTransform T_model_scene;
+  double rms_residual_mm = 0.0;  // RMS of d_s over the inliers of the last pass
+  double inlier_fraction = 0.0;  // inliers / scene control points, last pass
+  int inliers = 0;
+  int iterations = 0;
+  long intersection_steps = 0;  // total correspondence work spent
+};
+
+RegistrationResult register_views(const RegistrationPoints& scene, const RegistrationPoints& model,
+                                  const RigidTransform& T_model_scene_initial,
+                                  const RegistrationParameters& parameters);
+
+// How well T_model_scene aligns the views, from one correspondence pass: the mean over all
+// scene control points of min(d_s^2, D^2) (no correspondence counts D^2), with D the
+// max_correspondence_distance_mm; and the fraction of points within D. Used to choose among
+// candidate initial estimates.
+struct AlignmentScore {
+  double truncated_mean_square_mm2 = 0.0;
+  double matched_fraction = 0.0;
+};
+AlignmentScore score_alignment(const RegistrationPoints& scene, const RegistrationPoints& model,
+                               const RigidTransform& T_model_scene,
+                               const RegistrationParameters& parameters);
+
+// Per scene control point, |d_s| of its correspondence under T_model_scene (the geometric
+// tests of one registration pass), +infinity where it has none: for measuring how much of a
+// scene several model views explain together.
+void correspondence_distances(const RegistrationPoints& scene, const RegistrationPoints& model,
+                              const RigidTransform& T_model_scene,
+                              const RegistrationParameters& parameters,
+                              std::vector<double>& abs_distance_mm);
+
+}  // namespace cosmos

@@ -1,0 +1,24 @@
+#include "core/representation/cosmos_pipeline.hpp"
+
+#include "core/surface/curvature_consistency.hpp"
+#include "core/surface/local_surface_fit.hpp"
+
+namespace cosmos {
+
+ViewAnalysis analyze_view(const RangeImage& image, const CosmosParameters& parameters) {
+  ViewAnalysis analysis;
+  analysis.frames = fit_local_surfaces(image, parameters.fit);
+  smooth_curvatures(analysis.frames, image.pixel_size_x_mm, image.pixel_size_y_mm,
+                    parameters.smoothing);
+  analysis.field = classify_surface(analysis.frames, image.pixel_size_x_mm, image.pixel_size_y_mm,
+                                    parameters.shape_index);
+  analysis.segmentation = segment_csmps(analysis.frames, analysis.field, parameters.segmentation);
+  analysis.view = build_cosmos_view(analysis.frames, analysis.field, analysis.segmentation);
+  analysis.spectrum = compute_shape_spectrum(analysis.field, parameters.spectrum);
+  analysis.moments = spectrum_moments(analysis.spectrum);
+  for (SurfaceLabel label : analysis.field.label.values())
+    analysis.valid_pixels += label != SurfaceLabel::kInvalid ? 1 : 0;
+  return analysis;
+}
+
+}  // namespace cosmos

@@ -1,0 +1,27 @@
+#pragma once
+// The whole chapter-3 pipeline for one range image (Fig. 3.22): local surface fit ->
+// curvature-consistency smoothing -> shape index / curvedness / planar label -> CSMPs ->
+// COSMOS -> shape spectrum and moments.
+#include "core/cosmos_parameters.hpp"
+#include "core/representation/cosmos_view.hpp"
+#include "core/segmentation/csmp_segmentation.hpp"
+#include "core/surface/darboux_frame_field.hpp"
+#include "core/range_image.hpp"
+#include "core/surface/shape_index.hpp"
+#include "core/representation/shape_spectrum.hpp"
+
+namespace cosmos {
+
+struct ViewAnalysis {
+  DarbouxFrameField frames;
+  ShapeIndexField field;
+  CsmpSegmentation segmentation;
+  CosmosView view;
+  ShapeSpectrum spectrum;
+  MomentVector moments{};
+  std::size_t valid_pixels = 0;
+};
+
+ViewAnalysis analyze_view(const RangeImage& image, const CosmosParameters& parameters);
+
+}  // namespace cosmos

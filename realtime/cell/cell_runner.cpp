@@ -1,0 +1,204 @@
+#include "realtime/cell/cell_runner.hpp"
+
+#include <chrono>
+#include <thread>
+
+#include "firmware_bridge/kernel_timestamp.hpp"
+#include "realtime/rt/deadline_pacer.hpp"
+#include "realtime/rt/latency_histogram.hpp"
+#include "realtime/rt/spsc_ring.hpp"
+
+namespace cosmos {
+namespace {
+
+constexpr auto kIdleWait = std::chrono::microseconds(200);
+
+struct CompletedPose {
+  PartRecognition recognition;
+  std::int64_t completed_ns = 0;
+};
+
+// What the acquisition thread shares with the publisher's status messages.
+struct SharedStatus {
+  std::atomic<std::int64_t> overruns{0};
+  std::atomic<std::int64_t> profiles_dropped{0};
+  std::atomic<std::int64_t> time_p50_ns{0}, time_p99_ns{0}, time_max_ns{0};
+  std::atomic<std::int64_t> parts_recognized{0}, parts_rejected{0};
+  std::atomic<bool> fault{false};
+  std::atomic<bool> acquisition_done{false}, recognizer_done{false};
+};
+
+void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
+                    SpscRing<CompletedPose>& poses, SharedStatus& status,
+                    const CellRunSettings& settings) {
+  std::int64_t part_seq = 0;
+  for (;;) {
+    int index = -1;
+    if (!loop.completed().try_pop(index)) {
+      if (status.acquisition_done.load(std::memory_order_acquire) && loop.completed().empty())
+        break;
+      std::this_thread::sleep_for(kIdleWait);
+      continue;
+    }
+    if (settings.recognizer_delay_ms > 0)
+      std::this_thread::sleep_for(std::chrono::milliseconds(settings.recognizer_delay_ms));
+    PartBuilder& builder = loop.builder(index);
+    CompletedPose completed{recognize_part(builder, context, part_seq++), builder.completed_ns};
+    (completed.recognition.pose.status == PoseStatus::kOk ? status.parts_recognized
+                                                          : status.parts_rejected)
+        .fetch_add(1, std::memory_order_relaxed);
+    loop.returned().try_push(index);  // room for every builder: never full
+    while (!poses.try_push(std::move(completed))) std::this_thread::sleep_for(kIdleWait);
+  }
+  status.recognizer_done.store(true, std::memory_order_release);
+}
+
+CellStatus status_message(ScanLoop& loop, const SharedStatus& shared,
+                          const SpscRing<CompletedPose>& poses, std::int64_t utime_us) {
+  CellStatus status;
+  status.utime_us = utime_us;
+  const bool done = shared.acquisition_done.load();
+  status.state = shared.fault ? CellState::kFault : done ? CellState::kIdle : CellState::kScanning;
+  status.state_text = shared.fault ? "the scanner source failed"
+                      : done       ? "the source has ended"
+                                   : "scanning";
+  status.profiles_acquired = loop.counters().profiles;
+  status.profiles_dropped = shared.profiles_dropped;
+  status.deadline_overruns = shared.overruns;
+  status.profile_time_p50_us = shared.time_p50_ns / 1e3;
+  status.profile_time_p99_us = shared.time_p99_ns / 1e3;
+  status.profile_time_max_us = shared.time_max_ns / 1e3;
+  status.parts_seen = loop.counters().parts_seen;
+  status.parts_recognized = shared.parts_recognized;
+  status.parts_rejected = shared.parts_rejected;
+  status.recognition_queue_depth = static_cast<std::int32_t>(loop.completed().size());
+  status.publish_queue_depth = static_cast<std::int32_t>(poses.size());
+  return status;
+}
+
+void run_publisher(ScanLoop& loop, Publisher& publisher, SpscRing<CompletedPose>& poses,
+                   SpscRing<Profile>& profiles, SharedStatus& shared,
+                   const CellRunSettings& settings, const PoseObserver& observer,
+                   CellRunSummary& summary) {
+  const auto period = std::chrono::duration<double>(settings.status_period_s);
+  auto next_status = std::chrono::steady_clock::now();
+  std::int64_t last_data_us = 0;
+  for (;;) {
+    bool idle = true;
+    if (CompletedPose* completed = poses.try_front()) {
+      PartPose& pose = completed->recognition.pose;
+      if (!settings.deterministic_output)
+        pose.latency_ms = (monotonic_now_ns() - completed->completed_ns) / 1e6;
+      last_data_us = pose.utime_us;
+      (publisher.publish(pose) ? summary.poses_published : summary.publish_failures)++;
+      if (observer) observer(completed->recognition);
+      poses.pop();
+      idle = false;
+    }
+    if (const Profile* profile = profiles.try_front()) {
+      if (!publisher.publish(*profile)) summary.publish_failures++;
+      profiles.pop();
+      idle = false;
+    }
+    const bool finished =
+        shared.recognizer_done.load(std::memory_order_acquire) && poses.empty() && profiles.empty();
+    if (finished || std::chrono::steady_clock::now() >= next_status) {
+      if (!publisher.publish(status_message(loop, shared, poses, last_data_us)))
+        summary.publish_failures++;
+      next_status += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
+    }
+    if (finished) break;
+    if (idle) std::this_thread::sleep_for(kIdleWait);
+  }
+}
+
+}  // namespace
+
+CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
+                        const PartRecognitionContext& recognition, Publisher& publisher,
+                        const CellRunSettings& settings, const PoseObserver& observer) {
+  CellRunSummary summary;
+  SharedStatus shared;
+  SpscRing<CompletedPose> poses(static_cast<std::size_t>(std::max(settings.pose_queue_slots, 1)));
+  SpscRing<Profile> recorded(static_cast<std::size_t>(std::max(settings.profile_ring_slots, 1)),
+                             [&source](Profile& slot) { source.reserve(slot); });
+  std::thread recognizer(run_recognizer, std::ref(loop), std::cref(recognition), std::ref(poses),
+                         std::ref(shared), std::cref(settings));
+  std::thread publishing(run_publisher, std::ref(loop), std::ref(publisher), std::ref(poses),
+                         std::ref(recorded), std::ref(shared), std::cref(settings),
+                         std::cref(observer), std::ref(summary));
+
+  summary.realtime_report = describe_realtime_report(apply_realtime_settings(settings.realtime));
+  Profile profile;
+  source.reserve(profile);
+  DeadlinePacer pacer(settings.paced ? static_cast<std::int64_t>(1e9 / settings.line_rate_hz) : 0);
+  LatencyHistogram processing, processing_period;
+  const auto status_period_ns = static_cast<std::int64_t>(settings.status_period_s * 1e9);
+  std::int64_t next_snapshot_ns = monotonic_now_ns() + status_period_ns;
+  std::int64_t first_t_us = -1;
+  for (;;) {
+    pacer.wait_next();
+    const SourceStatus status = source.next(profile);
+    // Processing time starts when the profile is in hand: a hardware source's next() waits
+    // for the camera, and the simulator's ray casting is the scanner's work, not the cell's.
+    const std::int64_t start_ns = monotonic_now_ns();
+    if (status == SourceStatus::kEndOfStream) break;
+    if (status == SourceStatus::kTimeout) continue;
+    if (status == SourceStatus::kError) {
+      summary.source_error = std::string(source.last_error());
+      shared.fault = true;
+      break;
+    }
+    loop.process(profile);
+    if (settings.publish_profiles) {
+      Profile* slot = recorded.try_begin_push();
+      // Unpaced runs (replays, log recording) lose nothing: they wait for the publisher,
+      // which a loaded machine may starve for longer than the ring lasts.
+      while (!slot && !settings.paced) {
+        std::this_thread::sleep_for(kIdleWait);
+        slot = recorded.try_begin_push();
+      }
+      if (slot) {
+        *slot = profile;
+        recorded.commit_push();
+      } else {
+        shared.profiles_dropped.fetch_add(1, std::memory_order_relaxed);
+      }
+    }
+    const std::int64_t end_ns = monotonic_now_ns();
+    processing.record_ns(end_ns - start_ns);
+    processing_period.record_ns(end_ns - start_ns);
+    if (end_ns >= next_snapshot_ns) {
+      shared.time_p50_ns = processing_period.p50_ns();
+      shared.time_p99_ns = processing_period.p99_ns();
+      shared.time_max_ns = processing_period.max_ns();
+      shared.overruns = pacer.overruns();
+      processing_period.reset();
+      next_snapshot_ns = end_ns + status_period_ns;
+    }
+    if (first_t_us < 0) first_t_us = profile.t_us;
+    if (settings.duration_s > 0 && profile.t_us - first_t_us >= settings.duration_s * 1e6) break;
+  }
+  loop.flush();
+  shared.overruns = pacer.overruns();
+  shared.profiles_dropped.fetch_add(static_cast<std::int64_t>(source.dropped_profiles()));
+  shared.acquisition_done.store(true, std::memory_order_release);
+  recognizer.join();
+  publishing.join();
+
+  summary.profiles = loop.counters().profiles;
+  summary.profiles_dropped = shared.profiles_dropped;
+  summary.deadline_overruns = pacer.overruns();
+  summary.parts_seen = loop.counters().parts_seen;
+  summary.parts_dropped = loop.counters().parts_dropped;
+  summary.profile_time_p50_us = processing.p50_ns() / 1e3;
+  summary.profile_time_p99_us = processing.p99_ns() / 1e3;
+  summary.profile_time_p999_us = processing.p999_ns() / 1e3;
+  summary.profile_time_max_us = processing.max_ns() / 1e3;
+  summary.start_jitter_p50_us = pacer.lateness().p50_ns() / 1e3;
+  summary.start_jitter_p99_us = pacer.lateness().p99_ns() / 1e3;
+  summary.start_jitter_max_us = pacer.lateness().max_ns() / 1e3;
+  return summary;
+}
+
+}  // namespace cosmos

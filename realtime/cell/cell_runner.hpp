@@ -1,0 +1,67 @@
+#pragma once
+// The running cell: three threads around the ScanLoop (DESIGN.md "Real-time discipline").
+//   acquisition  (the calling thread, with the real-time settings applied): source.next() →
+//                ScanLoop::process, paced on absolute deadlines at the line rate or unpaced;
+//                records per-profile processing time (from the profile in hand to
+//                its last stage, source time excluded); never waits on the others when
+//                paced. Unpaced, it waits for room in the recorded-profile ring, and with
+//                wait_for_recognizer (scan_loop.hpp) for the recognizer.
+//   recognizer   completed parts → recognize_part → poses ring; gives the builder back.
+//   publisher    poses ring → Publisher; cell_status_t every status period; recorded
+//                profiles when asked.
+// Rings between them are single-producer/single-consumer and lock-free; counters are atomics.
+// With deterministic_output the poses carry only data-derived values (utime is the part's
+// last exposure time, latency_ms 0), so replaying a stream gives byte-identical messages
+// however the threads are scheduled.
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "realtime/cell/cell_status.hpp"
+#include "realtime/cell/part_recognition.hpp"
+#include "realtime/lcm/pose_publisher.hpp"
+#include "realtime/rt/realtime_settings.hpp"
+#include "realtime/loop/scan_loop.hpp"
+#include "realtime/sources/scanner_source.hpp"
+
+namespace cosmos {
+
+struct CellRunSettings {
+  double line_rate_hz = 2500;  // pacing of the acquisition loop
+  bool paced = true;
+  bool deterministic_output = false;
+  RealtimeSettings realtime;
+  double status_period_s = 1.0;
+  int pose_queue_slots = 32;
+  int profile_ring_slots = 4096;
+  bool publish_profiles = false;
+  double duration_s = 0;  // stop after this much (data time); 0 = until the source ends
+  // Test hook: extra time the recognizer spends per part (a slow worker must not change
+  // the output in deterministic mode).
+  int recognizer_delay_ms = 0;
+};
+
+struct CellRunSummary {
+  std::int64_t profiles = 0;
+  std::int64_t profiles_dropped = 0;
+  std::int64_t deadline_overruns = 0;
+  std::int64_t parts_seen = 0;
+  std::int64_t parts_dropped = 0;
+  std::int64_t poses_published = 0;
+  std::int64_t publish_failures = 0;
+  double profile_time_p50_us = 0, profile_time_p99_us = 0, profile_time_p999_us = 0,
+         profile_time_max_us = 0;
+  double start_jitter_p50_us = 0, start_jitter_p99_us = 0, start_jitter_max_us = 0;
+  std::string realtime_report;
+  std::string source_error;  // set when the source failed
+};
+
+// Called on the publisher thread after each pose went out (the live table).
+using PoseObserver = std::function<void(const PartRecognition&)>;
+
+CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
+                        const PartRecognitionContext& recognition, Publisher& publisher,
+                        const CellRunSettings& settings, const PoseObserver& observer = {});
+
+}  // namespace cosmos

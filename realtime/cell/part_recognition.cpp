@@ -1,0 +1,142 @@
+#include "realtime/cell/part_recognition.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "core/representation/cosmos_view.hpp"
+#include "core/segmentation/csmp_segmentation.hpp"
+#include "core/representation/shape_spectrum.hpp"
+
+namespace cosmos {
+namespace {
+
+// Columns kept beside the tracked extent: the fit window's reach, so border pixels keep the
+// same neighbourhood as in the builder.
+constexpr int kColumnMargin = 4;
+
+RigidTransform T_scanner_belt(std::int64_t encoder_ticks, double mm_per_tick) {
+  return {Eigen::Matrix3d::Identity(),
+          Eigen::Vector3d(0, static_cast<double>(encoder_ticks) * mm_per_tick, 0)};
+}
+
+RigidTransform T_belt_loop() {
+  return {Eigen::Vector3d(-1, -1, 1).asDiagonal().toDenseMatrix(), Eigen::Vector3d::Zero()};
+}
+
+}  // namespace
+
+PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& context) {
+  builder.cosmos.finish();
+  const IncrementalCosmos& source = builder.cosmos;
+  const int full_width = source.image().width();
+  const int c0 = std::max(0, builder.column_min - kColumnMargin);
+  const int c1 = std::min(full_width - 1, builder.column_max + kColumnMargin);
+  const int width = c1 - c0 + 1;
+  const int height = source.rows();
+
+  PartView part;
+  part.image = RangeImage(width, height, context.grid_mm, context.grid_mm);
+  part.image.origin_x_mm = source.image().origin_x_mm + c0 * context.grid_mm;
+  part.image.origin_y_mm = source.image().origin_y_mm;
+  DarbouxFrameField& frames = part.analysis.frames;
+  frames = DarbouxFrameField(width, height);
+  ShapeIndexField& field = part.analysis.field;
+  field = make_shape_index_field(width, height);
+  // Which pixels of the part's columns belong to it, a row at a time (with one column of
+  // margin on each side, never owned): the copy below reads each label once instead of nine
+  // times (this runs between the part's end and its pose).
+  const int mask_width = width + 2;
+  std::vector<std::uint8_t> owned(static_cast<std::size_t>(mask_width) * (height + 2), 0);
+  const auto owned_at = [&](int x, int row) -> std::uint8_t& {
+    return owned[static_cast<std::size_t>(row + 1) * mask_width + (x + 1)];
+  };
+  for (int row = 0; row < height; ++row) {
+    const std::int64_t* labels = builder.labels.data() + static_cast<std::size_t>(row) * full_width;
+    for (int x = 0; x < width; ++x) owned_at(x, row) = builder.owns(labels[c0 + x]) ? 1 : 0;
+  }
+  for (int row = 0; row < height; ++row) {
+    for (int x = 0; x < width; ++x) {
+      if (!owned_at(x, row)) continue;
+      const std::size_t from = static_cast<std::size_t>(row) * full_width + (c0 + x);
+      const std::size_t to = static_cast<std::size_t>(row) * width + x;
+      part.image.z_mm[to] = source.image().z_mm[from];
+      std::uint8_t same_side = source.frames().same_side[from];
+      for (int k = 0; k < 8; ++k)
+        if (!owned_at(x + kNeighborOffsets[k].column, row + kNeighborOffsets[k].row))
+          same_side &= static_cast<std::uint8_t>(~(1u << k));
+      frames.valid[to] = source.frames().valid[from];
+      frames.same_side[to] = same_side;
+      for (int a = 0; a < 3; ++a) frames.position_mm[a][to] = source.frames().position_mm[a][from];
+      for (int c = 0; c < kFrameComponents; ++c)
+        frames.frame[c][to] = source.frames().frame[c][from];
+      field.label[to] = source.field().label[from];
+      field.shape_index[to] = source.field().shape_index[from];
+      field.curvedness_per_mm[to] = source.field().curvedness_per_mm[from];
+      field.area_mm2[to] = source.field().area_mm2[from];
+      field.same_side[to] = same_side;
+    }
+  }
+  ViewAnalysis& analysis = part.analysis;
+  analysis.segmentation = segment_csmps(frames, field, context.cosmos.segmentation);
+  analysis.view = build_cosmos_view(frames, field, analysis.segmentation);
+  analysis.spectrum = compute_shape_spectrum(field, context.cosmos.spectrum);
+  analysis.moments = spectrum_moments(analysis.spectrum);
+  for (SurfaceLabel label : field.label.values())
+    analysis.valid_pixels += label != SurfaceLabel::kInvalid ? 1 : 0;
+  return part;
+}
+
+PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContext& context,
+                               std::int64_t part_seq) {
+  const auto start = std::chrono::steady_clock::now();
+  const PartView part = extract_part_view(builder, context);
+  const double features_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  PartRecognition out;
+  out.result = context.recognizer->recognize_analyzed(part.image, part.analysis, features_ms);
+  PartPose& pose = out.pose;
+  pose.utime_us = builder.last_t_us;
+  pose.part_seq = part_seq;
+  pose.encoder_ticks = builder.last_encoder_ticks;
+  if (out.result.status == RecognitionStatus::kOk) {
+    pose.status = PoseStatus::kOk;
+    const auto base_part = static_cast<std::size_t>(out.result.part);
+    pose.part_name = context.model_base->parts[base_part].name;
+    pose.part_index = base_part < context.catalog_index_of_base_part.size()
+                          ? context.catalog_index_of_base_part[base_part]
+                          : out.result.part;
+    pose.view_index =
+        context.model_base->views[static_cast<std::size_t>(out.result.view)].view_index;
+  } else {
+    pose.status = PoseStatus::kRejected;
+    pose.reason = out.result.reason;
+  }
+  if (builder.truncated) {
+    pose.status = PoseStatus::kError;
+    pose.reason = "part longer than tracking.max_part_length_mm: its end was not scanned";
+  }
+  out.T_belt_part = T_belt_loop() * out.result.T_scanner_part;
+  out.first_profile = builder.first_profile;
+  out.last_profile = builder.first_profile + builder.cosmos.rows() - 1;
+  const RigidTransform T_cell_part =
+      (context.T_cell_scanner * T_scanner_belt(builder.last_encoder_ticks, context.mm_per_tick) *
+       out.T_belt_part)
+          .normalized();
+  pose.rotation_cell_part = Eigen::Quaterniond(T_cell_part.rotation);
+  pose.translation_cell_part_mm = T_cell_part.translation_mm;
+  pose.score = out.result.score;
+  pose.registration_rms_mm = out.result.registration_rms_mm;
+  return out;
+}
+
+RigidTransform belt_pose_of(const PartPose& pose, const RigidTransform& T_cell_scanner,
+                            double mm_per_tick) {
+  const RigidTransform T_cell_part{pose.rotation_cell_part.toRotationMatrix(),
+                                   pose.translation_cell_part_mm};
+  return T_scanner_belt(pose.encoder_ticks, mm_per_tick).inverse() * T_cell_scanner.inverse() *
+         T_cell_part;
+}
+
+}  // namespace cosmos

@@ -1,0 +1,44 @@
+#pragma once
+// The hardware YAML of a real scanner cell (config/hardware-example.yaml): the V4L2 camera,
+// the GPIO lines, and how the stripe is found in the camera's frames. The triangulation
+// geometry and the profile grid are not here: they are the `scanner:` section of the cell
+// configuration (scanner/scanner_config.hpp), shared with the simulated cell, so a simulated and
+// a live cell with one cell.yaml produce profiles on the same grid.
+//
+//   camera:   device, pixel_format (GREY|Y10|Y12|Y16), width, height, roi_top, roi_left,
+//             exposure_us, gain, buffer_count, frame_timeout_us
+//   gpio:     chip, consumer, encoder_a (required), encoder_b (required for quadrature),
+//             encoder_mode (quadrature|step), photo_eye, laser_enable, camera_trigger,
+//             result_ready, debounce_us, photo_eye_debounce_us, photo_eye_min_on_us,
+//             photo_eye_min_off_us
+//   stripe:   method (centre_of_gravity|gaussian_three_point), threshold,
+//             min_peak_intensity, window_half_width_px
+//
+// A line is a name (`ENC_A`), an offset (`17`) or a map {name: ENC_A | offset: 17,
+// active_low: true}. Every section and key but gpio.encoder_a (and encoder_b in quadrature
+// mode) is optional, with the defaults of firmware_bridge/camera_config.hpp, gpio_config.hpp
+// and laser_stripe_extraction.hpp. An unknown key, a wrong type or a value out of range
+// throws InputError `file:LINE: section.key: reason` (1-based line).
+#include <cstdint>
+#include <filesystem>
+
+#include "firmware_bridge/camera_config.hpp"
+#include "firmware_bridge/gpio_config.hpp"
+#include "firmware_bridge/laser_stripe_extraction.hpp"
+
+namespace cosmos {
+
+struct HardwareConfig {
+  std::filesystem::path file;  // where it was read from, for error hints; empty if built in code
+  CameraConfig camera;
+  GpioConfig gpio;
+  // Grey levels of the camera's pixel format. The 8-bit defaults scale to the format's full
+  // scale when not given; the saturation level is always the format's full scale.
+  StripeExtractionParameters stripe;
+  // The watchdog of one wait for a frame: a stalled camera shows as a timeout, not a hang.
+  std::int64_t frame_timeout_us = 100'000;
+};
+
+HardwareConfig read_hardware_config(const std::filesystem::path& yaml_path);
+
+}  // namespace cosmos

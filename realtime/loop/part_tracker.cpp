@@ -1,0 +1,148 @@
+#include "realtime/loop/part_tracker.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cosmos {
+
+PartTracker::PartTracker(const PartTrackerParameters& parameters, int width)
+    : parameters_(parameters), width_(width), labels_(width, -1) {
+  previous_runs_.reserve(parameters.max_runs_per_row);
+  runs_.reserve(parameters.max_runs_per_row);
+  open_.reserve(parameters.max_open_parts);
+  completed_.reserve(parameters.max_open_parts);
+  merges_.reserve(parameters.max_runs_per_row);
+}
+
+int PartTracker::open_index(std::int64_t part) const {
+  for (std::size_t k = 0; k < open_.size(); ++k)
+    if (open_[k].id == part) return static_cast<int>(k);
+  return -1;
+}
+
+std::int64_t PartTracker::resolve(std::int64_t part) const {
+  for (const auto& [absorbed, kept] : merges_)
+    if (absorbed == part) return resolve(kept);
+  return part;
+}
+
+void PartTracker::merge(std::int64_t keep, std::int64_t absorbed) {
+  TrackedPart& kept = open_[open_index(keep)];
+  const int index = open_index(absorbed);
+  TrackedPart gone = open_[index];
+  kept.first_row = std::min(kept.first_row, gone.first_row);
+  kept.column_min = std::min(kept.column_min, gone.column_min);
+  kept.column_max = std::max(kept.column_max, gone.column_max);
+  kept.last_row = std::max(kept.last_row, gone.last_row);
+  kept.pixels += gone.pixels;
+  gone.merged_into = keep;
+  completed_.push_back(gone);
+  open_.erase(open_.begin() + index);  // no allocation: erase within capacity
+  merges_.emplace_back(absorbed, keep);
+}
+
+bool PartTracker::idle(const TrackedPart& part, std::int64_t row_index) const {
+  return row_index - part.last_row > parameters_.link_gap_rows;
+}
+
+bool PartTracker::footprints_overlap(const TrackedPart& a, const TrackedPart& b) const {
+  const int columns = parameters_.link_gap_columns + 1;
+  const std::int64_t rows = parameters_.link_gap_rows + 1;
+  return a.column_min <= b.column_max + columns && b.column_min <= a.column_max + columns &&
+         a.first_row <= b.last_row + rows && b.first_row <= a.last_row + rows;
+}
+
+const std::vector<TrackedPart>& PartTracker::add_row(const float* z_mm, std::int64_t row_index) {
+  completed_.clear();
+  merges_.clear();
+  runs_.clear();
+  for (int column = 0; column < width_;) {
+    if (std::isnan(z_mm[column])) {
+      ++column;
+      continue;
+    }
+    const int begin = column;
+    while (column < width_ && !std::isnan(z_mm[column])) ++column;
+    if (static_cast<int>(runs_.size()) < parameters_.max_runs_per_row) {
+      runs_.push_back({begin, column, -1});
+    } else {
+      ++dropped_runs_;
+    }
+  }
+  // Link each run to the parts of the previous row's runs it touches; merge when several.
+  const int gap = parameters_.link_gap_columns + 1;  // +1: diagonal neighbours touch
+  for (Run& run : runs_) {
+    for (const Run& above : previous_runs_) {
+      if (above.part < 0 || above.end + gap <= run.begin || run.end + gap <= above.begin) continue;
+      const std::int64_t part = resolve(above.part);
+      if (open_index(part) < 0) continue;
+      if (run.part < 0) {
+        run.part = part;
+      } else if (resolve(run.part) != part) {
+        const std::int64_t a = resolve(run.part);
+        merge(std::min(a, part), std::max(a, part));  // the earlier part keeps its id
+        run.part = std::min(a, part);
+      }
+    }
+    // Shadows and dropouts split one part's surface: a run near a part seen in the last
+    // link_gap_rows rows (within its column extent and link_gap_columns) belongs to it.
+    for (std::size_t k = 0; run.part < 0 && k < open_.size(); ++k) {
+      const TrackedPart& part = open_[k];
+      if (row_index - part.last_row > parameters_.link_gap_rows + 1) continue;
+      if (part.column_max + gap < run.begin || run.end - 1 + gap < part.column_min) continue;
+      run.part = part.id;
+    }
+    if (run.part < 0) {
+      if (static_cast<int>(open_.size()) >= parameters_.max_open_parts) {
+        ++dropped_runs_;
+        continue;
+      }
+      TrackedPart part;
+      part.id = next_id_++;
+      part.first_row = row_index;
+      part.column_min = run.begin;
+      part.column_max = run.end - 1;
+      open_.push_back(part);
+      run.part = part.id;
+    }
+  }
+  // Account the row.
+  std::fill(labels_.begin(), labels_.end(), -1);
+  for (Run& run : runs_) {
+    if (run.part < 0) continue;
+    run.part = resolve(run.part);
+    TrackedPart& part = open_[open_index(run.part)];
+    part.last_row = row_index;
+    part.column_min = std::min(part.column_min, run.begin);
+    part.column_max = std::max(part.column_max, run.end - 1);
+    part.pixels += run.end - run.begin;
+    std::fill(labels_.begin() + run.begin, labels_.begin() + run.end, run.part);
+  }
+  // A part no row has touched for link_gap_rows is complete, unless its footprint overlaps
+  // an open part's: then it is a piece of that part (a horn or leg cut off by the shadows
+  // over its whole length), and joins it.
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (std::size_t k = 0; k < open_.size() && !merged; ++k) {
+      if (!idle(open_[k], row_index)) continue;
+      for (std::size_t j = 0; j < open_.size() && !merged; ++j) {
+        if (j == k || !footprints_overlap(open_[k], open_[j])) continue;
+        merge(std::min(open_[k].id, open_[j].id), std::max(open_[k].id, open_[j].id));
+        merged = true;
+      }
+    }
+  }
+  for (std::size_t k = open_.size(); k-- > 0;) {
+    if (!idle(open_[k], row_index)) continue;
+    TrackedPart done = open_[k];
+    done.noise = done.pixels < parameters_.min_pixels;
+    completed_.push_back(done);
+    open_.erase(open_.begin() + static_cast<long>(k));
+  }
+  std::sort(completed_.begin(), completed_.end(),
+            [](const TrackedPart& a, const TrackedPart& b) { return a.id < b.id; });
+  std::swap(previous_runs_, runs_);
+  return completed_;
+}
+
+}  // namespace cosmos

@@ -1,0 +1,73 @@
+#pragma once
+// The live scanner as a ScannerSource (`hardware`): the V4L2 camera that images the laser
+// line and the GPIO lines of the conveyor encoder and the laser, from the hardware YAML
+// (hardware_config.hpp), with the triangulation geometry and the profile grid of the cell's
+// `scanner:` section (ScannerParameters), exactly as the simulated cell uses them.
+//
+// start() opens the camera device and the GPIO chip, and fails with one line naming the
+// device and the config key that names it ("/dev/video0: open: No such file or directory
+// (camera.device in hw.yaml)"). There is never a fallback to the simulator: a cell that was
+// told to use hardware and has none must stop, not scan imaginary parts. Then it drives
+// laser-enable on (when configured) and streams.
+//
+// next() waits up to frame_timeout_us for a frame, drains the encoder's edges, turns the
+// frame into the profile with the simulator's camera-mode code (StripeProfiler) and gives
+// the frame back. seq is the camera's frame index, t_us the frame's time stamp
+// (CLOCK_MONOTONIC), encoder_ticks the count once the frame has arrived: the camera runs
+// free, so that count lags the exposure by the frame's readout and is, at constant belt
+// speed, a constant offset. Frames the camera lost add to dropped_profiles().
+#include <cstdint>
+#include <memory>
+
+#include "firmware_bridge/camera.hpp"
+#include "firmware_bridge/error_line.hpp"
+#include "firmware_bridge/gpio.hpp"
+#include "firmware_bridge/stripe_profiler.hpp"
+#include "realtime/config/hardware_config.hpp"
+#include "realtime/sources/scanner_source.hpp"
+#include "scanner/scanner_model.hpp"
+
+namespace cosmos {
+
+class HardwareSource final : public ScannerSource {
+ public:
+  // The cell's own devices: a V4l2Camera and libgpiod lines built from the config.
+  HardwareSource(const HardwareConfig& config, const ScannerParameters& parameters);
+  // Devices supplied by the caller (fakes in tests); they must outlive the source.
+  HardwareSource(const HardwareConfig& config, const ScannerParameters& parameters, Camera& camera,
+                 GpioLines& gpio);
+  ~HardwareSource() override;
+  HardwareSource(const HardwareSource&) = delete;
+  HardwareSource& operator=(const HardwareSource&) = delete;
+
+  SourceStatus start() override;
+  void reserve(Profile& profile) const override;
+  SourceStatus next(Profile& out) noexcept override;
+  void stop() noexcept override;
+
+  double mm_per_profile() const override { return parameters_.profile_step_mm(); }
+  std::string_view last_error() const noexcept override { return error_.view(); }
+  std::uint64_t dropped_profiles() const noexcept override { return dropped_; }
+
+  // The last frame's stripe (diagnostics); valid after the first profile.
+  const StripeProfiler* profiler() const { return profiler_.get(); }
+
+ private:
+  // Fails start() with `reason` and the config key that names the failing device.
+  SourceStatus fail_start(std::string_view reason, const char* key);
+  SourceStatus check_camera_fits_sensor();
+
+  HardwareConfig config_;
+  ScannerParameters parameters_;
+  std::unique_ptr<Camera> owned_camera_;
+  std::unique_ptr<GpioLines> owned_gpio_;
+  Camera* camera_ = nullptr;
+  GpioLines* gpio_ = nullptr;
+  std::unique_ptr<StripeProfiler> profiler_;
+  int width_ = 0;  // profile samples
+  bool started_ = false;
+  std::uint64_t dropped_ = 0;
+  ErrorLine error_;
+};
+
+}  // namespace cosmos

@@ -1,0 +1,26 @@
+#pragma once
+// The `scanner:` section of the cell configuration (config/cell.yaml): overrides of the
+// simulated scanner's parameters (scanner/scanner_model.hpp, where each is documented). Absent
+// keys keep their defaults; other top-level sections belong to other layers and are left
+// alone. Inside the section, an unknown key, a value of the wrong type or out of its range
+// throws InputError `file:LINE: scanner.key: reason` (1-based line).
+//
+//   scanner:
+//     points_per_profile: 640
+//     z_noise_mm: 0.02
+//     camera:
+//       bit_depth: 8
+#include <filesystem>
+
+#include "scanner/scanner_model.hpp"
+
+namespace cosmos {
+
+ScannerParameters read_scanner_config(const std::filesystem::path& yaml_path,
+                                      const ScannerParameters& defaults = {});
+
+// The same ranges for parameters set in code: std::invalid_argument naming the first field
+// out of range (e.g. after a CLI override).
+void check_scanner_parameters(const ScannerParameters& parameters);
+
+}  // namespace cosmos

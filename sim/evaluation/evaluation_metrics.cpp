@@ -1,0 +1,200 @@
+#include "sim/evaluation/evaluation_metrics.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "sim/evaluation/add_s_distance.hpp"
+
+namespace cosmos {
+namespace {
+
+// Clusters shown at least on the Fig. 4.8 curve: the largest k of the stable JSON keys.
+constexpr int kMinimumCurveClusters = kClusterHitRanks.back();
+
+std::optional<double> fraction(int count, int total) {
+  if (total == 0) return std::nullopt;
+  return static_cast<double>(count) / total;
+}
+
+RecordStatus status_of(const EvaluationRecord& record) {
+  if (!record.truth_in_model_base)
+    return record.rejected ? RecordStatus::kUnknownRejected : RecordStatus::kUnknownAccepted;
+  if (record.rejected) return RecordStatus::kFalseReject;
+  return record.predicted_part == record.truth_part ? RecordStatus::kCorrect
+                                                    : RecordStatus::kMisidentified;
+}
+
+Median95 median_p95(const std::vector<double>& values) {
+  return {nearest_rank_percentile(values, 50), nearest_rank_percentile(values, 95)};
+}
+
+nlohmann::json to_json(const std::optional<double>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+}
+
+nlohmann::json to_json(const Median95& value) {
+  return {{"median", to_json(value.median)}, {"p95", to_json(value.p95)}};
+}
+
+// ADD-S of a correct record, with one k-d tree per part built on first use.
+class AddSByPart {
+ public:
+  explicit AddSByPart(const ModelPointsLookup& lookup) : lookup_(lookup) {}
+
+  double add_s_mm(const EvaluationRecord& record) {
+    auto found = trees_.find(record.truth_part);
+    if (found == trees_.end()) {
+      const std::span<const Eigen::Vector3d> points = lookup_(record.truth_part);
+      if (points.empty())
+        throw std::invalid_argument("no model points for part " +
+                                    std::to_string(record.truth_part) + " (" + record.truth_name +
+                                    ")");
+      found = trees_.emplace(record.truth_part, AddSDistance(points)).first;
+    }
+    return found->second.add_s_mm({record.R_true, record.t_true_mm},
+                                  {record.R_estimated, record.t_estimated_mm});
+  }
+
+ private:
+  const ModelPointsLookup& lookup_;
+  std::map<int, AddSDistance> trees_;
+};
+
+}  // namespace
+
+const char* record_status_name(RecordStatus status) {
+  switch (status) {
+    case RecordStatus::kCorrect:
+      return "correct";
+    case RecordStatus::kMisidentified:
+      return "misidentified";
+    case RecordStatus::kFalseReject:
+      return "false reject";
+    case RecordStatus::kUnknownRejected:
+      return "unknown, rejected";
+    case RecordStatus::kUnknownAccepted:
+      return "unknown, accepted";
+  }
+  return "?";
+}
+
+std::optional<double> nearest_rank_percentile(std::vector<double> values, double percent) {
+  if (values.empty()) return std::nullopt;
+  const auto count = static_cast<double>(values.size());
+  const auto rank = std::clamp(static_cast<std::size_t>(std::ceil(percent / 100 * count)),
+                               std::size_t{1}, values.size());
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(rank - 1),
+                   values.end());
+  return values[rank - 1];
+}
+
+double rotation_angle_deg(const Eigen::Matrix3d& R_a, const Eigen::Matrix3d& R_b) {
+  const Eigen::Matrix3d R_ab = R_a.transpose() * R_b;
+  // atan2 of sin and cos stays accurate near 0 and 180 degrees, where acos of the trace alone
+  // loses half the digits.
+  const double cos_angle = (R_ab.trace() - 1) / 2;
+  const Eigen::Vector3d axis_times_2sin(R_ab(2, 1) - R_ab(1, 2), R_ab(0, 2) - R_ab(2, 0),
+                                        R_ab(1, 0) - R_ab(0, 1));
+  return std::atan2(axis_times_2sin.norm() / 2, cos_angle) * 180 / std::numbers::pi;
+}
+
+EvaluationMetrics compute_metrics(std::span<const EvaluationRecord> records,
+                                  const ModelPointsLookup& model_points_per_part) {
+  EvaluationMetrics metrics;
+  AddSByPart add_s(model_points_per_part);
+  int correct = 0, view_selection_hits = 0, add_s_hits_10pct = 0, add_s_hits_2pct = 0;
+  int false_rejects = 0, unknown_rejects = 0, largest_rank = -1;
+  double fraction_db_sum = 0;
+  std::vector<int> cluster_ranks;
+  std::vector<double> translation_errors_mm, recognition_times_ms;
+  for (const EvaluationRecord& record : records) {
+    RecordOutcome outcome;
+    outcome.status = status_of(record);
+    recognition_times_ms.push_back(record.recognition_ms);
+    if (!record.truth_in_model_base) {
+      ++metrics.unknown_tests;
+      if (record.rejected) ++unknown_rejects;
+      metrics.outcomes.push_back(outcome);
+      continue;
+    }
+    ++metrics.tests;
+    cluster_ranks.push_back(record.true_cluster_rank);
+    largest_rank = std::max(largest_rank, record.true_cluster_rank);
+    if (record.true_part_among_selected_views) ++view_selection_hits;
+    fraction_db_sum += record.fraction_db_examined;
+    if (record.rejected) ++false_rejects;
+    if (outcome.status == RecordStatus::kCorrect) {
+      ++correct;
+      if (!(record.diameter_mm > 0))
+        throw std::invalid_argument("part " + std::to_string(record.truth_part) + " (" +
+                                    record.truth_name + ") has no positive diameter_mm");
+      if (!record.truth_symmetric) {
+        outcome.rotation_error_deg = rotation_angle_deg(record.R_true, record.R_estimated);
+        metrics.rotation_errors_deg.push_back(*outcome.rotation_error_deg);
+      }
+      outcome.translation_error_mm = (record.t_true_mm - record.t_estimated_mm).norm();
+      translation_errors_mm.push_back(*outcome.translation_error_mm);
+      outcome.add_s_mm = add_s.add_s_mm(record);
+      outcome.add_s_over_diameter = *outcome.add_s_mm / record.diameter_mm;
+      if (*outcome.add_s_over_diameter < 0.10) ++add_s_hits_10pct;
+      if (*outcome.add_s_over_diameter < 0.02) ++add_s_hits_2pct;
+    }
+    metrics.outcomes.push_back(outcome);
+  }
+
+  const int known = metrics.tests;
+  const auto hit_rate = [&](int clusters) {
+    return fraction(static_cast<int>(std::count_if(
+                        cluster_ranks.begin(), cluster_ranks.end(),
+                        [clusters](int rank) { return rank >= 0 && rank < clusters; })),
+                    known);
+  };
+  metrics.identification_rate = fraction(correct, known);
+  for (std::size_t i = 0; i < kClusterHitRanks.size(); ++i)
+    metrics.spectral_cluster_hit_rate[i] = hit_rate(kClusterHitRanks[i]);
+  if (known > 0)
+    for (int k = 1; k <= std::max(kMinimumCurveClusters, largest_rank + 1); ++k)
+      metrics.cluster_hit_rate_curve.push_back(*hit_rate(k));
+  metrics.spectral_view_selection_rate = fraction(view_selection_hits, known);
+  if (known > 0) metrics.fraction_db_examined = fraction_db_sum / known;
+  std::sort(metrics.rotation_errors_deg.begin(), metrics.rotation_errors_deg.end());
+  metrics.rotation_error_deg = median_p95(metrics.rotation_errors_deg);
+  metrics.translation_error_mm = median_p95(translation_errors_mm);
+  metrics.add_s_recall_10pct = fraction(add_s_hits_10pct, known);
+  metrics.add_s_recall_2pct = fraction(add_s_hits_2pct, known);
+  metrics.unknown_reject_rate = fraction(unknown_rejects, metrics.unknown_tests);
+  metrics.false_reject_rate = fraction(false_rejects, known);
+  metrics.recognition_ms_median = nearest_rank_percentile(recognition_times_ms, 50);
+  metrics.recognition_ms_p99 = nearest_rank_percentile(recognition_times_ms, 99);
+  return metrics;
+}
+
+nlohmann::json metrics_json(const EvaluationMetrics& metrics) {
+  nlohmann::json cluster_hits = nlohmann::json::object();
+  for (std::size_t i = 0; i < kClusterHitRanks.size(); ++i)
+    cluster_hits[std::to_string(kClusterHitRanks[i])] =
+        to_json(metrics.spectral_cluster_hit_rate[i]);
+  return {
+      {"tests", metrics.tests},
+      {"identification_rate", to_json(metrics.identification_rate)},
+      {"spectral_cluster_hit_rate", cluster_hits},
+      {"spectral_view_selection_rate", to_json(metrics.spectral_view_selection_rate)},
+      {"fraction_db_examined", to_json(metrics.fraction_db_examined)},
+      {"rotation_error_deg", to_json(metrics.rotation_error_deg)},
+      {"translation_error_mm", to_json(metrics.translation_error_mm)},
+      {"add_s_recall_10pct", to_json(metrics.add_s_recall_10pct)},
+      {"add_s_recall_2pct", to_json(metrics.add_s_recall_2pct)},
+      {"unknown_reject_rate", to_json(metrics.unknown_reject_rate)},
+      {"false_reject_rate", to_json(metrics.false_reject_rate)},
+      {"recognition_ms",
+       {{"median", to_json(metrics.recognition_ms_median)},
+        {"p99", to_json(metrics.recognition_ms_p99)}}},
+  };
+}
+
+}  // namespace cosmos

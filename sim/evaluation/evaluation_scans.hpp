@@ -1,0 +1,61 @@
+#pragma once
+// The test scans of `cosmos eval`: which part each test scans, in which pose and with which
+// noise, and the record its recognition gives (sim/evaluation/evaluation_metrics.hpp).
+//
+// Test i of a run with seed S scans known part (mix_seed(S, i) mod the known parts) in a
+// uniformly random pose drawn from mix_seed(S, i) and noise from another stream of it, so the
+// plan is fixed by (S, N) alone. The model views are scanned with the scanner's own seed
+// stream (per view index), the tests with streams of S above 2^32: the two never share noise.
+// Unknown parts (in the catalog, not in the base) are scanned as many times each as an
+// average known part, with seeds following the known tests'.
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sim/evaluation/evaluation_metrics.hpp"
+#include "core/modelbase/model_base.hpp"
+#include "core/recognition/recognizer.hpp"
+#include "sim/mesh.hpp"
+#include "sim/part_catalog.hpp"
+#include "scanner/scanner_model.hpp"
+
+namespace cosmos {
+
+struct EvaluationPart {
+  std::string name;
+  int catalog_index = -1;
+  int base_index = -1;  // -1: not in the model base (an unknown part)
+  bool symmetric = false;
+  double diameter_mm = 0;
+  TriangleMesh mesh;
+  std::vector<Eigen::Vector3d> model_points_mm;  // part-frame subsample for ADD-S
+};
+
+struct EvaluationTest {
+  int part = 0;  // index into the parts list
+  std::uint64_t seed = 0;
+  int index = 0;  // position in the whole plan: the number the report shows
+};
+
+// Known parts: the base's parts, found in the catalog by name (InputError naming a base part
+// the catalog lacks); then the unknown ones (InputError for a name not in the catalog or one
+// that is in the base).
+std::vector<EvaluationPart> evaluation_parts(const ModelBase& base, const PartCatalog& catalog,
+                                             const std::vector<std::string>& unknown_names);
+
+std::vector<EvaluationTest> evaluation_plan(const std::vector<EvaluationPart>& parts, int tests,
+                                            std::uint64_t seed);
+
+// The test's scan: its part in the test's random pose, with the test's noise.
+RangeImage scan_evaluation_test(const EvaluationTest& test,
+                                const std::vector<EvaluationPart>& parts,
+                                const ScannerParameters& scanner);
+
+// Scans the test's part and recognizes it. Thread-safe: everything shared is read-only.
+EvaluationRecord run_evaluation_test(const EvaluationTest& test,
+                                     const std::vector<EvaluationPart>& parts,
+                                     const ScannerParameters& scanner, const Recognizer& recognizer,
+                                     const ModelBase& base);
+
+}  // namespace cosmos

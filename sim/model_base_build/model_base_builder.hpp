@@ -1,0 +1,55 @@
+#pragma once
+// Builds the model base (ch. 4, Fig. 5.3) from the part catalog: every part seen from the view
+// directions of §4.5 through sim's ModelViewRenderer (the simulated scanner, profile mode) and
+// the same COSMOS code as live scans (analyze_view, build_registration_points), then each
+// part's views grouped into clusters (§4.4.2).
+//
+// Parallel and deterministic: worker threads pull (part, view) jobs from an atomic counter,
+// each result lands in its job's slot, and everything after (grouping, the file) runs in job
+// order, so the base is byte-identical for any thread count.
+#include <functional>
+
+#include "sim/model_base_build/view_direction_subset.hpp"
+#include "core/cosmos_parameters.hpp"
+#include "core/modelbase/model_base.hpp"
+#include "core/registration/registration_points.hpp"
+#include "core/modelbase/view_grouping.hpp"
+#include "sim/part_catalog.hpp"
+#include "scanner/scanner_model.hpp"
+
+namespace cosmos {
+
+// The model surface's control points (ch. 6): every 3rd pixel of the 0.4 mm scans, i.e.
+// 1.2 mm apart, each with its own quadric over a 5 x 5 (1.6 mm) window. Measured on views of
+// cow, fandisk, mannequin-devil and pinion, the RMS distance from the noise-free surface to
+// the blended model surface is 0.0055-0.0074 mm at stride 2, 0.0059-0.0080 mm at stride 3,
+// 0.0076-0.0151 mm at stride 4 (all below the 0.02 mm sensor noise, but stride 4 doubles it
+// on the curved parts and loses more surface near holes and borders). Memory decides between
+// 2 and 3: over the 25 catalog parts a view has 1,820 control points on average at stride 3
+// (44 KB packed, ~280 MB for 20 parts x 320 views) and ~4,100 at stride 2 (~630 MB, over
+// the 512 MB a loaded base may take).
+RegistrationPointParameters model_surface_registration_parameters();
+
+struct ModelBaseBuildSettings {
+  int view_count = kFullViewCount;  // the first N of spread_view_subset
+  int threads = 0;                  // 0: every core
+  CosmosParameters cosmos;          // the live defaults: model views and scans must agree
+  RegistrationPointParameters registration = model_surface_registration_parameters();
+  ViewGroupingParameters grouping;
+};
+
+struct ModelBaseBuildProgress {
+  int views_done = 0;
+  int views_total = 0;
+  int parts_done = 0;  // parts [0, parts_done) have all their views
+  int parts_total = 0;
+};
+// Called on the calling thread, about ten times a second and whenever parts_done grows.
+using ModelBaseProgress = std::function<void(const ModelBaseBuildProgress&)>;
+
+// Meshes that do not load throw InputError naming the file. Views in which the scanner
+// measured nothing (a part outside the measuring range from that side) are left out.
+ModelBase build_model_base(const PartCatalog& catalog, const ScannerParameters& scanner,
+                           const ModelBaseBuildSettings& settings, const ModelBaseProgress& progress = {});
+
+}  // namespace cosmos

@@ -1,0 +1,211 @@
+// The pose search (the recognizer's fallback, part_pose_search.hpp) on simulated random-pose
+// scans of the regression catalog's parts, whose ground truth is known: on its own part it
+// lands where registration converges to the true pose, without any start from spectral
+// selection, and another part fits the scan worse.
+#include "core/recognition/part_pose_search.hpp"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <numbers>
+
+#include "core/representation/cosmos_pipeline.hpp"
+#include "core/io/model_base_file.hpp"
+#include "core/modelbase/model_surface.hpp"
+#include "core/recognition/pose_hypotheses.hpp"
+#include "core/recognition/recognizer.hpp"
+#include "sim/mesh.hpp"
+#include "sim/part_catalog.hpp"
+#include "sim/part_pose.hpp"
+#include "sim/part_scan.hpp"
+#include "tests/regression_model_base.hpp"
+
+namespace cosmos {
+namespace {
+
+class PartPoseSearch : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    base_ = std::make_unique<ModelBase>(read_model_base(testing::regression_model_base()));
+    catalog_ = std::make_unique<PartCatalog>(read_part_catalog(
+        std::filesystem::path(COSMOS_SOURCE_DIR) / "config/parts-regression.yaml"));
+  }
+  static void TearDownTestSuite() {
+    catalog_.reset();
+    base_.reset();
+  }
+
+  struct Scan {
+    RangeImage image;
+    RegistrationPoints points;
+  };
+  static Scan scan(int part, std::uint64_t seed) {
+    const std::string& name = base_->parts[static_cast<std::size_t>(part)].name;
+    const PartEntry& entry = catalog_->at(name);
+    const TriangleMesh mesh = load_mesh(entry.mesh_path, entry.size_mm);
+    Scan result;
+    result.image = scan_single_part(mesh, name, random_rotation(seed), ScannerParameters{});
+    const ViewAnalysis analysis = analyze_view(result.image, CosmosParameters{});
+    RegistrationPointParameters points = RecognitionParameters{}.scene_points;
+    points.stride_px = 2;
+    result.points = build_registration_points(result.image, points, &analysis.frames).points;
+    return result;
+  }
+
+  static inline std::unique_ptr<ModelBase> base_;
+  static inline std::unique_ptr<PartCatalog> catalog_;
+};
+
+TEST_F(PartPoseSearch, FindsTheTruePoseOfRandomPoseScansAndOtherPartsFitWorse) {
+  const RecognitionParameters parameters;
+  const int parts = static_cast<int>(base_->parts.size());
+  ASSERT_EQ(parts, 5);
+  std::vector<PartSearchModel> models;
+  for (int part = 0; part < parts; ++part)
+    models.push_back(build_part_search_model(*base_, part, parameters.field));
+  ModelSurfaces surfaces(*base_);
+  for (std::uint64_t seed = 101; seed < 111; ++seed) {
+    const int part = static_cast<int>(seed % parts);
+    const Scan scene = scan(part, seed);
+    ASSERT_GT(scene.points.size(), 100) << seed;
+    const std::vector<ViewPoseHypothesis> found =
+        search_part_pose(scene.points, *base_, part, models[static_cast<std::size_t>(part)],
+                         parameters.registration, parameters.search, surfaces);
+    ASSERT_FALSE(found.empty()) << seed;
+    const GroundTruthPose& truth = *scene.image.ground_truth;
+    const RigidTransform T_part_scene_true =
+        RigidTransform{truth.rotation, truth.translation_mm}.inverse();
+    // Some returned pose lies within what registration (ch. 6) converges from, and registered
+    // from there its view fits the scene as well as at the true pose (which is what the
+    // recognizer keeps). The coupling is nearly a surface of revolution: its poses turned a
+    // few degrees about the axis fit almost alike.
+    double nearest_deg = 180, best_fit_ratio = 1e9;
+    for (const ViewPoseHypothesis& hypothesis : found) {
+      const ModelBaseView& view = base_->views[static_cast<std::size_t>(hypothesis.view)];
+      EXPECT_EQ(view.part_index, part);
+      const RigidTransform T_scanner_part =
+          hypothesis.T_model_scene.inverse() * view.T_scanner_part;
+      nearest_deg = std::min(
+          nearest_deg, rotation_angle_between_rad(T_scanner_part.rotation, truth.rotation) * 180 /
+                           std::numbers::pi);
+      const ModelSurface model(view);
+      const RegistrationResult registered = register_views(
+          scene.points, model.points(), hypothesis.T_model_scene, parameters.registration);
+      const double fit_mm2 = score_alignment(scene.points, model.points(), registered.T_model_scene,
+                                             parameters.registration)
+                                 .truncated_mean_square_mm2;
+      const double true_fit_mm2 =
+          score_alignment(scene.points, model.points(), view.T_scanner_part * T_part_scene_true,
+                          parameters.registration)
+              .truncated_mean_square_mm2;
+      best_fit_ratio = std::min(best_fit_ratio, fit_mm2 / (true_fit_mm2 + 1e-3));
+    }
+    EXPECT_LT(nearest_deg, 12.0) << "seed " << seed << ", " << truth.part;
+    EXPECT_LT(best_fit_ratio, 1.05) << "seed " << seed << ", " << truth.part;
+    const int other = (part + 1) % parts;
+    const std::vector<ViewPoseHypothesis> elsewhere =
+        search_part_pose(scene.points, *base_, other, models[static_cast<std::size_t>(other)],
+                         parameters.registration, parameters.search, surfaces);
+    // Another part fits worse, or so badly that no pose passes the gate at all.
+    if (elsewhere.empty()) continue;
+    EXPECT_GT(elsewhere[0].truncated_mean_square_mm2, 2 * found[0].truncated_mean_square_mm2)
+        << "seed " << seed << ", " << truth.part << " against "
+        << base_->parts[static_cast<std::size_t>(other)].name;
+  }
+}
+
+// What the recognizer ranks the searched parts by: the field stages alone put the scan's own
+// part first, with a fit convincing enough to register it at once, and the other parts so
+// many times worse that they are not registered.
+TEST_F(PartPoseSearch, FieldStagesAloneTellTheScansPartFromTheOthers) {
+  const RecognitionParameters parameters;
+  const int parts = static_cast<int>(base_->parts.size());
+  std::vector<PartSearchModel> models;
+  for (int part = 0; part < parts; ++part)
+    models.push_back(build_part_search_model(*base_, part, parameters.field));
+  int ranked_first = 0, convincing = 0, others_hopeless = 0;
+  for (std::uint64_t seed = 101; seed < 111; ++seed) {
+    const int part = static_cast<int>(seed % parts);
+    const Scan scene = scan(part, seed);
+    std::vector<double> best_fit_mm2;
+    for (int candidate = 0; candidate < parts; ++candidate) {
+      const std::vector<FieldHypothesis> poses = field_pose_hypotheses(
+          scene.points, *base_, models[static_cast<std::size_t>(candidate)], parameters.search);
+      ASSERT_FALSE(poses.empty()) << seed;
+      ASSERT_LE(poses.size(), static_cast<std::size_t>(parameters.search.refined_hypotheses));
+      for (std::size_t k = 1; k < poses.size(); ++k)
+        EXPECT_LE(poses[k - 1].truncated_mean_square_mm2, poses[k].truncated_mean_square_mm2);
+      best_fit_mm2.push_back(poses.front().truncated_mean_square_mm2);
+    }
+    const double own = best_fit_mm2[static_cast<std::size_t>(part)];
+    double best_other = 1e9;
+    for (int other = 0; other < parts; ++other)
+      if (other != part)
+        best_other = std::min(best_other, best_fit_mm2[static_cast<std::size_t>(other)]);
+    ranked_first += own < best_other;
+    convincing += own <= parameters.convincing_field_fit_mm2;
+    others_hopeless += best_other > parameters.search.worst_kept_score_mm2(own);
+  }
+  // Measured: own 0.06-0.16 mm^2, the best other part 2.1-30 mm^2.
+  EXPECT_EQ(ranked_first, 10);
+  EXPECT_EQ(convincing, 10);
+  EXPECT_EQ(others_hopeless, 10);
+}
+
+// Verification's starts (turns about one selected view's axis) from a view about 30 degrees
+// from the scene's true viewing direction: aligned in the part's field, the best lands near
+// the true pose, on the part's view nearest to it.
+TEST_F(PartPoseSearch, AlignsTheStartsOfAViewFarFromTheTruthOntoTheNearestView) {
+  const RecognitionParameters parameters;
+  const int parts = static_cast<int>(base_->parts.size());
+  int near_truth = 0, scans = 0;
+  for (std::uint64_t seed = 201; seed < 211; ++seed, ++scans) {
+    const int part = static_cast<int>(seed % parts);
+    const PartSearchModel model = build_part_search_model(*base_, part, parameters.field);
+    const Scan scene = scan(part, seed);
+    const GroundTruthPose& truth = *scene.image.ground_truth;
+    const Eigen::Vector3d seen_from_part = truth.rotation.transpose() * Eigen::Vector3d::UnitZ();
+    int start_view = -1;
+    double start_offset_deg = 180;
+    for (std::size_t v = 0; v < base_->views.size(); ++v) {
+      if (base_->views[v].part_index != part) continue;
+      const double offset_deg =
+          std::acos(std::clamp(base_->views[v].direction_part.dot(seen_from_part), -1.0, 1.0)) *
+          180 / std::numbers::pi;
+      if (std::abs(offset_deg - 30) < std::abs(start_offset_deg - 30))
+        start_view = static_cast<int>(v), start_offset_deg = offset_deg;
+    }
+    ASSERT_GE(start_view, 0);
+    ASSERT_NEAR(start_offset_deg, 30, 10) << seed;
+    const ModelSurface start_surface(base_->views[static_cast<std::size_t>(start_view)]);
+    const std::vector<RigidTransform> starts = generate_pose_hypotheses(
+        scene.points, start_surface.points(), PoseFromPatches{}, {.in_plane_turns = 12});
+    const std::vector<ViewPoseHypothesis> aligned =
+        align_view_starts_in_field(scene.points, *base_, start_view, starts, model,
+                                   parameters.field_starts, parameters.search, 2);
+    ASSERT_FALSE(aligned.empty()) << seed;
+    for (std::size_t k = 1; k < aligned.size(); ++k)
+      EXPECT_LE(aligned[k - 1].truncated_mean_square_mm2, aligned[k].truncated_mean_square_mm2);
+    const ViewPoseHypothesis& best = aligned.front();
+    const ModelBaseView& view = base_->views[static_cast<std::size_t>(best.view)];
+    EXPECT_EQ(view.part_index, part);
+    const RigidTransform T_scanner_part = best.T_model_scene.inverse() * view.T_scanner_part;
+    const Eigen::Vector3d seen_from = T_scanner_part.rotation.transpose() * Eigen::Vector3d::UnitZ();
+    for (std::size_t v = 0; v < base_->views.size(); ++v) {
+      if (base_->views[v].part_index != part) continue;
+      EXPECT_GE(view.direction_part.dot(seen_from) + 1e-12,
+                base_->views[v].direction_part.dot(seen_from))
+          << "seed " << seed << ": view " << best.view << " is not the nearest";
+    }
+    const double error_deg =
+        rotation_angle_between_rad(T_scanner_part.rotation, truth.rotation) * 180 / std::numbers::pi;
+    near_truth += error_deg < 8.0;  // well inside what registration (ch. 6) converges from
+  }
+  // The 4 aligned starts came from turns 30 degrees apart about an axis 30 degrees off; the
+  // best of them was within 6 degrees for 6 of these 10 scans (the 4 others landed 40-60
+  // degrees away, or turned half-way round the nearly symmetric coupling).
+  EXPECT_GE(near_truth, scans / 2 + 1);
+}
+
+}  // namespace
+}  // namespace cosmos

@@ -1,0 +1,90 @@
+// Determinism at the wire: the same input gives the same bytes, decoding and encoding again
+// gives them back unchanged, and bytes that are not the expected type are refused, not thrown.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "realtime/lcm/lcm_codec.hpp"
+#include "realtime/lcm/lcm_message_conversion.hpp"
+#include "tests/realtime/lcm_test_messages.hpp"
+
+namespace cosmos {
+namespace {
+
+template <class Input, class Message>
+std::vector<std::uint8_t> encoded(const Input& input, Message message) {
+  to_message(input, message);
+  std::vector<std::uint8_t> bytes;
+  EXPECT_TRUE(encode_message(message, bytes));
+  return bytes;
+}
+
+template <class Message>
+std::vector<std::uint8_t> reencoded(const std::vector<std::uint8_t>& bytes) {
+  Message message{};
+  EXPECT_TRUE(decode_message(bytes.data(), bytes.size(), message));
+  std::vector<std::uint8_t> again;
+  EXPECT_TRUE(encode_message(message, again));
+  return again;
+}
+
+TEST(LcmEncoding, PoseBytesDependOnlyOnTheInput) {
+  const auto first = encoded(testing::sample_pose(4), cosmos_lcm::part_pose_t{});
+  const auto second = encoded(testing::sample_pose(4), cosmos_lcm::part_pose_t{});
+  // hash 8 + 3 int64 + name (4 + 7 + 1) + 2 int32 + int8 + reason (4 + 0 + 1) + 10 doubles
+  EXPECT_EQ(first.size(), 8U + 24U + 12U + 8U + 1U + 5U + 80U);
+  EXPECT_EQ(first, second);
+  EXPECT_EQ(reencoded<cosmos_lcm::part_pose_t>(first), first);
+  EXPECT_NE(encoded(testing::sample_pose(5), cosmos_lcm::part_pose_t{}), first);
+}
+
+TEST(LcmEncoding, QuaternionSignDoesNotChangeTheBytes) {
+  PartPose pose = testing::sample_pose(4);
+  const auto negative_w = encoded(pose, cosmos_lcm::part_pose_t{});
+  pose.rotation_cell_part.coeffs() = -pose.rotation_cell_part.coeffs();
+  EXPECT_EQ(encoded(pose, cosmos_lcm::part_pose_t{}), negative_w);
+}
+
+TEST(LcmEncoding, StatusBytesDependOnlyOnTheInput) {
+  const auto first = encoded(testing::sample_status("ok"), cosmos_lcm::cell_status_t{});
+  const auto second = encoded(testing::sample_status("ok"), cosmos_lcm::cell_status_t{});
+  // hash 8 + int64 + int8 + text (4 + 2 + 1) + 3 int64 + 3 doubles + 3 int64 + 2 int32
+  EXPECT_EQ(first.size(), 8U + 8U + 1U + 7U + 24U + 24U + 24U + 8U);
+  EXPECT_EQ(first, second);
+  EXPECT_EQ(reencoded<cosmos_lcm::cell_status_t>(first), first);
+}
+
+TEST(LcmEncoding, ProfileBytesDependOnlyOnTheInputNaNsIncluded) {
+  const auto first = encoded(testing::sample_profile(3), cosmos_lcm::range_profile_t{});
+  const auto second = encoded(testing::sample_profile(3), cosmos_lcm::range_profile_t{});
+  // hash 8 + 3 int64 + 2 doubles + int32 + 640 floats
+  EXPECT_EQ(first.size(), 8U + 24U + 16U + 4U + 4U * 640U);
+  EXPECT_EQ(first, second);
+  EXPECT_EQ(reencoded<cosmos_lcm::range_profile_t>(first), first);
+  // A reused message (the publisher keeps one) encodes a narrower profile exactly as a fresh one.
+  cosmos_lcm::range_profile_t reused{};
+  to_message(testing::sample_profile(3), reused);
+  EXPECT_EQ(encoded(testing::sample_profile(4, 100), reused),
+            encoded(testing::sample_profile(4, 100), cosmos_lcm::range_profile_t{}));
+}
+
+TEST(LcmEncoding, ForeignAndDamagedBytesAreRefused) {
+  const auto pose_bytes = encoded(testing::sample_pose(1), cosmos_lcm::part_pose_t{});
+  cosmos_lcm::range_profile_t profile{};
+  EXPECT_FALSE(decode_message(pose_bytes.data(), pose_bytes.size(), profile));  // type hash differs
+
+  cosmos_lcm::part_pose_t pose{};
+  EXPECT_FALSE(decode_message(pose_bytes.data(), pose_bytes.size() - 1, pose));  // truncated
+
+  // A corrupt width of -2 must not reach an allocation of 2^64 floats as an exception.
+  auto profile_bytes = encoded(testing::sample_profile(1, 4), cosmos_lcm::range_profile_t{});
+  const std::size_t width_offset = 8 + 24 + 16;
+  const std::uint8_t minus_two[] = {0xFF, 0xFF, 0xFF, 0xFE};  // big-endian int32
+  std::memcpy(profile_bytes.data() + width_offset, minus_two, sizeof minus_two);
+  EXPECT_FALSE(decode_message(profile_bytes.data(), profile_bytes.size(), profile));
+}
+
+}  // namespace
+}  // namespace cosmos

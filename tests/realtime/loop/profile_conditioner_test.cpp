@@ -1,0 +1,83 @@
+// Conditioning sensor profiles onto the COSMOS grid.
+#include "realtime/loop/profile_conditioner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace cosmos {
+namespace {
+
+// A sensor profile across [-128, 128) mm: a 0.2-slope ramp between x = -40 and 40 mm standing
+// 10 mm above a belt at z = 2 mm, elsewhere the belt.
+Profile sensor_profile(int points) {
+  Profile profile;
+  profile.dx_mm = 256.0 / points;
+  profile.x0_mm = -128.0 + 0.5 * profile.dx_mm;
+  profile.resize(points);
+  for (int i = 0; i < points; ++i) {
+    const double x = profile.x_mm(i);
+    profile.z_mm[i] = static_cast<float>(std::abs(x) < 40 ? 12.0 + 0.2 * x : 2.0);
+  }
+  return profile;
+}
+
+ConditioningParameters belt_at_2mm() {
+  ConditioningParameters parameters;
+  parameters.belt_height_mm = 2.0;
+  return parameters;
+}
+
+void expect_ramp(const std::vector<float>& z, const ProfileConditioner& conditioner) {
+  int part = 0, background = 0;
+  for (int k = 0; k < conditioner.width(); ++k) {
+    const double x = conditioner.x0_mm() + k * 0.4;
+    if (std::abs(x) < 39) {
+      ASSERT_FALSE(std::isnan(z[k])) << x;
+      EXPECT_NEAR(z[k], 10.0 + 0.2 * x, 1e-3) << x;
+      ++part;
+    } else if (std::abs(x) > 41) {
+      EXPECT_TRUE(std::isnan(z[k])) << x;  // the belt is background
+      ++background;
+    }
+  }
+  EXPECT_GT(part, 190);
+  EXPECT_GT(background, 420);
+}
+
+TEST(ProfileConditioner, FineSensorIsBoxAveragedOntoTheGrid) {
+  const ProfileConditioner conditioner(belt_at_2mm());
+  ASSERT_EQ(conditioner.width(), 640);
+  std::vector<float> z(conditioner.width());
+  conditioner.condition(sensor_profile(3200), z.data());
+  expect_ramp(z, conditioner);
+}
+
+TEST(ProfileConditioner, CoarseSensorIsInterpolated) {
+  const ProfileConditioner conditioner(belt_at_2mm());
+  std::vector<float> z(conditioner.width());
+  conditioner.condition(sensor_profile(320), z.data());
+  expect_ramp(z, conditioner);
+}
+
+TEST(ProfileConditioner, NeverInterpolatesAcrossAJumpOrAGap) {
+  const ProfileConditioner conditioner(belt_at_2mm());
+  Profile profile = sensor_profile(320);  // 0.8 mm samples
+  for (int i = 0; i < 320; ++i) profile.z_mm[i] = profile.x_mm(i) < 0 ? 10.0f : 20.0f;
+  profile.z_mm[250] = Profile::kNoData;
+  std::vector<float> z(conditioner.width());
+  conditioner.condition(profile, z.data());
+  for (int k = 0; k < conditioner.width(); ++k) {
+    const float value = z[k];
+    if (!std::isnan(value)) {
+      EXPECT_TRUE(value == 8.0f || value == 18.0f) << k << " " << value;
+    }
+  }
+  const double gap_x = profile.x_mm(250);
+  const int k_gap = static_cast<int>(std::lround((gap_x + 128.0) / 0.4));
+  EXPECT_TRUE(std::isnan(z[k_gap]));
+}
+
+}  // namespace
+}  // namespace cosmos
