@@ -2,13 +2,13 @@
 
 #include <cstdio>
 
-#include "sim/model_base_build/catalog_content_hash.hpp"
-#include "sim/model_base_build/model_base_builder.hpp"
-#include "sim/model_base_build/model_base_parameters.hpp"
 #include "apps/model_base_progress.hpp"
 #include "core/input_error.hpp"
 #include "core/io/model_base_file.hpp"
 #include "core/io/xxh64.hpp"
+#include "sim/model_base_build/catalog_content_hash.hpp"
+#include "sim/model_base_build/model_base_builder.hpp"
+#include "sim/model_base_build/model_base_parameters.hpp"
 
 namespace cosmos {
 namespace {

@@ -1,7 +1,6 @@
 // `cosmos catalog list [--catalog FILE]`: the parts of the catalog, and whether each mesh
 // loads, so a user adding a mesh sees at once what the cell will make of it.
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <filesystem>
 #include <iomanip>
@@ -52,14 +51,16 @@ void print_table(const std::vector<CatalogRow>& rows) {
   std::vector<std::size_t> width(header.size());
   for (std::size_t c = 0; c < header.size(); ++c) width[c] = header[c].size();
   for (const CatalogRow& row : rows) {
-    for (std::size_t c = 0; c < row.cells.size(); ++c) width[c] = std::max(width[c], row.cells[c].size());
+    for (std::size_t c = 0; c < row.cells.size(); ++c)
+      width[c] = std::max(width[c], row.cells[c].size());
   }
   const auto print_line = [&](const std::vector<std::string>& cells) {
     for (std::size_t c = 0; c < cells.size(); ++c) {
       const bool numeric = c >= 2 && c <= 4;
       const bool last = c + 1 == cells.size();
-      std::cout << (numeric ? std::right : std::left) << std::setw(last ? 0 : static_cast<int>(width[c]))
-                << cells[c] << (last ? "\n" : "  ");
+      std::cout << (numeric ? std::right : std::left)
+                << std::setw(last ? 0 : static_cast<int>(width[c])) << cells[c]
+                << (last ? "\n" : "  ");
     }
   };
   print_line(header);
@@ -73,18 +74,22 @@ void run_list(const std::string& catalog_option) {
   std::vector<CatalogRow> rows;
   for (const PartEntry& part : catalog.parts) rows.push_back(row_for(part, cache));
   print_table(rows);
-  const auto failing = std::count_if(rows.begin(), rows.end(), [](const CatalogRow& row) { return !row.loads; });
+  const auto failing =
+      std::count_if(rows.begin(), rows.end(), [](const CatalogRow& row) { return !row.loads; });
   if (failing > 0) {
-    throw InputError(catalog.file.string() + ": " + std::to_string(failing) + " of " +
-                     std::to_string(rows.size()) +
-                     " parts do not load (see the table; scripts/fetch_catalog.sh fetches the default meshes)");
+    throw InputError(
+        catalog.file.string() + ": " + std::to_string(failing) + " of " +
+        std::to_string(rows.size()) +
+        " parts do not load (see the table; scripts/fetch_catalog.sh fetches the default meshes)");
   }
 }
 
 void install(CLI::App& root) {
-  CLI::App* catalog = root.add_subcommand("catalog", "The part catalog (config/parts.yaml) and its meshes");
+  CLI::App* catalog =
+      root.add_subcommand("catalog", "The part catalog (config/parts.yaml) and its meshes");
   catalog->require_subcommand(1);
-  CLI::App* list = catalog->add_subcommand("list", "Table of the catalog's parts and whether each mesh loads");
+  CLI::App* list =
+      catalog->add_subcommand("list", "Table of the catalog's parts and whether each mesh loads");
   auto catalog_option = std::make_shared<std::string>();
   list->add_option("--catalog", *catalog_option,
                    "Part catalog YAML (default: ./config/parts.yaml, else ../../config/parts.yaml "

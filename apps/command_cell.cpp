@@ -13,8 +13,8 @@
 #include "apps/command_registry.hpp"
 #include "core/input_error.hpp"
 #include "core/recognition/recognizer.hpp"
-#include "realtime/config/cell_config.hpp"
 #include "realtime/cell/cell_runner.hpp"
+#include "realtime/config/cell_config.hpp"
 #include "realtime/config/hardware_config.hpp"
 #include "realtime/sources/hardware_source.hpp"
 #include "realtime/sources/replay_source.hpp"
@@ -122,10 +122,10 @@ void run(const CellOptions& options) {
         const PartPose& pose = recognition.pose;
         latencies_ms.push_back(pose.latency_ms);
         std::string truth;
-        const PlacedSimPart* placed =
-            simulated ? simulated->placed_part_scanned_in(recognition.first_profile,
-                                                          recognition.last_profile)
-                      : nullptr;
+        const PlacedSimPart* placed = simulated
+                                          ? simulated->placed_part_scanned_in(
+                                                recognition.first_profile, recognition.last_profile)
+                                          : nullptr;
         if (placed) {
           truth = placed->name;
           correct += pose.status == PoseStatus::kOk && pose.part_name == truth;

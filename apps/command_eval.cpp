@@ -1,8 +1,8 @@
 // `cosmos eval --modelbase FILE --catalog FILE --tests N --seed S [--noise-mm S]
 // [--unknown PART,...] [--only TEST,...] [--threads N] --out DIR`: N seeded random-pose scans
 // of the base's parts and scans of parts it does not hold, each recognized; metrics.json and
-// report.html (sim/evaluation/evaluation_report.hpp) in DIR. --only re-runs chosen tests of the same
-// plan (by the numbers the report shows), e.g. the failures of a long run.
+// report.html (sim/evaluation/evaluation_report.hpp) in DIR. --only re-runs chosen tests of the
+// same plan (by the numbers the report shows), e.g. the failures of a long run.
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <cstdio>
@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "apps/command_registry.hpp"
+#include "core/input_error.hpp"
+#include "scanner/scanner_config.hpp"
 #include "sim/evaluation/evaluation_report.hpp"
 #include "sim/evaluation/evaluation_scans.hpp"
 #include "sim/model_base_build/model_base_parameters.hpp"
-#include "core/input_error.hpp"
-#include "scanner/scanner_config.hpp"
 
 namespace cosmos::cli {
 namespace {

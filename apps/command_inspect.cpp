@@ -8,11 +8,11 @@
 #include <system_error>
 
 #include "apps/command_registry.hpp"
-#include "core/representation/cosmos_pipeline.hpp"
 #include "core/input_error.hpp"
 #include "core/io/cosmos_json.hpp"
 #include "core/io/range_image_file.hpp"
 #include "core/render/view_pictures.hpp"
+#include "core/representation/cosmos_pipeline.hpp"
 
 namespace cosmos::cli {
 namespace {

@@ -7,11 +7,11 @@
 #include <string>
 
 #include "apps/command_registry.hpp"
-#include "sim/model_base_build/model_base_parameters.hpp"
 #include "apps/recognition_json.hpp"
 #include "core/input_error.hpp"
 #include "core/io/range_image_file.hpp"
 #include "core/recognition/recognizer.hpp"
+#include "sim/model_base_build/model_base_parameters.hpp"
 
 namespace cosmos::cli {
 namespace {

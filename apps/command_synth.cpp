@@ -77,7 +77,8 @@ void install_synth(CLI::App& root) {
   CLI::App* command = root.add_subcommand(
       "synth", "Render an analytic test surface as a range image with exact ground truth");
   command->add_option("SHAPE", options->shape, "one of: " + analytic_shape_names());
-  command->add_option("--out", options->out, "output range image: .tif/.tiff or .pfm (+ <stem>.yaml)")
+  command
+      ->add_option("--out", options->out, "output range image: .tif/.tiff or .pfm (+ <stem>.yaml)")
       ->type_name("FILE");
   command->add_option("--radius-mm", options->radius_mm, "radius R; the other sizes scale with it")
       ->type_name("MM")
@@ -91,7 +92,9 @@ void install_synth(CLI::App& root) {
   command->add_option("--seed", options->seed, "seed of the noise generator")
       ->type_name("UINT")
       ->capture_default_str();
-  command->add_option("--rotate-deg", options->rotate_deg, "rotation of the part about the viewing axis")
+  command
+      ->add_option("--rotate-deg", options->rotate_deg,
+                   "rotation of the part about the viewing axis")
       ->type_name("DEG")
       ->capture_default_str();
   command->callback([options] { run_synth(*options); });

@@ -29,7 +29,8 @@ int main(int argc, char** argv) {
   CLI::App app{"COSMOS-Cell: free-form part recognition from range data (Dorai's COSMOS)"};
   app.require_subcommand(1);
   // Usage errors are one line too (CLI11 would add a "Run with --help" line).
-  app.failure_message([](const CLI::App*, const CLI::Error& error) { return std::string(error.what()) + "\n"; });
+  app.failure_message(
+      [](const CLI::App*, const CLI::Error& error) { return std::string(error.what()) + "\n"; });
   cosmos::cli::install_commands(app);
   try {
     app.parse(argc, argv);

@@ -27,7 +27,8 @@ void FrameDump::write(std::uint64_t seq, const cv::Mat& frame, const StripePeaks
     if (std::isnan(row)) continue;
     const int r = static_cast<int>(std::lround(row)) - roi_row_offset_px_;
     const int c = peaks.column_offset_px + i;
-    if (r >= 0 && r < picture_.rows && c >= 0 && c < picture_.cols) picture_.at<cv::Vec3b>(r, c) = {0, 0, 255};
+    if (r >= 0 && r < picture_.rows && c >= 0 && c < picture_.cols)
+      picture_.at<cv::Vec3b>(r, c) = {0, 0, 255};
   }
   char name[40];
   std::snprintf(name, sizeof name, "frame_%06llu.png", static_cast<unsigned long long>(seq));

@@ -1,6 +1,6 @@
-// The model-base build (sim/model_base_build/model_base_builder.hpp, what `cosmos modelbase build` runs) of
-// one regression part from the 20 icosahedron face centres (--views 20), on one thread: the
-// mesh, the simulated scans, the chapter-3 features and control points of every view, and the
+// The model-base build (sim/model_base_build/model_base_builder.hpp, what `cosmos modelbase build`
+// runs) of one regression part from the 20 icosahedron face centres (--views 20), on one thread:
+// the mesh, the simulated scans, the chapter-3 features and control points of every view, and the
 // view grouping. The time is per part; divide by `views` for a view.
 // Run: build/bench/model_base_build_bench (needs the catalog meshes, scripts/fetch_catalog.sh).
 #include <benchmark/benchmark.h>
@@ -8,9 +8,9 @@
 #include <exception>
 #include <string>
 
+#include "scanner/scanner_model.hpp"
 #include "sim/model_base_build/model_base_builder.hpp"
 #include "sim/part_catalog.hpp"
-#include "scanner/scanner_model.hpp"
 
 namespace cosmos {
 namespace {

@@ -125,10 +125,9 @@ void BM_PartSupport(benchmark::State& state) {
   const RecognitionParameters& parameters = fixture->parameters();
   over_scans(state, *fixture, [&](const TestScan& scan) {
     ModelSurfaces surfaces(fixture->base());  // as a recognition's first measurement: cold
-    benchmark::DoNotOptimize(measure_part_support(scan.scene_points, fixture->base(),
-                                                  scan.chosen_view, scan.chosen_registered,
-                                                  parameters.registration, parameters.support,
-                                                  surfaces));
+    benchmark::DoNotOptimize(measure_part_support(
+        scan.scene_points, fixture->base(), scan.chosen_view, scan.chosen_registered,
+        parameters.registration, parameters.support, surfaces));
   });
 }
 BENCHMARK(BM_PartSupport)->Unit(benchmark::kMillisecond)->Iterations(50);

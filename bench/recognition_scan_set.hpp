@@ -1,6 +1,7 @@
 #pragma once
 // The recognition bench's scan set: the first kScans test scans `cosmos eval --seed 11` makes
-// of the regression catalog (sim/evaluation/evaluation_scans.hpp), against the regression model base
+// of the regression catalog (sim/evaluation/evaluation_scans.hpp), against the regression model
+// base
 // ($COSMOS_BENCH_MODEL_BASE, default <build>/test-data/regression-80.cmb, which ctest's
 // build_regression_model_base makes; catalog $COSMOS_BENCH_CATALOG, default
 // config/parts-regression.yaml), each with the output of every recognition stage computed
@@ -20,14 +21,14 @@
 #include <string>
 #include <vector>
 
-#include "sim/evaluation/evaluation_scans.hpp"
-#include "core/representation/cosmos_pipeline.hpp"
 #include "core/io/model_base_file.hpp"
 #include "core/modelbase/model_surface.hpp"
 #include "core/recognition/pose_hypotheses.hpp"
 #include "core/recognition/recognizer.hpp"
-#include "sim/part_catalog.hpp"
+#include "core/representation/cosmos_pipeline.hpp"
 #include "scanner/scanner_model.hpp"
+#include "sim/evaluation/evaluation_scans.hpp"
+#include "sim/part_catalog.hpp"
 
 namespace cosmos::bench {
 
@@ -145,10 +146,9 @@ class RecognitionScanSet {
         generate_pose_hypotheses(scan.scene_points, selected.model, selected.from_patches,
                                  {.in_plane_turns = parameters_.in_plane_hypotheses});
     const int part = base_.views[static_cast<std::size_t>(selected.view)].part_index;
-    return align_view_starts_in_field(scan.scene_points, base_, selected.view, generated,
-                                      recognizer_->part_search_model(part),
-                                      parameters_.field_starts, parameters_.search,
-                                      parameters_.registered_hypotheses);
+    return align_view_starts_in_field(
+        scan.scene_points, base_, selected.view, generated, recognizer_->part_search_model(part),
+        parameters_.field_starts, parameters_.search, parameters_.registered_hypotheses);
   }
   const Recognizer& recognizer() const { return *recognizer_; }
   const std::vector<TestScan>& scans() const { return scans_; }

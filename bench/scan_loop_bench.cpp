@@ -40,16 +40,16 @@
 #include "core/recognition/recognizer.hpp"
 #include "firmware_bridge/kernel_timestamp.hpp"
 #include "realtime/cell/cell_runner.hpp"
-#include "realtime/rt/latency_histogram.hpp"
-#include "realtime/lcm/memory_publisher.hpp"
 #include "realtime/cell/part_recognition.hpp"
-#include "realtime/loop/profile_conditioner.hpp"
+#include "realtime/lcm/memory_publisher.hpp"
 #include "realtime/lcm/profile_log_writer.hpp"
-#include "realtime/sources/replay_source.hpp"
+#include "realtime/loop/profile_conditioner.hpp"
 #include "realtime/loop/scan_loop.hpp"
-#include "sim/source/simulated_source.hpp"
-#include "sim/part_catalog.hpp"
+#include "realtime/rt/latency_histogram.hpp"
+#include "realtime/sources/replay_source.hpp"
 #include "scanner/scanner_model.hpp"
+#include "sim/part_catalog.hpp"
+#include "sim/source/simulated_source.hpp"
 
 namespace cosmos {
 namespace {
@@ -59,7 +59,7 @@ namespace fs = std::filesystem;
 // Parts in the pre-generated streams: enough part rows, part ends and empty belt between them
 // for a p99.9 over a few thousand profiles, few enough to generate 3200-point streams quickly.
 constexpr int kStreamParts = 5;
-constexpr int kCellParts = 12;  // unpaced whole-cell run: enough parts for a stable median
+constexpr int kCellParts = 12;   // unpaced whole-cell run: enough parts for a stable median
 constexpr int kPacedParts = 32;  // paced run: real time, about 5 s of belt
 constexpr std::uint64_t kSeed = 7;
 // Profiles timed per ScanLoopProcess run: about five passes over the 5-part stream, so p99.9
@@ -351,11 +351,10 @@ void PacedReplayLatency(benchmark::State& state) {
     state.SkipWithError(recognition.error.c_str());
     return;
   }
-  const fs::path log_path = fs::temp_directory_path() /
-                            ("cosmos-bench-replay-" + std::to_string(::getpid()) + ".lcmlog");
+  const fs::path log_path =
+      fs::temp_directory_path() / ("cosmos-bench-replay-" + std::to_string(::getpid()) + ".lcmlog");
   try {
-    SimulatedSource source(bench_catalog(), ScannerParameters{},
-                           source_settings(kPacedParts));
+    SimulatedSource source(bench_catalog(), ScannerParameters{}, source_settings(kPacedParts));
     if (source.start() != SourceStatus::kOk) {
       state.SkipWithError(std::string(source.last_error()).c_str());
       return;

@@ -102,10 +102,13 @@ BENCHMARK(ProfileMode)->Arg(640)->Arg(1280)->Unit(benchmark::kMicrosecond);
 const bool kPartBenchmarksRegistered = [] {
   if (!bench_catalog()) return false;
   for (const PartEntry& part : bench_catalog()->parts) {
-    benchmark::RegisterBenchmark(("ProfileModePart/" + part.name).c_str(), [name = part.name](benchmark::State& state) {
-      const std::optional<TriangleMesh> mesh = load_part_mesh(name);
-      scan_profiles(state, ScannerParameters{}, ScanMode::kProfile, "profiles_per_s", mesh, name);
-    })->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("ProfileModePart/" + part.name).c_str(),
+                                 [name = part.name](benchmark::State& state) {
+                                   const std::optional<TriangleMesh> mesh = load_part_mesh(name);
+                                   scan_profiles(state, ScannerParameters{}, ScanMode::kProfile,
+                                                 "profiles_per_s", mesh, name);
+                                 })
+        ->Unit(benchmark::kMicrosecond);
   }
   return true;
 }();

@@ -6,10 +6,10 @@
 namespace cosmos {
 
 struct SurfaceFitParameters {
-  int window_size = 5;            // odd; §3.5.1 uses 5x5
-  bool bicubic = true;            // bicubic z(x, y) (§3.5.1); false: biquadratic
-  double depth_jump_mm = 3.0;     // |dz| per pixel step above which samples lie across an edge
-  int min_samples = 12;           // fewer valid same-side samples: the pixel is invalid
+  int window_size = 5;         // odd; §3.5.1 uses 5x5
+  bool bicubic = true;         // bicubic z(x, y) (§3.5.1); false: biquadratic
+  double depth_jump_mm = 3.0;  // |dz| per pixel step above which samples lie across an edge
+  int min_samples = 12;        // fewer valid same-side samples: the pixel is invalid
   // RMS residual (mm) above which a window is taken to straddle a crease (an orientation
   // discontinuity); the pixel is then fitted from the shifted window, still containing it,
   // that fits best. Well above sensor noise (~0.02 mm); 0 disables.
@@ -33,7 +33,7 @@ struct ShapeIndexParameters {
   // Eqs. 3.21-3.22: |grad S_I| = 1 / (pi * sqrt(k1^2 + k2^2)). Pixels more sensitive than
   // this (in mm, i.e. S_I per 1/mm) are planar: here curvatures below ~1/157 mm^-1.
   double planar_sensitivity_mm = 50.0;
-  double max_tilt_deg = 85.0;     // steeper normals are unreliable (grazing data): excluded
+  double max_tilt_deg = 85.0;  // steeper normals are unreliable (grazing data): excluded
 };
 
 struct SegmentationParameters {
@@ -46,7 +46,7 @@ struct SegmentationParameters {
   // Above this the patches would mix shape categories (a cap with a saddle); views whose
   // patches are kept apart by planar bands or edges cannot reach max_patches anyway.
   double adaptive_max_limit = 0.5;
-  int boundary_refinement_passes = 8;  // §3.5.2 post-processing of boundary pixels (at most)
+  int boundary_refinement_passes = 8;     // §3.5.2 post-processing of boundary pixels (at most)
   double min_patch_area_fraction = 0.03;  // patches below this share of the view fold away
   // Planar pixels join one planar patch only when their normals agree this well, so the faces
   // of a polyhedron meeting at a crease stay separate patches (§3.2.2).

@@ -15,7 +15,8 @@ template <class Pixel>
 class ColumnReader {
  public:
   ColumnReader(const cv::Mat& frame, int column)
-      : base_(frame.data + static_cast<std::size_t>(column) * sizeof(Pixel)), step_(frame.step[0]) {}
+      : base_(frame.data + static_cast<std::size_t>(column) * sizeof(Pixel)),
+        step_(frame.step[0]) {}
   int operator()(int row) const {
     return *reinterpret_cast<const Pixel*>(base_ + static_cast<std::size_t>(row) * step_);
   }
@@ -71,7 +72,8 @@ float centre_of_gravity(const ColumnReader<Pixel>& column, int rows, int run_fir
     weight_sum += weight;
     weighted_row_sum += weight * r;
   }
-  return static_cast<float>(static_cast<double>(weighted_row_sum) / static_cast<double>(weight_sum));
+  return static_cast<float>(static_cast<double>(weighted_row_sum) /
+                            static_cast<double>(weight_sum));
 }
 
 // Sub-pixel offset of the vertex of the parabola through (-1, ln a), (0, ln b), (1, ln c):
@@ -141,8 +143,9 @@ void LaserStripeExtractor::extract_typed(const cv::Mat& frame, const FrameRoi& r
 
   const StripeExtractionParameters& p = parameters_;
   const int rows = frame.rows;
-  const int saturation =
-      p.saturation_level > 0 ? p.saturation_level : static_cast<int>(std::numeric_limits<Pixel>::max());
+  const int saturation = p.saturation_level > 0
+                             ? p.saturation_level
+                             : static_cast<int>(std::numeric_limits<Pixel>::max());
   const int min_peak = std::max(p.min_peak_intensity, p.threshold + 1);
   const int half_width = std::max(p.window_half_width_px, 1);
   int valid = 0;

@@ -76,7 +76,8 @@ class LaserStripeExtractor {
 
   // Finds the stripe in every column of `frame`. `peaks` is resized to frame.cols (allocates
   // only when wider than ever before). Never throws.
-  StripeExtractionStatus extract(const cv::Mat& frame, const FrameRoi& roi, StripePeaks& peaks) noexcept;
+  StripeExtractionStatus extract(const cv::Mat& frame, const FrameRoi& roi,
+                                 StripePeaks& peaks) noexcept;
 
   const StripeExtractionParameters& parameters() const { return parameters_; }
 

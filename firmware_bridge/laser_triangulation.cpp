@@ -12,7 +12,8 @@ namespace {
 constexpr float kNoPoint = std::numeric_limits<float>::quiet_NaN();
 }  // namespace
 
-LaserTriangulator::LaserTriangulator(const TriangulationGeometry& geometry, int first_row_px, int row_count)
+LaserTriangulator::LaserTriangulator(const TriangulationGeometry& geometry, int first_row_px,
+                                     int row_count)
     : geometry_(geometry), first_row_px_(first_row_px), row_count_(std::max(row_count, 1)) {
   const LaserPlane& plane = geometry_.laser_plane;
   plane_normal_camera_ = geometry_.R_scanner_camera.transpose() * plane.normal_scanner;
@@ -32,9 +33,10 @@ LaserTriangulator::LaserTriangulator(const TriangulationGeometry& geometry, int 
   cv::Mat normalized_points;
   // Iterated to convergence: OpenCV's default of 5 fixed-point steps is enough for mild
   // distortion but not for a strong (wide-angle) lens, and the table is built only once.
-  cv::undistortPoints(image_points, normalized_points, geometry_.camera.camera_matrix(),
-                      geometry_.camera.distortion_coefficients(), cv::noArray(), cv::noArray(),
-                      cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-10));
+  cv::undistortPoints(
+      image_points, normalized_points, geometry_.camera.camera_matrix(),
+      geometry_.camera.distortion_coefficients(), cv::noArray(), cv::noArray(),
+      cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-10));
   for (std::size_t i = 0; i < size; ++i) {
     const auto n = normalized_points.at<cv::Vec2d>(static_cast<int>(i));
     table_[i] = {static_cast<float>(n[0]), static_cast<float>(n[1])};
@@ -50,7 +52,8 @@ void LaserTriangulator::reserve(int max_columns, TriangulatedStripe& stripe) con
   stripe.z_mm.reserve(n);
 }
 
-void LaserTriangulator::triangulate(const StripePeaks& peaks, TriangulatedStripe& stripe) const noexcept {
+void LaserTriangulator::triangulate(const StripePeaks& peaks,
+                                    TriangulatedStripe& stripe) const noexcept {
   const auto width = static_cast<std::size_t>(peaks.width());
   stripe.x_mm.resize(width);
   stripe.z_mm.resize(width);
@@ -82,8 +85,10 @@ void LaserTriangulator::triangulate(const StripePeaks& peaks, TriangulatedStripe
     if (!(std::abs(denominator) > 1e-12)) continue;
     const double s = plane_distance_mm_ / denominator;
     if (!(s > 0.0)) continue;
-    const auto x = static_cast<float>(t_scanner_camera_mm.x() + s * R_scanner_camera.row(0).dot(ray_camera));
-    const auto z = static_cast<float>(t_scanner_camera_mm.z() + s * R_scanner_camera.row(2).dot(ray_camera));
+    const auto x =
+        static_cast<float>(t_scanner_camera_mm.x() + s * R_scanner_camera.row(0).dot(ray_camera));
+    const auto z =
+        static_cast<float>(t_scanner_camera_mm.z() + s * R_scanner_camera.row(2).dot(ray_camera));
     stripe.x_mm[i] = x;
     stripe.z_mm[i] = z;
     ++valid;

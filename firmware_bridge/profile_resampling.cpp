@@ -28,9 +28,10 @@ class ProfileWriter {
     const auto last = std::min<std::ptrdiff_t>(
         width_ - 1, static_cast<std::ptrdiff_t>(std::floor(grid_position(xb) + kGridTolerance)));
     for (std::ptrdiff_t i = first; i <= last; ++i) {
-      const double t = length > 0.0
-                           ? std::clamp((profile_.x_mm(static_cast<std::size_t>(i)) - xa) / length, 0.0, 1.0)
-                           : 0.0;
+      const double t =
+          length > 0.0
+              ? std::clamp((profile_.x_mm(static_cast<std::size_t>(i)) - xa) / length, 0.0, 1.0)
+              : 0.0;
       write(i, za + t * (zb - za));
     }
   }
@@ -75,7 +76,8 @@ int resample_to_profile(std::span<const float> x_mm, std::span<const float> z_mm
     if (std::isnan(x) || std::isnan(z)) continue;
     bool joined = false;
     if (have_previous) {
-      joined = std::abs(x - previous_x) <= max_gap_mm && std::abs(z - previous_z) <= parameters.max_z_jump_mm;
+      joined = std::abs(x - previous_x) <= max_gap_mm &&
+               std::abs(z - previous_z) <= parameters.max_z_jump_mm;
       if (joined) {
         writer.segment(previous_x, previous_z, x, z);
       } else if (!previous_joined) {

@@ -41,10 +41,13 @@ struct NumericKey {
   int& (*integer)(ScannerParameters&);
 };
 
-#define COSMOS_REAL(key, field, low, high, low_open, high_open) \
-  NumericKey { key, {low, high, low_open, high_open}, [](ScannerParameters& p) -> double& { return p.field; }, nullptr }
-#define COSMOS_INTEGER(key, field, low, high)                                                   \
-  NumericKey {                                                                                  \
+#define COSMOS_REAL(key, field, low, high, low_open, high_open)          \
+  NumericKey {                                                           \
+    key, {low, high, low_open, high_open},                               \
+        [](ScannerParameters& p) -> double& { return p.field; }, nullptr \
+  }
+#define COSMOS_INTEGER(key, field, low, high)                                                     \
+  NumericKey {                                                                                    \
     key, {low, high, false, false}, nullptr, [](ScannerParameters& p) -> int& { return p.field; } \
   }
 
@@ -73,7 +76,8 @@ const std::vector<NumericKey>& numeric_keys() {
       COSMOS_REAL("camera.ambient_level", camera.ambient_level, 0.0, 1.0, false, true),
       COSMOS_REAL("camera.read_noise_level", camera.read_noise_level, 0.0, 0.5, false, false),
       COSMOS_REAL("camera.speckle_contrast", camera.speckle_contrast, 0.0, 1.0, false, false),
-      COSMOS_REAL("camera.full_well_electrons", camera.full_well_electrons, 100.0, 1e7, false, false),
+      COSMOS_REAL("camera.full_well_electrons", camera.full_well_electrons, 100.0, 1e7, false,
+                  false),
       COSMOS_REAL("camera.threshold_level", camera.threshold_level, 0.0, 1.0, true, true),
       COSMOS_INTEGER("camera.background_frames", camera.background_frames, 1, 64),
   };
@@ -85,7 +89,8 @@ const std::vector<NumericKey>& numeric_keys() {
 
 // The reason a value is out of range, or "" when it is acceptable. Cross-field rules live
 // here too, reported at the key that breaks them.
-std::string range_problem(const NumericKey& key, double value, const ScannerParameters& parameters) {
+std::string range_problem(const NumericKey& key, double value,
+                          const ScannerParameters& parameters) {
   if (!std::isfinite(value) || !key.range.contains(value)) return "must be in " + key.range.text();
   const std::string name = key.name;
   if (name == "camera.bit_depth" && value != 8 && value != 10 && value != 12 && value != 16) {
@@ -105,7 +110,8 @@ const NumericKey* find_key(const std::string& name) {
 }
 
 void read_value(const YamlInputErrors& errors, const std::string& name, const YAML::Node& value,
-                ScannerParameters& parameters, std::vector<std::pair<const NumericKey*, YAML::Node>>& numbers) {
+                ScannerParameters& parameters,
+                std::vector<std::pair<const NumericKey*, YAML::Node>>& numbers) {
   const std::string key = "scanner." + name;
   if (name == "laser_model") {
     const std::string text = value.IsScalar() ? value.Scalar() : "";
@@ -151,13 +157,17 @@ void read_value(const YamlInputErrors& errors, const std::string& name, const YA
 }
 
 void read_map(const YamlInputErrors& errors, const YAML::Node& map, const std::string& prefix,
-              ScannerParameters& parameters, std::vector<std::pair<const NumericKey*, YAML::Node>>& numbers) {
+              ScannerParameters& parameters,
+              std::vector<std::pair<const NumericKey*, YAML::Node>>& numbers) {
   std::set<std::string> seen;
   for (const auto& item : map) {
-    const std::string name = prefix + (item.first.IsScalar() ? item.first.Scalar() : describe_yaml_node(item.first));
+    const std::string name =
+        prefix + (item.first.IsScalar() ? item.first.Scalar() : describe_yaml_node(item.first));
     if (!seen.insert(name).second) errors.fail(item.first, "scanner." + name, "key given twice");
     if (prefix.empty() && name == "camera") {
-      if (!item.second.IsMap()) errors.fail(item.second, "scanner.camera", "expected a map, got " + describe_yaml_node(item.second));
+      if (!item.second.IsMap())
+        errors.fail(item.second, "scanner.camera",
+                    "expected a map, got " + describe_yaml_node(item.second));
       read_map(errors, item.second, "camera.", parameters, numbers);
       continue;
     }
@@ -167,15 +177,19 @@ void read_map(const YamlInputErrors& errors, const YAML::Node& map, const std::s
 
 }  // namespace
 
-ScannerParameters read_scanner_config(const fs::path& yaml_path, const ScannerParameters& defaults) {
+ScannerParameters read_scanner_config(const fs::path& yaml_path,
+                                      const ScannerParameters& defaults) {
   const YamlInputErrors errors(yaml_path);
   const YAML::Node root = errors.load_file("config file");
   ScannerParameters parameters = defaults;
   if (root.IsNull()) return parameters;
-  if (!root.IsMap()) errors.fail_line(root.Mark().line, "scanner", "the config must be a map of sections");
+  if (!root.IsMap())
+    errors.fail_line(root.Mark().line, "scanner", "the config must be a map of sections");
   const YAML::Node section = root["scanner"];
   if (!section.IsDefined() || section.IsNull()) return parameters;
-  if (!section.IsMap()) errors.fail(section, "scanner", "expected a map of settings, got " + describe_yaml_node(section));
+  if (!section.IsMap())
+    errors.fail(section, "scanner",
+                "expected a map of settings, got " + describe_yaml_node(section));
   std::vector<std::pair<const NumericKey*, YAML::Node>> numbers;
   read_map(errors, section, "", parameters, numbers);
   // Ranges are checked once every key is read: cross-field rules see the final values.
@@ -183,7 +197,8 @@ ScannerParameters read_scanner_config(const fs::path& yaml_path, const ScannerPa
     ScannerParameters copy = parameters;
     const double value = key->integer != nullptr ? key->integer(copy) : key->real(copy);
     const std::string problem = range_problem(*key, value, parameters);
-    if (!problem.empty()) errors.fail(node, std::string("scanner.") + key->name, problem + ", got " + node.Scalar());
+    if (!problem.empty())
+      errors.fail(node, std::string("scanner.") + key->name, problem + ", got " + node.Scalar());
   }
   return parameters;
 }

@@ -32,15 +32,15 @@ enum class LaserModel : std::uint8_t { kFan, kParallel };
 // Camera mode: how the sensor image of the stripe is drawn. Levels are fractions of the
 // sensor's full scale, so they mean the same for 8-, 10-, 12- and 16-bit frames.
 struct CameraFrameParameters {
-  int bit_depth = 8;                   // 8: CV_8U frames; 10, 12, 16: CV_16U words
-  double stripe_sigma_px = 1.5;        // Gaussian stripe profile across the rows
-  double stripe_peak_level = 0.85;     // peak at normal incidence on a white (reflectivity 1) surface
-  double ambient_level = 0.04;         // uniform ambient light
-  double read_noise_level = 0.006;     // σ of the dark and read noise on every pixel
-  double speckle_contrast = 0.1;       // σ of the multiplicative laser speckle on stripe pixels
-  double full_well_electrons = 5000.0; // full scale in electrons: sets the shot noise
-  double threshold_level = 0.08;       // extraction threshold (above ambient + 4 σ read noise)
-  int background_frames = 4;           // pre-rendered ambient + read-noise frames (see renderer)
+  int bit_depth = 8;                // 8: CV_8U frames; 10, 12, 16: CV_16U words
+  double stripe_sigma_px = 1.5;     // Gaussian stripe profile across the rows
+  double stripe_peak_level = 0.85;  // peak at normal incidence on a white (reflectivity 1) surface
+  double ambient_level = 0.04;      // uniform ambient light
+  double read_noise_level = 0.006;  // σ of the dark and read noise on every pixel
+  double speckle_contrast = 0.1;    // σ of the multiplicative laser speckle on stripe pixels
+  double full_well_electrons = 5000.0;  // full scale in electrons: sets the shot noise
+  double threshold_level = 0.08;        // extraction threshold (above ambient + 4 σ read noise)
+  int background_frames = 4;            // pre-rendered ambient + read-noise frames (see renderer)
 };
 
 struct ScannerParameters {
@@ -51,11 +51,11 @@ struct ScannerParameters {
 
   // Optical geometry.
   double triangulation_angle_deg = 30.0;
-  double camera_height_mm = 600.0;     // camera centre above the belt
-  double laser_height_mm = 600.0;      // fan source above the belt centre
+  double camera_height_mm = 600.0;  // camera centre above the belt
+  double laser_height_mm = 600.0;   // fan source above the belt centre
   LaserModel laser_model = LaserModel::kFan;
-  double field_of_view_mm = 256.0;     // across the belt, at belt height
-  int points_per_profile = 640;        // W: profile samples across the field of view
+  double field_of_view_mm = 256.0;  // across the belt, at belt height
+  int points_per_profile = 640;     // W: profile samples across the field of view
 
   // Sensor: the camera model used for camera-mode frames and for the measuring range.
   int sensor_width_px = 1280;

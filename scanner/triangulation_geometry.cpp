@@ -13,7 +13,9 @@ cv::Matx33d CameraIntrinsics::camera_matrix() const {
   return {fx_px, 0.0, cx_px, 0.0, fy_px, cy_px, 0.0, 0.0, 1.0};
 }
 
-cv::Matx<double, 1, 5> CameraIntrinsics::distortion_coefficients() const { return {k1, k2, p1, p2, k3}; }
+cv::Matx<double, 1, 5> CameraIntrinsics::distortion_coefficients() const {
+  return {k1, k2, p1, p2, k3};
+}
 
 // The forward model of cv::projectPoints (radial k1, k2, k3 and tangential p1, p2), written
 // out so that projecting one point needs no OpenCV call and no allocation.
@@ -29,15 +31,17 @@ Eigen::Vector2d CameraIntrinsics::distort_and_project(const Eigen::Vector2d& nor
 
 bool TriangulationGeometry::project_to_image(const Eigen::Vector3d& p_scanner_mm,
                                              Eigen::Vector2d& uv_px) const noexcept {
-  const Eigen::Vector3d p_camera = R_scanner_camera.transpose() * (p_scanner_mm - t_scanner_camera_mm);
+  const Eigen::Vector3d p_camera =
+      R_scanner_camera.transpose() * (p_scanner_mm - t_scanner_camera_mm);
   if (!(p_camera.z() > 0.0)) return false;
   uv_px = camera.distort_and_project(p_camera.head<2>() / p_camera.z());
   return true;
 }
 
-bool TriangulationGeometry::normalized_ray_to_laser_plane(const Eigen::Vector2d& normalized,
-                                                          Eigen::Vector3d& p_scanner_mm) const noexcept {
-  const Eigen::Vector3d ray_scanner = R_scanner_camera * Eigen::Vector3d(normalized.x(), normalized.y(), 1.0);
+bool TriangulationGeometry::normalized_ray_to_laser_plane(
+    const Eigen::Vector2d& normalized, Eigen::Vector3d& p_scanner_mm) const noexcept {
+  const Eigen::Vector3d ray_scanner =
+      R_scanner_camera * Eigen::Vector3d(normalized.x(), normalized.y(), 1.0);
   const double denominator = laser_plane.normal_scanner.dot(ray_scanner);
   // A ray grazing the sheet would put the point at a huge, meaningless distance.
   if (std::abs(denominator) < 1e-12) return false;
@@ -54,9 +58,10 @@ bool TriangulationGeometry::image_to_laser_plane(const Eigen::Vector2d& uv_px,
   cv::Mat normalized_point;
   // OpenCV's default is 5 fixed-point iterations, short of convergence for strong
   // distortion; iterate until the re-projection error is negligible instead.
-  cv::undistortPoints(image_point, normalized_point, camera.camera_matrix(), camera.distortion_coefficients(),
-                      cv::noArray(), cv::noArray(),
-                      cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-10));
+  cv::undistortPoints(
+      image_point, normalized_point, camera.camera_matrix(), camera.distortion_coefficients(),
+      cv::noArray(), cv::noArray(),
+      cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-10));
   const auto n = normalized_point.at<cv::Vec2d>(0, 0);
   return normalized_ray_to_laser_plane({n[0], n[1]}, p_scanner_mm);
 }
@@ -90,7 +95,8 @@ TriangulationGeometry make_triangulation_geometry(const TriangulationDesign& des
 
   // The optical axis meets the belt line at the principal point; place the ROI around it.
   const int roi_height = std::clamp(design.roi_height_px, 1, design.sensor_height_px);
-  const auto belt_row_in_roi = static_cast<int>(std::lround(design.belt_row_fraction_of_roi * roi_height));
+  const auto belt_row_in_roi =
+      static_cast<int>(std::lround(design.belt_row_fraction_of_roi * roi_height));
   g.roi_height_px = roi_height;
   g.roi_row_offset_px = std::clamp(static_cast<int>(std::lround(k.cy_px)) - belt_row_in_roi, 0,
                                    design.sensor_height_px - roi_height);

@@ -29,7 +29,9 @@ struct CameraIntrinsics {
   int width_px = 1280;
   int height_px = 1024;
 
-  bool has_distortion() const { return k1 != 0.0 || k2 != 0.0 || p1 != 0.0 || p2 != 0.0 || k3 != 0.0; }
+  bool has_distortion() const {
+    return k1 != 0.0 || k2 != 0.0 || p1 != 0.0 || p2 != 0.0 || k3 != 0.0;
+  }
   cv::Matx33d camera_matrix() const;
   cv::Matx<double, 1, 5> distortion_coefficients() const;
   // Normalized (undistorted) camera coordinates (x/z, y/z) → distorted pixel (u, v).

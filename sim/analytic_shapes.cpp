@@ -34,8 +34,8 @@ ShapePoint graph_point(double z_mm, double fx, double fy, double fxx, double fxy
   const double w = 1.0 + fx * fx + fy * fy;
   point.normal = Eigen::Vector3d(-fx, -fy, 1.0) / std::sqrt(w);
   const double gaussian = (fxx * fyy - fxy * fxy) / (w * w);
-  const double mean =
-      -((1.0 + fy * fy) * fxx - 2.0 * fx * fy * fxy + (1.0 + fx * fx) * fyy) / (2.0 * std::pow(w, 1.5));
+  const double mean = -((1.0 + fy * fy) * fxx - 2.0 * fx * fy * fxy + (1.0 + fx * fx) * fyy) /
+                      (2.0 * std::pow(w, 1.5));
   const double spread = std::sqrt(std::max(mean * mean - gaussian, 0.0));
   point.kappa1 = mean + spread;
   point.kappa2 = mean - spread;
@@ -179,15 +179,24 @@ std::array<Eigen::Vector3d, 3> box_corner_shape_normals() {
 ShapePoint analytic_shape_point(AnalyticShape shape, const AnalyticDimensions& dimensions,
                                 double x_mm, double y_mm) {
   switch (shape) {
-    case AnalyticShape::sphere: return sphere_point(dimensions.radius_mm, x_mm, y_mm, false);
-    case AnalyticShape::cup: return sphere_point(dimensions.radius_mm, x_mm, y_mm, true);
-    case AnalyticShape::cylinder: return cylinder_point(dimensions, x_mm, y_mm);
-    case AnalyticShape::saddle: return saddle_point(dimensions, x_mm, y_mm);
-    case AnalyticShape::plane: return plane_point(dimensions, x_mm, y_mm);
-    case AnalyticShape::torus: return torus_point(dimensions, x_mm, y_mm);
-    case AnalyticShape::ellipsoid: return ellipsoid_point(dimensions, x_mm, y_mm);
-    case AnalyticShape::capsule: return capsule_point(dimensions, x_mm, y_mm);
-    case AnalyticShape::box_corner: return box_corner_point(dimensions, x_mm, y_mm);
+    case AnalyticShape::sphere:
+      return sphere_point(dimensions.radius_mm, x_mm, y_mm, false);
+    case AnalyticShape::cup:
+      return sphere_point(dimensions.radius_mm, x_mm, y_mm, true);
+    case AnalyticShape::cylinder:
+      return cylinder_point(dimensions, x_mm, y_mm);
+    case AnalyticShape::saddle:
+      return saddle_point(dimensions, x_mm, y_mm);
+    case AnalyticShape::plane:
+      return plane_point(dimensions, x_mm, y_mm);
+    case AnalyticShape::torus:
+      return torus_point(dimensions, x_mm, y_mm);
+    case AnalyticShape::ellipsoid:
+      return ellipsoid_point(dimensions, x_mm, y_mm);
+    case AnalyticShape::capsule:
+      return capsule_point(dimensions, x_mm, y_mm);
+    case AnalyticShape::box_corner:
+      return box_corner_point(dimensions, x_mm, y_mm);
   }
   return {};
 }
@@ -198,14 +207,20 @@ double analytic_silhouette_extent_mm(AnalyticShape shape, const AnalyticDimensio
   const double ay = std::abs(direction.y());
   switch (shape) {
     case AnalyticShape::sphere:
-    case AnalyticShape::cup: return d.radius_mm;
-    case AnalyticShape::cylinder: return ax * d.radius_mm + ay * 0.5 * d.cylinder_length_mm;
-    case AnalyticShape::saddle: return (ax + ay) * d.saddle_half_width_mm;
-    case AnalyticShape::plane: return (ax + ay) * d.plane_half_width_mm;
-    case AnalyticShape::torus: return d.torus_major_radius_mm + d.torus_minor_radius_mm;
+    case AnalyticShape::cup:
+      return d.radius_mm;
+    case AnalyticShape::cylinder:
+      return ax * d.radius_mm + ay * 0.5 * d.cylinder_length_mm;
+    case AnalyticShape::saddle:
+      return (ax + ay) * d.saddle_half_width_mm;
+    case AnalyticShape::plane:
+      return (ax + ay) * d.plane_half_width_mm;
+    case AnalyticShape::torus:
+      return d.torus_major_radius_mm + d.torus_minor_radius_mm;
     case AnalyticShape::ellipsoid:
       return std::hypot(ax * d.ellipsoid_semi_axes_mm.x(), ay * d.ellipsoid_semi_axes_mm.y());
-    case AnalyticShape::capsule: return ax * 0.5 * d.capsule_length_mm + d.capsule_radius_mm;
+    case AnalyticShape::capsule:
+      return ax * 0.5 * d.capsule_length_mm + d.capsule_radius_mm;
     case AnalyticShape::box_corner: {
       // The hexagon's vertices are +-e times the faces' horizontal normal parts.
       double extent = 0.0;

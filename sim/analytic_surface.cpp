@@ -13,10 +13,10 @@ namespace cosmos {
 namespace {
 
 constexpr std::pair<const char*, AnalyticShape> kShapeNames[] = {
-    {"sphere", AnalyticShape::sphere},       {"cup", AnalyticShape::cup},
-    {"cylinder", AnalyticShape::cylinder},   {"saddle", AnalyticShape::saddle},
-    {"plane", AnalyticShape::plane},         {"torus", AnalyticShape::torus},
-    {"ellipsoid", AnalyticShape::ellipsoid}, {"capsule", AnalyticShape::capsule},
+    {"sphere", AnalyticShape::sphere},         {"cup", AnalyticShape::cup},
+    {"cylinder", AnalyticShape::cylinder},     {"saddle", AnalyticShape::saddle},
+    {"plane", AnalyticShape::plane},           {"torus", AnalyticShape::torus},
+    {"ellipsoid", AnalyticShape::ellipsoid},   {"capsule", AnalyticShape::capsule},
     {"box-corner", AnalyticShape::box_corner},
 };
 
@@ -35,7 +35,8 @@ double value_or(const std::optional<double>& value, double fallback) {
 
 class FieldCheck {
  public:
-  explicit FieldCheck(AnalyticShape shape) : prefix_("analytic " + analytic_shape_name(shape) + ": ") {}
+  explicit FieldCheck(AnalyticShape shape)
+      : prefix_("analytic " + analytic_shape_name(shape) + ": ") {}
   void positive(const char* field, double value) const {
     if (!(std::isfinite(value) && value > 0.0)) fail(field, value, "must be positive and finite");
   }
@@ -104,7 +105,8 @@ AnalyticShape parse_analytic_shape(std::string_view name) {
   for (const auto& [text, shape] : kShapeNames) {
     if (name == text) return shape;
   }
-  throw InputError("unknown shape '" + std::string(name) + "' (valid: " + analytic_shape_names() + ")");
+  throw InputError("unknown shape '" + std::string(name) + "' (valid: " + analytic_shape_names() +
+                   ")");
 }
 
 std::string analytic_shape_name(AnalyticShape shape) {
@@ -116,7 +118,8 @@ std::string analytic_shape_name(AnalyticShape shape) {
 
 std::string analytic_shape_names() {
   std::string names;
-  for (const auto& [text, shape] : kShapeNames) names += (names.empty() ? "" : ", ") + std::string(text);
+  for (const auto& [text, shape] : kShapeNames)
+    names += (names.empty() ? "" : ", ") + std::string(text);
   return names;
 }
 
@@ -137,7 +140,8 @@ AnalyticDimensions resolve_dimensions(const AnalyticSurfaceSpec& spec) {
   d.plane_tilt_deg = value_or(spec.plane_tilt_deg, 20.0);
   d.torus_major_radius_mm = value_or(spec.torus_major_radius_mm, 1.2 * r);
   d.torus_minor_radius_mm = value_or(spec.torus_minor_radius_mm, 0.48 * r);
-  d.ellipsoid_semi_axes_mm = spec.ellipsoid_semi_axes_mm.value_or(Eigen::Vector3d(1.2, 0.8, 0.6) * r);
+  d.ellipsoid_semi_axes_mm =
+      spec.ellipsoid_semi_axes_mm.value_or(Eigen::Vector3d(1.2, 0.8, 0.6) * r);
   d.capsule_radius_mm = value_or(spec.capsule_radius_mm, 0.6 * r);
   d.capsule_length_mm = value_or(spec.capsule_length_mm, 1.6 * r);
   d.box_edge_mm = value_or(spec.box_edge_mm, 1.6 * r);
@@ -152,8 +156,9 @@ AnalyticDimensions resolve_dimensions(const AnalyticSurfaceSpec& spec) {
   check.positive("torus_major_radius_mm", d.torus_major_radius_mm);
   check.positive("torus_minor_radius_mm", d.torus_minor_radius_mm);
   if (d.torus_minor_radius_mm >= d.torus_major_radius_mm) {
-    check.fail("torus_minor_radius_mm", d.torus_minor_radius_mm,
-               "must be below torus_major_radius_mm (" + number_text(d.torus_major_radius_mm) + ")");
+    check.fail(
+        "torus_minor_radius_mm", d.torus_minor_radius_mm,
+        "must be below torus_major_radius_mm (" + number_text(d.torus_major_radius_mm) + ")");
   }
   check.positive("ellipsoid_semi_axes_mm.x", d.ellipsoid_semi_axes_mm.x());
   check.positive("ellipsoid_semi_axes_mm.y", d.ellipsoid_semi_axes_mm.y());
@@ -194,16 +199,19 @@ AnalyticSurface make_analytic_surface(const AnalyticSurfaceSpec& spec) {
   const Eigen::Vector2d y_axis_in_shape = turn.transpose().block<2, 1>(0, 1);
   const double dx = spec.pixel_size_mm;
   const double half_columns =
-      std::ceil(analytic_silhouette_extent_mm(spec.shape, surface.dimensions, x_axis_in_shape) / dx) +
+      std::ceil(analytic_silhouette_extent_mm(spec.shape, surface.dimensions, x_axis_in_shape) /
+                dx) +
       spec.margin_px;
   const double half_rows =
-      std::ceil(analytic_silhouette_extent_mm(spec.shape, surface.dimensions, y_axis_in_shape) / dx) +
+      std::ceil(analytic_silhouette_extent_mm(spec.shape, surface.dimensions, y_axis_in_shape) /
+                dx) +
       spec.margin_px;
   const double pixels = (2.0 * half_columns + 1.0) * (2.0 * half_rows + 1.0);
   if (!(pixels <= kMaxPixels)) {
-    FieldCheck(spec.shape).fail("pixel_size_mm", dx,
-                                "the grid would exceed " + number_text(kMaxPixels) +
-                                    " pixels; use a larger pixel size or a smaller radius");
+    FieldCheck(spec.shape)
+        .fail("pixel_size_mm", dx,
+              "the grid would exceed " + number_text(kMaxPixels) +
+                  " pixels; use a larger pixel size or a smaller radius");
   }
   const int width = 2 * static_cast<int>(half_columns) + 1;
   const int height = 2 * static_cast<int>(half_rows) + 1;
@@ -214,8 +222,8 @@ AnalyticSurface make_analytic_surface(const AnalyticSurfaceSpec& spec) {
   surface.truth = PixelGrid<AnalyticTruth>(width, height);
   for (int row = 0; row < height; ++row) {
     for (int column = 0; column < width; ++column) {
-      const AnalyticTruth truth = analytic_truth_at(spec, surface.dimensions,
-                                                    surface.range.x_mm(column), surface.range.y_mm(row));
+      const AnalyticTruth truth = analytic_truth_at(
+          spec, surface.dimensions, surface.range.x_mm(column), surface.range.y_mm(row));
       surface.truth(column, row) = truth;
       if (truth.valid) surface.range.z_mm(column, row) = truth.z_mm;
     }
@@ -225,7 +233,8 @@ AnalyticSurface make_analytic_surface(const AnalyticSurfaceSpec& spec) {
     SeededNormal normal(spec.seed);
     for (std::size_t i = 0; i < surface.truth.size(); ++i) {
       if (!surface.truth[i].valid) continue;
-      surface.range.z_mm[i] = static_cast<float>(surface.truth[i].z_mm + spec.noise_mm * normal.next());
+      surface.range.z_mm[i] =
+          static_cast<float>(surface.truth[i].z_mm + spec.noise_mm * normal.next());
     }
   }
 

@@ -21,7 +21,17 @@
 
 namespace cosmos {
 
-enum class AnalyticShape { sphere, cup, cylinder, saddle, plane, torus, ellipsoid, capsule, box_corner };
+enum class AnalyticShape {
+  sphere,
+  cup,
+  cylinder,
+  saddle,
+  plane,
+  torus,
+  ellipsoid,
+  capsule,
+  box_corner
+};
 
 // "sphere", "cup", ..., "box-corner" (the CLI spelling; "box_corner" is accepted too).
 // Unknown names throw InputError listing the valid ones.
@@ -34,12 +44,12 @@ std::string analytic_shape_names();
 // default R = 25 mm, so one --radius-mm scales every shape.
 struct AnalyticSurfaceSpec {
   AnalyticShape shape = AnalyticShape::sphere;
-  double radius_mm = 25.0;       // sphere, cup, cylinder radius; saddle z = (x^2 - y^2) / (2R)
-  double pixel_size_mm = 0.5;    // dx = dy
-  double noise_mm = 0.0;         // standard deviation of the Gaussian noise added to z
-  std::uint64_t seed = 1;        // seed of the noise generator
-  double rotate_deg = 0.0;       // rotation of the part about the viewing axis z
-  int margin_px = 4;             // NaN pixels around the silhouette
+  double radius_mm = 25.0;     // sphere, cup, cylinder radius; saddle z = (x^2 - y^2) / (2R)
+  double pixel_size_mm = 0.5;  // dx = dy
+  double noise_mm = 0.0;       // standard deviation of the Gaussian noise added to z
+  std::uint64_t seed = 1;      // seed of the noise generator
+  double rotate_deg = 0.0;     // rotation of the part about the viewing axis z
+  int margin_px = 4;           // NaN pixels around the silhouette
 
   std::optional<double> cylinder_length_mm;     // 3.2 R [80]; the axis is y before rotation
   std::optional<double> saddle_half_width_mm;   // 0.8 R [20]; square window |x|, |y| <= w
@@ -48,9 +58,9 @@ struct AnalyticSurfaceSpec {
   std::optional<double> torus_major_radius_mm;  // 1.2 R [30]; lying flat, axis z
   std::optional<double> torus_minor_radius_mm;  // 0.48 R [12]
   std::optional<Eigen::Vector3d> ellipsoid_semi_axes_mm;  // (1.2, 0.8, 0.6) R [30, 20, 15]
-  std::optional<double> capsule_radius_mm;      // 0.6 R [15]; axis x before rotation
-  std::optional<double> capsule_length_mm;      // 1.6 R [40]: the cylinder between the caps
-  std::optional<double> box_edge_mm;            // 1.6 R [40]; cube corner seen along its diagonal
+  std::optional<double> capsule_radius_mm;                // 0.6 R [15]; axis x before rotation
+  std::optional<double> capsule_length_mm;  // 1.6 R [40]: the cylinder between the caps
+  std::optional<double> box_edge_mm;        // 1.6 R [40]; cube corner seen along its diagonal
 };
 
 // Every size of a spec made concrete (defaults applied).

@@ -11,7 +11,7 @@
 namespace cosmos {
 namespace {
 
-constexpr int kPhases = 256;             // sub-pixel phases of the stripe tap table
+constexpr int kPhases = 256;                 // sub-pixel phases of the stripe tap table
 constexpr std::size_t kPoolSize = 1u << 17;  // pre-drawn normal deviates
 constexpr std::uint64_t kBackgroundStream = 0xB4C6;
 constexpr std::uint64_t kPoolStream = 0x9001;
@@ -30,10 +30,12 @@ void add_to_pixel(cv::Mat& frame, int row, int column, double value, int full_sc
 
 }  // namespace
 
-CameraFrameRenderer::CameraFrameRenderer(const ScannerParameters& parameters, const TriangulationGeometry& geometry)
+CameraFrameRenderer::CameraFrameRenderer(const ScannerParameters& parameters,
+                                         const TriangulationGeometry& geometry)
     : parameters_(parameters), geometry_(geometry) {
   const CameraFrameParameters& camera = parameters.camera;
-  if (camera.bit_depth != 8 && camera.bit_depth != 10 && camera.bit_depth != 12 && camera.bit_depth != 16) {
+  if (camera.bit_depth != 8 && camera.bit_depth != 10 && camera.bit_depth != 12 &&
+      camera.bit_depth != 16) {
     throw std::invalid_argument("CameraFrameRenderer: bit_depth must be 8, 10, 12 or 16");
   }
   full_scale_ = (1 << camera.bit_depth) - 1;
@@ -48,8 +50,8 @@ CameraFrameRenderer::CameraFrameRenderer(const ScannerParameters& parameters, co
     const double fraction = (phase + 0.5) / kPhases;
     for (int tap = 0; tap < taps; ++tap) {
       const double offset = (tap - half_taps_) - fraction;
-      taps_[static_cast<std::size_t>(phase * taps + tap)] =
-          static_cast<float>(std::exp(-0.5 * offset * offset / (camera.stripe_sigma_px * camera.stripe_sigma_px)));
+      taps_[static_cast<std::size_t>(phase * taps + tap)] = static_cast<float>(
+          std::exp(-0.5 * offset * offset / (camera.stripe_sigma_px * camera.stripe_sigma_px)));
     }
   }
 
@@ -64,8 +66,9 @@ CameraFrameRenderer::CameraFrameRenderer(const ScannerParameters& parameters, co
     cv::Mat background = make_frame();
     for (int r = 0; r < rows_; ++r) {
       for (int c = 0; c < columns_; ++c) {
-        const double value = std::clamp(std::round(ambient + read_noise * background_random.normal()), 0.0,
-                                        static_cast<double>(full_scale_));
+        const double value =
+            std::clamp(std::round(ambient + read_noise * background_random.normal()), 0.0,
+                       static_cast<double>(full_scale_));
         if (background.depth() == CV_8U) {
           background.ptr<std::uint8_t>(r)[c] = static_cast<std::uint8_t>(value);
         } else {
@@ -78,7 +81,8 @@ CameraFrameRenderer::CameraFrameRenderer(const ScannerParameters& parameters, co
 }
 
 cv::Mat CameraFrameRenderer::make_frame() const {
-  return cv::Mat(rows_, columns_, parameters_.camera.bit_depth == 8 ? CV_8UC1 : CV_16UC1, cv::Scalar(0));
+  return cv::Mat(rows_, columns_, parameters_.camera.bit_depth == 8 ? CV_8UC1 : CV_16UC1,
+                 cv::Scalar(0));
 }
 
 StripeExtractionParameters CameraFrameRenderer::extraction_parameters() const {
@@ -141,7 +145,8 @@ void CameraFrameRenderer::render(const LaserLine& line, std::uint64_t frame_seed
                                  std::abs(line.z_mm[s] - line.z_mm[s - 1]) <= max_z_jump_mm_;
     if (!joins_next) {
       // A lone point still lights its nearest column.
-      if (!joined_previous) draw(static_cast<int>(std::lround(line.u_px[s])), line.v_px[s], line.intensity[s]);
+      if (!joined_previous)
+        draw(static_cast<int>(std::lround(line.u_px[s])), line.v_px[s], line.intensity[s]);
       continue;
     }
     // Columns c with u_a <= c < u_b: consecutive segments share no column.

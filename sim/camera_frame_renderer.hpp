@@ -21,9 +21,9 @@
 #include <vector>
 
 #include "firmware_bridge/laser_stripe_extraction.hpp"
+#include "scanner/scanner_model.hpp"
 #include "scanner/triangulation_geometry.hpp"
 #include "sim/laser_line_scanner.hpp"
-#include "scanner/scanner_model.hpp"
 
 namespace cosmos {
 

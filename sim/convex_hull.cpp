@@ -33,8 +33,8 @@ class QhullRun {
 
   int run(std::vector<coordT>& coordinates) {
     char command[] = "qhull";
-    return qh_new_qhull(&qh_, 3, static_cast<int>(coordinates.size() / 3), coordinates.data(), False, command,
-                        nullptr, sink_);
+    return qh_new_qhull(&qh_, 3, static_cast<int>(coordinates.size() / 3), coordinates.data(),
+                        False, command, nullptr, sink_);
   }
   qhT* get() { return &qh_; }
 
@@ -56,7 +56,8 @@ void order_corners(HullFace& face) {
   std::vector<std::pair<double, Eigen::Vector3d>> by_angle;
   by_angle.reserve(face.corners.size());
   for (const Eigen::Vector3d& corner : face.corners) {
-    by_angle.emplace_back(std::atan2((corner - mean).dot(axis_v), (corner - mean).dot(axis_u)), corner);
+    by_angle.emplace_back(std::atan2((corner - mean).dot(axis_v), (corner - mean).dot(axis_u)),
+                          corner);
   }
   std::sort(by_angle.begin(), by_angle.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -73,7 +74,8 @@ ConvexHull convex_hull(const std::vector<Eigen::Vector3f>& points) {
     for (int k = 0; k < 3; ++k) coordinates.push_back(p(k));
   }
   QhullRun run;
-  if (run.run(coordinates) != 0) throw std::invalid_argument("convex_hull: the points span no volume");
+  if (run.run(coordinates) != 0)
+    throw std::invalid_argument("convex_hull: the points span no volume");
   qhT* qh = run.get();
   ConvexHull hull;
   facetT* facet = nullptr;

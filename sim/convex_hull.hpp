@@ -9,9 +9,9 @@
 namespace cosmos {
 
 struct HullFace {
-  Eigen::Vector3d normal;               // unit, outward
-  double offset = 0.0;                  // normal · p + offset = 0 on the face plane
-  std::vector<Eigen::Vector3d> corners; // counter-clockwise seen from outside
+  Eigen::Vector3d normal;                // unit, outward
+  double offset = 0.0;                   // normal · p + offset = 0 on the face plane
+  std::vector<Eigen::Vector3d> corners;  // counter-clockwise seen from outside
 };
 
 struct ConvexHull {

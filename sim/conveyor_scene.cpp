@@ -30,7 +30,8 @@ int ConveyorScene::add_mesh(const TriangleMesh& mesh) {
 }
 
 int ConveyorScene::add_part(std::string name, int mesh, const Eigen::Isometry3d& T_belt_part) {
-  if (mesh < 0 || mesh >= static_cast<int>(meshes_.size())) throw std::invalid_argument("ConveyorScene: no such mesh");
+  if (mesh < 0 || mesh >= static_cast<int>(meshes_.size()))
+    throw std::invalid_argument("ConveyorScene: no such mesh");
   // Checked before the part reaches the ray tracer, so a refused part leaves no trace.
   Eigen::AlignedBox3d bounds;
   for (const Eigen::Vector3f& v : meshes_[static_cast<std::size_t>(mesh)].vertices) {
@@ -44,8 +45,9 @@ int ConveyorScene::add_part(std::string name, int mesh, const Eigen::Isometry3d&
   }
   const int instance = embree_->add_instance(
       mesh, T_belt_part, movable_parts_ ? MeshPlacement::kInstanced : MeshPlacement::kBaked);
-  parts_.push_back({std::move(name), mesh, T_belt_part, embree_->instance_bounds(instance),
-                    HeightBoundGrid(meshes_[static_cast<std::size_t>(mesh)], T_belt_part, kHeightBoundCellMm)});
+  parts_.push_back(
+      {std::move(name), mesh, T_belt_part, embree_->instance_bounds(instance),
+       HeightBoundGrid(meshes_[static_cast<std::size_t>(mesh)], T_belt_part, kHeightBoundCellMm)});
   return instance;
 }
 
@@ -54,8 +56,8 @@ void ConveyorScene::move_part(int part, const Eigen::Isometry3d& T_belt_part) {
   embree_->set_instance_transform(part, T_belt_part);
   placed.T_belt_part = T_belt_part;
   placed.bounds_mm = embree_->instance_bounds(part);
-  placed.height_bounds =
-      HeightBoundGrid(meshes_[static_cast<std::size_t>(placed.mesh)], T_belt_part, kHeightBoundCellMm);
+  placed.height_bounds = HeightBoundGrid(meshes_[static_cast<std::size_t>(placed.mesh)],
+                                         T_belt_part, kHeightBoundCellMm);
 }
 
 void ConveyorScene::commit() { embree_->commit(); }

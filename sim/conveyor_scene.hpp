@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "scanner/scanner_model.hpp"
 #include "sim/height_bound_grid.hpp"
 #include "sim/mesh.hpp"
-#include "scanner/scanner_model.hpp"
 
 namespace cosmos {
 

@@ -8,13 +8,20 @@ namespace {
 
 const char* error_name(RTCError error) {
   switch (error) {
-    case RTC_ERROR_NONE: return "no error";
-    case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
-    case RTC_ERROR_INVALID_OPERATION: return "invalid operation";
-    case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
-    case RTC_ERROR_UNSUPPORTED_CPU: return "unsupported CPU";
-    case RTC_ERROR_CANCELLED: return "cancelled";
-    default: return "unknown error";
+    case RTC_ERROR_NONE:
+      return "no error";
+    case RTC_ERROR_INVALID_ARGUMENT:
+      return "invalid argument";
+    case RTC_ERROR_INVALID_OPERATION:
+      return "invalid operation";
+    case RTC_ERROR_OUT_OF_MEMORY:
+      return "out of memory";
+    case RTC_ERROR_UNSUPPORTED_CPU:
+      return "unsupported CPU";
+    case RTC_ERROR_CANCELLED:
+      return "cancelled";
+    default:
+      return "unknown error";
   }
 }
 
@@ -31,11 +38,14 @@ void set_instance_matrix(RTCGeometry geometry, const Eigen::Isometry3d& T_world_
   rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, matrix);
 }
 
-void write_vertices(RTCGeometry geometry, const TriangleMesh& mesh, const Eigen::Isometry3d& T_world_mesh) {
-  auto* vertices = static_cast<float*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_VERTEX, 0));
+void write_vertices(RTCGeometry geometry, const TriangleMesh& mesh,
+                    const Eigen::Isometry3d& T_world_mesh) {
+  auto* vertices =
+      static_cast<float*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_VERTEX, 0));
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     const Eigen::Vector3d world = T_world_mesh * mesh.vertices[v].cast<double>();
-    for (int k = 0; k < 3; ++k) vertices[3 * v + static_cast<std::size_t>(k)] = static_cast<float>(world(k));
+    for (int k = 0; k < 3; ++k)
+      vertices[3 * v + static_cast<std::size_t>(k)] = static_cast<float>(world(k));
   }
 }
 
@@ -44,7 +54,8 @@ void write_vertices(RTCGeometry geometry, const TriangleMesh& mesh, const Eigen:
 EmbreeScene::EmbreeScene() {
   device_ = rtcNewDevice("threads=1,verbose=0");
   if (device_ == nullptr) {
-    throw std::runtime_error(std::string("Embree: cannot create a device: ") + error_name(rtcGetDeviceError(nullptr)));
+    throw std::runtime_error(std::string("Embree: cannot create a device: ") +
+                             error_name(rtcGetDeviceError(nullptr)));
   }
   top_ = rtcNewScene(device_);
   // Watertight intersection: a ray through a shared edge or vertex of the tessellation must
@@ -64,11 +75,13 @@ EmbreeScene::~EmbreeScene() {
 
 void EmbreeScene::check(const char* operation) const {
   const RTCError error = rtcGetDeviceError(device_);
-  if (error != RTC_ERROR_NONE) throw std::runtime_error(std::string("Embree: ") + operation + ": " + error_name(error));
+  if (error != RTC_ERROR_NONE)
+    throw std::runtime_error(std::string("Embree: ") + operation + ": " + error_name(error));
 }
 
 int EmbreeScene::add_mesh(const TriangleMesh& mesh) {
-  if (mesh.triangles.empty()) throw std::invalid_argument("EmbreeScene::add_mesh: mesh has no triangles");
+  if (mesh.triangles.empty())
+    throw std::invalid_argument("EmbreeScene::add_mesh: mesh has no triangles");
   const auto vertex_count = static_cast<int>(mesh.vertices.size());
   for (const Eigen::Vector3i& triangle : mesh.triangles) {
     if (triangle.minCoeff() < 0 || triangle.maxCoeff() >= vertex_count) {
@@ -84,11 +97,13 @@ RTCGeometry EmbreeScene::new_triangle_geometry(const TriangleMesh& mesh) {
   // rtcSetNewGeometryBuffer pads the buffers as Embree's vector loads require.
   rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
                           mesh.vertices.size());
-  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                 3 * sizeof(unsigned), mesh.triangles.size()));
+  auto* indices = static_cast<unsigned*>(
+      rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                              3 * sizeof(unsigned), mesh.triangles.size()));
   check("rtcSetNewGeometryBuffer");
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    for (int k = 0; k < 3; ++k) indices[3 * t + static_cast<std::size_t>(k)] = static_cast<unsigned>(mesh.triangles[t](k));
+    for (int k = 0; k < 3; ++k)
+      indices[3 * t + static_cast<std::size_t>(k)] = static_cast<unsigned>(mesh.triangles[t](k));
   }
   return geometry;
 }
@@ -108,7 +123,8 @@ RTCScene EmbreeScene::mesh_scene(int mesh_index) {
   return mesh.scene;
 }
 
-int EmbreeScene::add_instance(int mesh_index, const Eigen::Isometry3d& T_world_mesh, MeshPlacement placement) {
+int EmbreeScene::add_instance(int mesh_index, const Eigen::Isometry3d& T_world_mesh,
+                              MeshPlacement placement) {
   if (mesh_index < 0 || mesh_index >= static_cast<int>(meshes_.size())) {
     throw std::invalid_argument("EmbreeScene::add_instance: no such mesh");
   }
@@ -129,7 +145,8 @@ int EmbreeScene::add_instance(int mesh_index, const Eigen::Isometry3d& T_world_m
   return static_cast<int>(id);
 }
 
-void EmbreeScene::set_instance_transform(int instance_index, const Eigen::Isometry3d& T_world_mesh) {
+void EmbreeScene::set_instance_transform(int instance_index,
+                                         const Eigen::Isometry3d& T_world_mesh) {
   Instance& instance = instances_.at(static_cast<std::size_t>(instance_index));
   const TriangleMesh& mesh = meshes_[static_cast<std::size_t>(instance.mesh)].mesh;
   instance.T_world_mesh = T_world_mesh;
@@ -141,7 +158,8 @@ void EmbreeScene::set_instance_transform(int instance_index, const Eigen::Isomet
   }
   rtcCommitGeometry(instance.geometry);
   instance.bounds.setEmpty();
-  for (const Eigen::Vector3f& vertex : mesh.vertices) instance.bounds.extend(T_world_mesh * vertex.cast<double>());
+  for (const Eigen::Vector3f& vertex : mesh.vertices)
+    instance.bounds.extend(T_world_mesh * vertex.cast<double>());
   check("moving an instance");
 }
 
@@ -158,7 +176,8 @@ const Eigen::AlignedBox3d& EmbreeScene::instance_bounds(int instance) const {
   return instances_.at(static_cast<std::size_t>(instance)).bounds;
 }
 
-Eigen::Vector3d EmbreeScene::world_normal(unsigned instance, float ng_x, float ng_y, float ng_z) const {
+Eigen::Vector3d EmbreeScene::world_normal(unsigned instance, float ng_x, float ng_y,
+                                          float ng_z) const {
   const Instance& placed = instances_[instance];
   const Eigen::Vector3d normal(ng_x, ng_y, ng_z);
   if (placed.placement == MeshPlacement::kBaked) return normal.normalized();

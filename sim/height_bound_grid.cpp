@@ -7,7 +7,8 @@
 
 namespace cosmos {
 
-HeightBoundGrid::HeightBoundGrid(const TriangleMesh& mesh, const Eigen::Isometry3d& T_belt_part, double cell_mm)
+HeightBoundGrid::HeightBoundGrid(const TriangleMesh& mesh, const Eigen::Isometry3d& T_belt_part,
+                                 double cell_mm)
     : cell_mm_(cell_mm) {
   if (!(cell_mm > 0.0)) throw std::invalid_argument("HeightBoundGrid: cell_mm must be > 0");
   std::vector<Eigen::Vector3d> placed;
@@ -46,7 +47,8 @@ HeightBoundGrid::HeightBoundGrid(const TriangleMesh& mesh, const Eigen::Isometry
   for (int iy = 0; iy < rows_; ++iy) {
     for (int ix = 0; ix < columns_; ++ix) {
       if (cell(ix, iy) == -std::numeric_limits<float>::infinity()) continue;
-      if (first_column_[static_cast<std::size_t>(iy)] < 0) first_column_[static_cast<std::size_t>(iy)] = ix;
+      if (first_column_[static_cast<std::size_t>(iy)] < 0)
+        first_column_[static_cast<std::size_t>(iy)] = ix;
       last_column_[static_cast<std::size_t>(iy)] = ix;
     }
   }
@@ -60,7 +62,8 @@ bool HeightBoundGrid::x_extent(double y_mm, double& x_low, double& x_high) const
   return true;
 }
 
-HeightBoundGrid::BeltSight HeightBoundGrid::belt_sight(double y_mm, const Eigen::Vector3d& camera_mm) const {
+HeightBoundGrid::BeltSight HeightBoundGrid::belt_sight(double y_mm,
+                                                       const Eigen::Vector3d& camera_mm) const {
   BeltSight sight;
   sight.y_mm = y_mm;
   sight.camera_mm = camera_mm;
@@ -93,14 +96,16 @@ bool HeightBoundGrid::may_block(const BeltSight& sight, double x_mm) const {
   return std::max(x_a, x_b) >= x0_mm_ && std::min(x_a, x_b) <= x0_mm_ + columns_ * cell_mm_;
 }
 
-void HeightBoundGrid::mark_belt_sights(const BeltSight& sight, double x0_mm, double dx_mm, int samples,
-                                       int* difference) const {
+void HeightBoundGrid::mark_belt_sights(const BeltSight& sight, double x0_mm, double dx_mm,
+                                       int samples, int* difference) const {
   if (sight.s_end < sight.s_begin) return;
   const Eigen::Vector3d& camera = sight.camera_mm;
   const double dy = camera.y() - sight.y_mm;
   // A line of sight from (x, y, 0) is over (x (1 - s) + s cx, y + s dy) at height s cz.
-  const auto first_row = static_cast<int>(std::floor((sight.y_mm + std::min(sight.s_begin * dy, sight.s_end * dy) - y0_mm_) / cell_mm_));
-  const auto last_row = static_cast<int>(std::floor((sight.y_mm + std::max(sight.s_begin * dy, sight.s_end * dy) - y0_mm_) / cell_mm_));
+  const auto first_row = static_cast<int>(std::floor(
+      (sight.y_mm + std::min(sight.s_begin * dy, sight.s_end * dy) - y0_mm_) / cell_mm_));
+  const auto last_row = static_cast<int>(std::floor(
+      (sight.y_mm + std::max(sight.s_begin * dy, sight.s_end * dy) - y0_mm_) / cell_mm_));
   for (int iy = std::max(first_row, 0); iy <= std::min(last_row, rows_ - 1); ++iy) {
     const int row_first = first_column_[static_cast<std::size_t>(iy)];
     if (row_first < 0) continue;
@@ -134,7 +139,8 @@ void HeightBoundGrid::mark_belt_sights(const BeltSight& sight, double x0_mm, dou
       const double x_high = std::max((cell_high - s_low * camera.x()) * inverse_low,
                                      (cell_high - s_top * camera.x()) * inverse_top);
       const int first = std::max(0, sample_index(std::floor((x_low - x0_mm) / dx_mm) - 1.0));
-      const int last = std::min(samples - 1, sample_index(std::ceil((x_high - x0_mm) / dx_mm) + 1.0));
+      const int last =
+          std::min(samples - 1, sample_index(std::ceil((x_high - x0_mm) / dx_mm) + 1.0));
       if (first > last) continue;
       ++difference[first];
       --difference[last + 1];

@@ -50,7 +50,9 @@ class HeightBoundGrid {
   bool x_extent(double y_mm, double& x_low, double& x_high) const;
 
  private:
-  float cell(int ix, int iy) const { return heights_[static_cast<std::size_t>(iy) * columns_ + ix]; }
+  float cell(int ix, int iy) const {
+    return heights_[static_cast<std::size_t>(iy) * columns_ + ix];
+  }
 
   double x0_mm_ = 0.0;
   double y0_mm_ = 0.0;
@@ -58,8 +60,8 @@ class HeightBoundGrid {
   int columns_ = 0;
   int rows_ = 0;
   double max_z_mm_ = 0.0;
-  std::vector<float> heights_;      // -inf where no triangle reaches
-  std::vector<int> first_column_;   // per row: first and last occupied cell, -1 when empty
+  std::vector<float> heights_;     // -inf where no triangle reaches
+  std::vector<int> first_column_;  // per row: first and last occupied cell, -1 when empty
   std::vector<int> last_column_;
 };
 

@@ -23,7 +23,8 @@ constexpr double kBeltToleranceMm = 1e-4;
 
 }  // namespace
 
-LaserLineScanner::LaserLineScanner(const ConveyorScene& scene, const ScannerParameters& parameters, int samples)
+LaserLineScanner::LaserLineScanner(const ConveyorScene& scene, const ScannerParameters& parameters,
+                                   int samples)
     : scene_(scene),
       parameters_(parameters),
       geometry_(scanner_triangulation_geometry(parameters)),
@@ -37,12 +38,14 @@ LaserLineScanner::LaserLineScanner(const ConveyorScene& scene, const ScannerPara
   // profile: computed once here, it spares most samples the camera model and a normalization.
   belt_samples_.resize(static_cast<std::size_t>(samples));
   for (int i = 0; i < samples; ++i) {
-    const double x_mm = parameters.first_sample_x_mm(samples) + i * parameters.sample_spacing_mm(samples);
-    const double cos_incidence = parameters.laser_model == LaserModel::kFan
-                                     ? parameters.laser_height_mm / std::hypot(x_mm, parameters.laser_height_mm)
-                                     : 1.0;
-    belt_samples_[static_cast<std::size_t>(i)] =
-        classify_lit_point(Eigen::Vector3d(x_mm, 0.0, 0.0), Eigen::Vector3d::UnitZ(), cos_incidence);
+    const double x_mm =
+        parameters.first_sample_x_mm(samples) + i * parameters.sample_spacing_mm(samples);
+    const double cos_incidence =
+        parameters.laser_model == LaserModel::kFan
+            ? parameters.laser_height_mm / std::hypot(x_mm, parameters.laser_height_mm)
+            : 1.0;
+    belt_samples_[static_cast<std::size_t>(i)] = classify_lit_point(
+        Eigen::Vector3d(x_mm, 0.0, 0.0), Eigen::Vector3d::UnitZ(), cos_incidence);
   }
   normal_x_.resize(static_cast<std::size_t>(samples));
   normal_y_.resize(static_cast<std::size_t>(samples));
@@ -81,7 +84,8 @@ void LaserLineScanner::trace(double laser_y_belt_mm, LaserLine& line) {
   }
   if (x_low <= x_high) {
     const int first = std::max(0, static_cast<int>(std::floor((x_low - line.x0_mm) / line.dx_mm)));
-    const int end = std::min(samples_, static_cast<int>(std::ceil((x_high - line.x0_mm) / line.dx_mm)) + 1);
+    const int end =
+        std::min(samples_, static_cast<int>(std::ceil((x_high - line.x0_mm) / line.dx_mm)) + 1);
     if (first < end) probe_top_surface(laser_y_belt_mm, first, end, line);
   }
   sweep_laser_horizon(line);
@@ -122,9 +126,9 @@ void LaserLineScanner::probe_top_surface(double y_mm, int first, int end, LaserL
       const auto i = static_cast<std::size_t>(base + k);
       const float z = static_cast<float>(top_z_mm - static_cast<double>(packet.ray.tfar[k]));
       line.z_mm[i] = z;
-      Eigen::Vector3d normal = embree.world_normal(EmbreeScene::hit_instance(packet.hit.geomID[k], packet.hit.instID[0][k]),
-                                                   packet.hit.Ng_x[k],
-                                                   packet.hit.Ng_y[k], packet.hit.Ng_z[k]);
+      Eigen::Vector3d normal = embree.world_normal(
+          EmbreeScene::hit_instance(packet.hit.geomID[k], packet.hit.instID[0][k]),
+          packet.hit.Ng_x[k], packet.hit.Ng_y[k], packet.hit.Ng_z[k]);
       // The probe comes from above, so the surface it met faces up, whatever the winding.
       if (normal.z() < 0.0) normal = -normal;
       normal_x_[i] = static_cast<float>(normal.x());
@@ -154,16 +158,17 @@ void LaserLineScanner::sweep_laser_horizon(LaserLine& line) const {
     }
   };
   // The source hangs over the belt centre, x = 0.
-  const int first_right = std::clamp(static_cast<int>(std::ceil(-line.x0_mm / line.dx_mm)), 0, samples_);
+  const int first_right =
+      std::clamp(static_cast<int>(std::ceil(-line.x0_mm / line.dx_mm)), 0, samples_);
   double horizon = -std::numeric_limits<double>::infinity();
   for (int i = first_right; i < samples_; ++i) visit(i, line.x_mm(i), horizon);
   horizon = -std::numeric_limits<double>::infinity();
   for (int i = first_right - 1; i >= 0; --i) visit(i, -line.x_mm(i), horizon);
 }
 
-LaserLineScanner::LitPoint LaserLineScanner::classify_lit_point(const Eigen::Vector3d& point_scanner_mm,
-                                                                const Eigen::Vector3d& normal,
-                                                                double cos_incidence) const {
+LaserLineScanner::LitPoint LaserLineScanner::classify_lit_point(
+    const Eigen::Vector3d& point_scanner_mm, const Eigen::Vector3d& normal,
+    double cos_incidence) const {
   LitPoint lit;
   if (cos_incidence < cos_max_incidence_) {
     lit.state = LaserSampleState::kGrazing;
@@ -178,7 +183,8 @@ LaserLineScanner::LitPoint LaserLineScanner::classify_lit_point(const Eigen::Vec
   lit.u_px = static_cast<float>(uv.x());
   lit.v_px = static_cast<float>(uv.y());
   const double sensor_last_column = geometry_.camera.width_px - 1;
-  if (!(uv.x() >= 0.0 && uv.x() <= sensor_last_column && uv.y() >= min_roi_row_px_ && uv.y() <= max_roi_row_px_)) {
+  if (!(uv.x() >= 0.0 && uv.x() <= sensor_last_column && uv.y() >= min_roi_row_px_ &&
+        uv.y() <= max_roi_row_px_)) {
     lit.state = LaserSampleState::kOutOfRange;
   } else if (normal.dot(geometry_.t_scanner_camera_mm - point_scanner_mm) <= 0.0) {
     lit.state = LaserSampleState::kCameraOccluded;
@@ -218,7 +224,8 @@ void LaserLineScanner::classify(double y_mm, LaserLine& line) {
       const double cos_incidence = parameters_.laser_model == LaserModel::kFan
                                        ? -normal.dot((point_mm - source_mm).normalized())
                                        : normal.z();
-      lit = classify_lit_point(Eigen::Vector3d(point_mm.x(), 0.0, point_mm.z()), normal, cos_incidence);
+      lit = classify_lit_point(Eigen::Vector3d(point_mm.x(), 0.0, point_mm.z()), normal,
+                               cos_incidence);
     }
     line.state[s] = lit.state;
     line.intensity[s] = lit.intensity;
@@ -253,10 +260,12 @@ void LaserLineScanner::trace_camera_occlusion(double y_mm, LaserLine& line) {
     for (int k = 0; k < kPacket; ++k) {
       const bool used = base + k < count;
       valid[k] = used ? -1 : 0;
-      const auto s = static_cast<std::size_t>(used ? occlusion_candidates_[static_cast<std::size_t>(base + k)] : 0);
+      const auto s = static_cast<std::size_t>(
+          used ? occlusion_candidates_[static_cast<std::size_t>(base + k)] : 0);
       const Eigen::Vector3d normal(normal_x_[s], normal_y_[s], normal_z_[s]);
       const Eigen::Vector3d origin =
-          Eigen::Vector3d(line.x_mm(static_cast<int>(s)), y_mm, line.z_mm[s]) + kSurfaceOffsetMm * normal;
+          Eigen::Vector3d(line.x_mm(static_cast<int>(s)), y_mm, line.z_mm[s]) +
+          kSurfaceOffsetMm * normal;
       const Eigen::Vector3d direction = camera_mm - origin;
       packet.org_x[k] = static_cast<float>(origin.x());
       packet.org_y[k] = static_cast<float>(origin.y());
@@ -275,7 +284,8 @@ void LaserLineScanner::trace_camera_occlusion(double y_mm, LaserLine& line) {
     for (int k = 0; k < kPacket && base + k < count; ++k) {
       // Embree marks an occluded ray by setting its tfar to -inf.
       if (packet.tfar[k] < 0.0f) {
-        line.state[static_cast<std::size_t>(occlusion_candidates_[static_cast<std::size_t>(base + k)])] =
+        line.state[static_cast<std::size_t>(
+            occlusion_candidates_[static_cast<std::size_t>(base + k)])] =
             LaserSampleState::kCameraOccluded;
       }
     }

@@ -29,9 +29,9 @@
 #include <limits>
 #include <vector>
 
+#include "scanner/scanner_model.hpp"
 #include "scanner/triangulation_geometry.hpp"
 #include "sim/conveyor_scene.hpp"
-#include "scanner/scanner_model.hpp"
 
 namespace cosmos {
 
@@ -85,8 +85,8 @@ class LaserLineScanner {
     float u_px = std::numeric_limits<float>::quiet_NaN();
     float v_px = std::numeric_limits<float>::quiet_NaN();
   };
-  LitPoint classify_lit_point(const Eigen::Vector3d& point_scanner_mm, const Eigen::Vector3d& normal,
-                              double cos_incidence) const;
+  LitPoint classify_lit_point(const Eigen::Vector3d& point_scanner_mm,
+                              const Eigen::Vector3d& normal, double cos_incidence) const;
   void classify(double y_mm, LaserLine& line);
   void trace_camera_occlusion(double y_mm, LaserLine& line);
 

@@ -1,10 +1,11 @@
 #include "sim/mesh.hpp"
 
-#include <algorithm>
-#include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+
+#include <algorithm>
+#include <assimp/Importer.hpp>
 #include <cctype>
 #include <cmath>
 #include <sstream>
@@ -23,8 +24,11 @@ namespace {
 
 // Assimp's messages can span lines; the project's error contract is one line.
 std::string one_line(std::string text) {
-  std::replace_if(text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
-  text.erase(std::unique(text.begin(), text.end(), [](char a, char b) { return a == ' ' && b == ' '; }), text.end());
+  std::replace_if(
+      text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  text.erase(
+      std::unique(text.begin(), text.end(), [](char a, char b) { return a == ' ' && b == ' '; }),
+      text.end());
   const auto first = text.find_first_not_of(' ');
   const auto last = text.find_last_not_of(' ');
   return first == std::string::npos ? std::string{} : text.substr(first, last - first + 1);
@@ -95,7 +99,8 @@ void require_finite_vertices(const std::filesystem::path& path, const aiScene& s
       const aiVector3D& p = part.mVertices[v];
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
         std::ostringstream reason;
-        reason << "vertex (" << p.x << ", " << p.y << ", " << p.z << ") has a NaN or infinite coordinate";
+        reason << "vertex (" << p.x << ", " << p.y << ", " << p.z
+               << ") has a NaN or infinite coordinate";
         fail(path, reason.str());
       }
     }
@@ -105,7 +110,8 @@ void require_finite_vertices(const std::filesystem::path& path, const aiScene& s
 void validate(const std::filesystem::path& path, const TriangleMesh& mesh) {
   if (mesh.triangles.empty()) fail(path, "mesh has no triangles");
   const Eigen::Vector3f extent = bounding_box(mesh).sizes();
-  if (!(extent.maxCoeff() > 0.0f)) fail(path, "degenerate mesh: all vertices at one point (zero size)");
+  if (!(extent.maxCoeff() > 0.0f))
+    fail(path, "degenerate mesh: all vertices at one point (zero size)");
 }
 
 }  // namespace
@@ -121,26 +127,29 @@ TriangleMesh read_mesh_file(const std::filesystem::path& path) {
   Assimp::Importer importer;
   // Points and lines carry no surface to scan; sorting by primitive type and removing them
   // leaves only triangles after triangulation.
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                              aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   // Only positions are used. Dropping the other vertex components first lets
   // JoinIdenticalVertices weld by position alone: STL repeats each corner per face with the
   // face normal, which would otherwise keep every triangle's corners apart.
   importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,
-                              aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS | aiComponent_COLORS |
-                                  aiComponent_TEXCOORDS | aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS |
+                              aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS |
+                                  aiComponent_COLORS | aiComponent_TEXCOORDS |
+                                  aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS |
                                   aiComponent_TEXTURES | aiComponent_LIGHTS | aiComponent_CAMERAS);
   const auto assimp_failure = [&] {
     const std::string reason = one_line(importer.GetErrorString());
-    fail(path, "assimp cannot read it: " + (reason.empty() ? std::string("unknown error") : reason));
+    fail(path,
+         "assimp cannot read it: " + (reason.empty() ? std::string("unknown error") : reason));
   };
   // Read raw first: JoinIdenticalVertices silently drops a NaN vertex (it never compares
   // equal) and rewires its faces, so non-finite coordinates must be caught before it runs.
   const aiScene* scene = importer.ReadFile(path.string(), 0);
   if (scene == nullptr) assimp_failure();
   require_finite_vertices(path, *scene);
-  scene = importer.ApplyPostProcessing(aiProcess_RemoveComponent | aiProcess_Triangulate |
-                                       aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
-                                       aiProcess_PreTransformVertices | aiProcess_ValidateDataStructure);
+  scene = importer.ApplyPostProcessing(
+      aiProcess_RemoveComponent | aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+      aiProcess_SortByPType | aiProcess_PreTransformVertices | aiProcess_ValidateDataStructure);
   if (scene == nullptr) assimp_failure();
   TriangleMesh mesh;
   append_scene_meshes(*scene, mesh);

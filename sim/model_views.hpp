@@ -13,16 +13,16 @@
 #include <vector>
 
 #include "core/range_image.hpp"
+#include "scanner/scanner_model.hpp"
 #include "sim/conveyor_scene.hpp"
 #include "sim/mesh.hpp"
-#include "scanner/scanner_model.hpp"
 #include "sim/simulated_scanner.hpp"
 
 namespace cosmos {
 
 struct ModelView {
   int index = 0;
-  Eigen::Vector3d direction_part = Eigen::Vector3d::UnitZ();  // unit, in the part frame
+  Eigen::Vector3d direction_part = Eigen::Vector3d::UnitZ();         // unit, in the part frame
   Eigen::Isometry3d T_scanner_part = Eigen::Isometry3d::Identity();  // in the image's frame
   RangeImage image;  // ground_truth set; empty (width 0) if nothing was measured
 };
@@ -30,12 +30,14 @@ struct ModelView {
 class ModelViewRenderer {
  public:
   // `mesh` in the part frame (mm). Directions: view_directions(subdivisions).
-  ModelViewRenderer(const TriangleMesh& mesh, std::string part_name, const ScannerParameters& parameters,
-                    int subdivisions = 2);
+  ModelViewRenderer(const TriangleMesh& mesh, std::string part_name,
+                    const ScannerParameters& parameters, int subdivisions = 2);
   ~ModelViewRenderer();
 
   int view_count() const { return static_cast<int>(directions_.size()); }
-  const Eigen::Vector3d& direction(int index) const { return directions_.at(static_cast<std::size_t>(index)); }
+  const Eigen::Vector3d& direction(int index) const {
+    return directions_.at(static_cast<std::size_t>(index));
+  }
   // The pose of view `index`: R = rotation_looking_along(direction), placed on the belt.
   Eigen::Isometry3d view_pose(int index) const;
 

@@ -1,14 +1,14 @@
 #include "sim/part_catalog.hpp"
 
+#include <pwd.h>
+#include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <map>
-#include <pwd.h>
 #include <set>
 #include <sstream>
-#include <unistd.h>
 
 #include "core/input_error.hpp"
 #include "core/io/yaml_input_errors.hpp"
@@ -49,7 +49,8 @@ fs::path resolve_mesh(const std::string& text, const fs::path& yaml_dir, const f
   return mesh_dir / path;
 }
 
-std::string scalar_string(const YamlInputErrors& errors, const YAML::Node& value, const std::string& key) {
+std::string scalar_string(const YamlInputErrors& errors, const YAML::Node& value,
+                          const std::string& key) {
   if (!value.IsScalar() || value.Scalar().empty()) {
     errors.fail(value, key, "expected a non-empty text, got " + describe_yaml_node(value));
   }
@@ -62,7 +63,8 @@ std::string part_name(const YamlInputErrors& errors, const YAML::Node& value) {
   for (const char c : name) {
     const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
                     c == '.' || c == '_' || c == '-';
-    if (!ok) errors.fail(value, "name", "'" + name + "' may only use letters, digits, '.', '_' or '-'");
+    if (!ok)
+      errors.fail(value, "name", "'" + name + "' may only use letters, digits, '.', '_' or '-'");
   }
   return name;
 }
@@ -90,13 +92,16 @@ bool symmetric_flag(const YamlInputErrors& errors, const YAML::Node& value) {
 
 // Map entries by key, refusing keys outside `allowed` and keys given twice (yaml-cpp would
 // silently keep the first).
-std::map<std::string, YAML::Node> keyed_entries(const YamlInputErrors& errors, const YAML::Node& map,
+std::map<std::string, YAML::Node> keyed_entries(const YamlInputErrors& errors,
+                                                const YAML::Node& map,
                                                 const std::set<std::string>& allowed,
                                                 const std::string& allowed_text) {
   std::map<std::string, YAML::Node> entries;
   for (const auto& item : map) {
-    const std::string key = item.first.IsScalar() ? item.first.Scalar() : describe_yaml_node(item.first);
-    if (allowed.count(key) == 0) errors.fail(item.first, key, "unknown key (expected " + allowed_text + ")");
+    const std::string key =
+        item.first.IsScalar() ? item.first.Scalar() : describe_yaml_node(item.first);
+    if (allowed.count(key) == 0)
+      errors.fail(item.first, key, "unknown key (expected " + allowed_text + ")");
     if (!entries.emplace(key, item.second).second) errors.fail(item.first, key, "key given twice");
   }
   return entries;
@@ -104,16 +109,18 @@ std::map<std::string, YAML::Node> keyed_entries(const YamlInputErrors& errors, c
 
 PartEntry read_part(const YamlInputErrors& errors, const YAML::Node& node, const fs::path& yaml_dir,
                     const fs::path& mesh_dir) {
-  if (!node.IsMap()) errors.fail(node, "parts", "each part must be a map, got " + describe_yaml_node(node));
-  const auto entries =
-      keyed_entries(errors, node, {"name", "mesh", "size_mm", "symmetric"}, "name, mesh, size_mm, symmetric");
+  if (!node.IsMap())
+    errors.fail(node, "parts", "each part must be a map, got " + describe_yaml_node(node));
+  const auto entries = keyed_entries(errors, node, {"name", "mesh", "size_mm", "symmetric"},
+                                     "name, mesh, size_mm, symmetric");
   for (const char* required : {"name", "mesh", "size_mm"}) {
     if (entries.count(required) == 0) errors.fail(node, required, "missing key");
   }
   PartEntry part;
   part.name = part_name(errors, entries.at("name"));
-  part.mesh_path = resolve_mesh(scalar_string(errors, entries.at("mesh"), "mesh"), yaml_dir, mesh_dir)
-                       .lexically_normal();
+  part.mesh_path =
+      resolve_mesh(scalar_string(errors, entries.at("mesh"), "mesh"), yaml_dir, mesh_dir)
+          .lexically_normal();
   part.size_mm = size_mm(errors, entries.at("size_mm"));
   if (const auto it = entries.find("symmetric"); it != entries.end()) {
     part.symmetric = symmetric_flag(errors, it->second);
@@ -134,13 +141,15 @@ const PartEntry& PartCatalog::at(std::string_view name) const {
   if (const PartEntry* part = find(name)) return *part;
   std::string known;
   for (const PartEntry& part : parts) known += (known.empty() ? "" : ", ") + part.name;
-  throw InputError("unknown part '" + std::string(name) + "' in " + file.string() + " (known: " + known + ")");
+  throw InputError("unknown part '" + std::string(name) + "' in " + file.string() +
+                   " (known: " + known + ")");
 }
 
 PartCatalog read_part_catalog(const fs::path& yaml_path, const fs::path& mesh_cache_dir) {
   const YamlInputErrors errors(yaml_path);
   const YAML::Node root = errors.load_file("part catalog");
-  if (!root.IsMap()) errors.fail_line(root.Mark().line, "parts", "the catalog must be a map with a 'parts' list");
+  if (!root.IsMap())
+    errors.fail_line(root.Mark().line, "parts", "the catalog must be a map with a 'parts' list");
   const auto entries = keyed_entries(errors, root, {"mesh_dir", "parts"}, "mesh_dir, parts");
 
   const fs::path yaml_dir = fs::absolute(yaml_path).parent_path();
@@ -152,7 +161,8 @@ PartCatalog read_part_catalog(const fs::path& yaml_path, const fs::path& mesh_ca
   const auto parts = entries.find("parts");
   if (parts == entries.end()) errors.fail_line(root.Mark().line, "parts", "missing key");
   if (!parts->second.IsSequence() || parts->second.size() == 0) {
-    errors.fail(parts->second, "parts", "expected a non-empty list of parts, got " + describe_yaml_node(parts->second));
+    errors.fail(parts->second, "parts",
+                "expected a non-empty list of parts, got " + describe_yaml_node(parts->second));
   }
 
   PartCatalog catalog;
@@ -164,7 +174,8 @@ PartCatalog read_part_catalog(const fs::path& yaml_path, const fs::path& mesh_ca
     const int line0 = name_node.Mark().line;
     if (const auto seen = first_line.find(part.name); seen != first_line.end()) {
       errors.fail(name_node, "name",
-                  "duplicate part '" + part.name + "' (first at line " + std::to_string(seen->second + 1) + ")");
+                  "duplicate part '" + part.name + "' (first at line " +
+                      std::to_string(seen->second + 1) + ")");
     }
     first_line.emplace(part.name, line0);
     catalog.parts.push_back(std::move(part));
@@ -191,7 +202,8 @@ fs::path find_part_catalog(const fs::path& explicit_path) {
   std::string tried = in_current_dir.string();
   const fs::path executable = fs::read_symlink("/proc/self/exe", error);
   if (!error) {
-    const fs::path beside_build = (executable.parent_path() / ".." / ".." / "config" / "parts.yaml").lexically_normal();
+    const fs::path beside_build =
+        (executable.parent_path() / ".." / ".." / "config" / "parts.yaml").lexically_normal();
     if (fs::is_regular_file(beside_build, error)) return beside_build;
     if (beside_build != in_current_dir) tried += " and " + beside_build.string();
   }

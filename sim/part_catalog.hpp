@@ -32,8 +32,8 @@ struct PartEntry {
 };
 
 struct PartCatalog {
-  std::filesystem::path file;     // the YAML it was read from
-  std::vector<PartEntry> parts;   // in file order
+  std::filesystem::path file;    // the YAML it was read from
+  std::vector<PartEntry> parts;  // in file order
 
   const PartEntry* find(std::string_view name) const;  // nullptr when absent
   // InputError "unknown part 'x' in <file> (known: a, b, ...)" when absent.

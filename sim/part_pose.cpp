@@ -18,7 +18,9 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 constexpr std::uint64_t kFaceStream = 0xFACE;
 constexpr std::uint64_t kYawStream = 0x7A3;
 
-Eigen::Matrix3d yaw(double angle_rad) { return Eigen::AngleAxisd(angle_rad, Eigen::Vector3d::UnitZ()).toRotationMatrix(); }
+Eigen::Matrix3d yaw(double angle_rad) {
+  return Eigen::AngleAxisd(angle_rad, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+}
 
 // Divergence theorem over the triangles: signed volume and first moment. The sign follows the
 // winding; their ratio does not depend on it.
@@ -84,8 +86,8 @@ Eigen::Matrix3d random_rotation(std::uint64_t seed) {
   const double a = std::sqrt(1.0 - u1);
   const double b = std::sqrt(u1);
   const double two_pi = 2.0 * std::numbers::pi;
-  const Eigen::Quaterniond q(b * std::cos(two_pi * u3), a * std::sin(two_pi * u2), a * std::cos(two_pi * u2),
-                             b * std::sin(two_pi * u3));
+  const Eigen::Quaterniond q(b * std::cos(two_pi * u3), a * std::sin(two_pi * u2),
+                             a * std::cos(two_pi * u2), b * std::sin(two_pi * u3));
   return q.normalized().toRotationMatrix();
 }
 
@@ -96,7 +98,9 @@ Eigen::Vector3d centre_of_mass(const TriangleMesh& mesh) {
     // A flat mesh: the vertex mean lies in its plane.
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     for (const Eigen::Vector3f& v : mesh.vertices) mean += v.cast<double>();
-    return mesh.vertices.empty() ? mean : Eigen::Vector3d(mean / static_cast<double>(mesh.vertices.size()));
+    return mesh.vertices.empty()
+               ? mean
+               : Eigen::Vector3d(mean / static_cast<double>(mesh.vertices.size()));
   }
 }
 
@@ -146,14 +150,15 @@ Eigen::Matrix3d resting_rotation(const TriangleMesh& mesh, std::uint64_t seed) {
   return yaw(yaw_rad) * rotation_looking_along(-hull.faces[chosen].normal);
 }
 
-Eigen::Isometry3d place_on_belt(const TriangleMesh& mesh, const Eigen::Matrix3d& R_belt_part, double x_mm,
-                                double y_mm) {
+Eigen::Isometry3d place_on_belt(const TriangleMesh& mesh, const Eigen::Matrix3d& R_belt_part,
+                                double x_mm, double y_mm) {
   if (mesh.vertices.empty()) throw std::invalid_argument("place_on_belt: empty mesh");
   Eigen::AlignedBox3d box;
   for (const Eigen::Vector3f& v : mesh.vertices) box.extend(R_belt_part * v.cast<double>());
   Eigen::Isometry3d T_belt_part = Eigen::Isometry3d::Identity();
   T_belt_part.linear() = R_belt_part;
-  T_belt_part.translation() = Eigen::Vector3d(x_mm - box.center().x(), y_mm - box.center().y(), -box.min().z());
+  T_belt_part.translation() =
+      Eigen::Vector3d(x_mm - box.center().x(), y_mm - box.center().y(), -box.min().z());
   return T_belt_part;
 }
 

@@ -33,7 +33,7 @@ Eigen::Matrix3d resting_rotation(const TriangleMesh& mesh, std::uint64_t seed);
 
 // T_belt_part placing the rotated part with its lowest vertex on the belt (z = 0) and the
 // centre of its bounding box at (x_mm, y_mm).
-Eigen::Isometry3d place_on_belt(const TriangleMesh& mesh, const Eigen::Matrix3d& R_belt_part, double x_mm = 0.0,
-                                double y_mm = 0.0);
+Eigen::Isometry3d place_on_belt(const TriangleMesh& mesh, const Eigen::Matrix3d& R_belt_part,
+                                double x_mm = 0.0, double y_mm = 0.0);
 
 }  // namespace cosmos

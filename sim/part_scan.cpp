@@ -6,8 +6,8 @@
 namespace cosmos {
 
 RangeImage scan_single_part(const TriangleMesh& mesh, const std::string& part_name,
-                            const Eigen::Matrix3d& R_belt_part, const ScannerParameters& parameters, ScanMode mode,
-                            const ProfileObserver& observer) {
+                            const Eigen::Matrix3d& R_belt_part, const ScannerParameters& parameters,
+                            ScanMode mode, const ProfileObserver& observer) {
   ConveyorScene scene;
   const int mesh_index = scene.add_mesh(mesh);
   scene.add_part(part_name, mesh_index, place_on_belt(mesh, R_belt_part));
@@ -16,7 +16,8 @@ RangeImage scan_single_part(const TriangleMesh& mesh, const std::string& part_na
   RangeImage image = scan_range_image(scene, scanner, {}, observer);
   if (image.width() > 0) {
     const Eigen::Isometry3d& T_scanner_part = scene.parts().front().T_belt_part;
-    image.ground_truth = GroundTruthPose{part_name, T_scanner_part.linear(), T_scanner_part.translation()};
+    image.ground_truth =
+        GroundTruthPose{part_name, T_scanner_part.linear(), T_scanner_part.translation()};
   }
   return image;
 }

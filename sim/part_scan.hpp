@@ -7,9 +7,9 @@
 #include <string>
 
 #include "core/range_image.hpp"
+#include "scanner/scanner_model.hpp"
 #include "sim/mesh.hpp"
 #include "sim/range_image_scan.hpp"
-#include "scanner/scanner_model.hpp"
 #include "sim/simulated_scanner.hpp"
 
 namespace cosmos {
@@ -17,6 +17,7 @@ namespace cosmos {
 // Empty image (width 0) when the scanner measured nothing of the part.
 RangeImage scan_single_part(const TriangleMesh& mesh, const std::string& part_name,
                             const Eigen::Matrix3d& R_belt_part, const ScannerParameters& parameters,
-                            ScanMode mode = ScanMode::kProfile, const ProfileObserver& observer = {});
+                            ScanMode mode = ScanMode::kProfile,
+                            const ProfileObserver& observer = {});
 
 }  // namespace cosmos

@@ -13,14 +13,14 @@ TriangleMesh make_icosphere(double radius_mm, int subdivisions) {
   }
   const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
   std::vector<Eigen::Vector3d> unit = {
-      {-1, phi, 0}, {1, phi, 0}, {-1, -phi, 0}, {1, -phi, 0}, {0, -1, phi}, {0, 1, phi},
-      {0, -1, -phi}, {0, 1, -phi}, {phi, 0, -1}, {phi, 0, 1}, {-phi, 0, -1}, {-phi, 0, 1},
+      {-1, phi, 0},  {1, phi, 0},  {-1, -phi, 0}, {1, -phi, 0}, {0, -1, phi},  {0, 1, phi},
+      {0, -1, -phi}, {0, 1, -phi}, {phi, 0, -1},  {phi, 0, 1},  {-phi, 0, -1}, {-phi, 0, 1},
   };
   for (Eigen::Vector3d& v : unit) v.normalize();
   std::vector<Eigen::Vector3i> faces = {
-      {0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-      {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
-      {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1},
+      {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+      {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+      {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1},
   };
   for (int level = 0; level < subdivisions; ++level) {
     // Shared edges get one midpoint, so the mesh stays watertight.
@@ -28,7 +28,8 @@ TriangleMesh make_icosphere(double radius_mm, int subdivisions) {
     const auto midpoint = [&](int a, int b) {
       const std::pair<int, int> key(std::min(a, b), std::max(a, b));
       if (const auto it = midpoints.find(key); it != midpoints.end()) return it->second;
-      unit.push_back((unit[static_cast<std::size_t>(a)] + unit[static_cast<std::size_t>(b)]).normalized());
+      unit.push_back(
+          (unit[static_cast<std::size_t>(a)] + unit[static_cast<std::size_t>(b)]).normalized());
       const int index = static_cast<int>(unit.size()) - 1;
       midpoints.emplace(key, index);
       return index;
@@ -73,7 +74,8 @@ TriangleMesh make_box(double size_x_mm, double size_y_mm, double size_z_mm) {
   const Eigen::Vector3f half(static_cast<float>(size_x_mm / 2), static_cast<float>(size_y_mm / 2),
                              static_cast<float>(size_z_mm / 2));
   for (int corner = 0; corner < 8; ++corner) {
-    mesh.vertices.emplace_back((corner & 1) ? half.x() : -half.x(), (corner & 2) ? half.y() : -half.y(),
+    mesh.vertices.emplace_back((corner & 1) ? half.x() : -half.x(),
+                               (corner & 2) ? half.y() : -half.y(),
                                (corner & 4) ? half.z() : -half.z());
   }
   // Corner index bits: x = 1, y = 2, z = 4.

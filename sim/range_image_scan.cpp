@@ -5,8 +5,8 @@
 
 namespace cosmos {
 
-RangeImage scan_range_image(const ConveyorScene& scene, SimulatedScanner& scanner, const RangeScanOptions& options,
-                            const ProfileObserver& observer) {
+RangeImage scan_range_image(const ConveyorScene& scene, SimulatedScanner& scanner,
+                            const RangeScanOptions& options, const ProfileObserver& observer) {
   const ScannerParameters& parameters = scanner.parameters();
   const ProfileRange range = profiles_covering(scene, parameters, options.scan_margin_mm);
   if (range.count() <= 0) return {};
@@ -45,8 +45,8 @@ RangeImage scan_range_image(const ConveyorScene& scene, SimulatedScanner& scanne
   last_column = std::min(last_column + margin, width - 1);
 
   const double step_mm = parameters.profile_step_mm();
-  RangeImage image(last_column - first_column + 1, last_row - first_row + 1, parameters.sample_spacing_mm(width),
-                   step_mm);
+  RangeImage image(last_column - first_column + 1, last_row - first_row + 1,
+                   parameters.sample_spacing_mm(width), step_mm);
   image.origin_x_mm = parameters.first_sample_x_mm(width) + first_column * image.pixel_size_x_mm;
   // Image row 0 is the last exposed profile kept: the smallest y.
   image.origin_y_mm = laser_y_belt_mm(parameters, range.first + last_row);

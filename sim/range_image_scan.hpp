@@ -29,12 +29,13 @@ struct RangeScanOptions {
 };
 
 // Called after each profile (in exposure order), e.g. to save the scanner's camera frames.
-using ProfileObserver =
-    std::function<void(std::int64_t profile_index, const Profile& profile, const SimulatedScanner& scanner)>;
+using ProfileObserver = std::function<void(std::int64_t profile_index, const Profile& profile,
+                                           const SimulatedScanner& scanner)>;
 
 // Scans every profile covering the scene. Returns an image without ground truth (the caller
 // knows which part it is), or an empty image (width 0) when no part pixel was measured.
 RangeImage scan_range_image(const ConveyorScene& scene, SimulatedScanner& scanner,
-                            const RangeScanOptions& options = {}, const ProfileObserver& observer = {});
+                            const RangeScanOptions& options = {},
+                            const ProfileObserver& observer = {});
 
 }  // namespace cosmos

@@ -31,10 +31,14 @@ struct SimulatedScanner::CameraPath {
   StripeProfiler profiler;  // the hardware's frame → profile path
 };
 
-SimulatedScanner::SimulatedScanner(const ConveyorScene& scene, const ScannerParameters& parameters, ScanMode mode)
-    : parameters_(parameters), mode_(mode), laser_(scene, parameters, laser_samples(parameters, mode)) {
+SimulatedScanner::SimulatedScanner(const ConveyorScene& scene, const ScannerParameters& parameters,
+                                   ScanMode mode)
+    : parameters_(parameters),
+      mode_(mode),
+      laser_(scene, parameters, laser_samples(parameters, mode)) {
   laser_.reserve(line_);
-  if (mode == ScanMode::kCamera) camera_ = std::make_unique<CameraPath>(parameters, laser_.geometry());
+  if (mode == ScanMode::kCamera)
+    camera_ = std::make_unique<CameraPath>(parameters, laser_.geometry());
 }
 
 SimulatedScanner::~SimulatedScanner() = default;
@@ -71,7 +75,8 @@ void SimulatedScanner::acquire(std::int64_t profile_index, Profile& profile) noe
 }
 
 void SimulatedScanner::acquire_profile_mode(std::int64_t encoder_ticks, Profile& profile) noexcept {
-  SeededRandom noise(mix_seed(parameters_.seed ^ kNoiseStream, static_cast<std::uint64_t>(encoder_ticks)));
+  SeededRandom noise(
+      mix_seed(parameters_.seed ^ kNoiseStream, static_cast<std::uint64_t>(encoder_ticks)));
   const double sigma_mm = parameters_.z_noise_mm;
   for (std::size_t i = 0; i < profile.z_mm.size(); ++i) {
     if (line_.state[i] != LaserSampleState::kMeasured) continue;
@@ -81,8 +86,9 @@ void SimulatedScanner::acquire_profile_mode(std::int64_t encoder_ticks, Profile&
 
 void SimulatedScanner::acquire_camera_mode(std::int64_t encoder_ticks, Profile& profile) noexcept {
   CameraPath& path = *camera_;
-  path.renderer.render(line_, mix_seed(parameters_.seed ^ kFrameStream, static_cast<std::uint64_t>(encoder_ticks)),
-                       path.frame);
+  path.renderer.render(
+      line_, mix_seed(parameters_.seed ^ kFrameStream, static_cast<std::uint64_t>(encoder_ticks)),
+      path.frame);
   path.profiler.profile_frame(path.frame, path.renderer.roi(), profile);
 }
 

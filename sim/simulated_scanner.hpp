@@ -20,9 +20,9 @@
 
 #include "core/profile.hpp"
 #include "firmware_bridge/laser_stripe_extraction.hpp"
+#include "scanner/scanner_model.hpp"
 #include "sim/conveyor_scene.hpp"
 #include "sim/laser_line_scanner.hpp"
-#include "scanner/scanner_model.hpp"
 
 namespace cosmos {
 

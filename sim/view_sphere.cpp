@@ -16,19 +16,27 @@ using Triangle = std::array<Eigen::Vector3d, 3>;
 std::array<Eigen::Vector3d, 12> icosahedron_vertices() {
   const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
   std::array<Eigen::Vector3d, 12> v = {{
-      {-1, phi, 0}, {1, phi, 0}, {-1, -phi, 0}, {1, -phi, 0},
-      {0, -1, phi}, {0, 1, phi}, {0, -1, -phi}, {0, 1, -phi},
-      {phi, 0, -1}, {phi, 0, 1}, {-phi, 0, -1}, {-phi, 0, 1},
+      {-1, phi, 0},
+      {1, phi, 0},
+      {-1, -phi, 0},
+      {1, -phi, 0},
+      {0, -1, phi},
+      {0, 1, phi},
+      {0, -1, -phi},
+      {0, 1, -phi},
+      {phi, 0, -1},
+      {phi, 0, 1},
+      {-phi, 0, -1},
+      {-phi, 0, 1},
   }};
   for (Eigen::Vector3d& vertex : v) vertex.normalize();
   return v;
 }
 
 constexpr std::array<std::array<int, 3>, 20> kIcosahedronFaces = {{
-    {0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11},
-    {1, 5, 9}, {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-    {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8}, {3, 8, 9},
-    {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1},
+    {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+    {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+    {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1},
 }};
 
 // Depth-first so the children of one face stay next to each other in the output order.
@@ -74,8 +82,9 @@ Eigen::Matrix3d rotation_looking_along(const Eigen::Vector3d& direction_part) {
   // Near -z the shortest arc's axis is ill-conditioned; a fixed half turn about x keeps the
   // result deterministic and exact there.
   if (sin_angle < 1e-12) {
-    return cos_angle > 0.0 ? Eigen::Matrix3d::Identity()
-                           : Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d::UnitX()).toRotationMatrix();
+    return cos_angle > 0.0
+               ? Eigen::Matrix3d::Identity()
+               : Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d::UnitX()).toRotationMatrix();
   }
   return Eigen::AngleAxisd(std::atan2(sin_angle, cos_angle), axis / sin_angle).toRotationMatrix();
 }

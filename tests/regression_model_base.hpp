@@ -15,10 +15,9 @@ inline std::filesystem::path regression_model_base() {
   const std::filesystem::path path = COSMOS_REGRESSION_MODEL_BASE;
   if (!std::filesystem::exists(path)) {
     std::filesystem::create_directories(path.parent_path());
-    const std::string command = std::string("'") + COSMOS_BINARY +
-                                "' modelbase build --catalog '" + COSMOS_SOURCE_DIR +
-                                "/config/parts-regression.yaml' --views 80 --out '" +
-                                path.string() + "' >/dev/null 2>&1";
+    const std::string command =
+        std::string("'") + COSMOS_BINARY + "' modelbase build --catalog '" + COSMOS_SOURCE_DIR +
+        "/config/parts-regression.yaml' --views 80 --out '" + path.string() + "' >/dev/null 2>&1";
     EXPECT_EQ(std::system(command.c_str()), 0) << command;
   }
   return path;

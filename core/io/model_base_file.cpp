@@ -1,10 +1,11 @@
 #include "core/io/model_base_file.hpp"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <memory>
-#include <unistd.h>
 
 #include "core/input_error.hpp"
 #include "core/io/model_base_payload.hpp"
@@ -53,7 +54,8 @@ struct FileCloser {
 using File = std::unique_ptr<std::FILE, FileCloser>;
 
 void write_all(std::FILE* file, const void* data, std::size_t bytes, const fs::path& path) {
-  if (std::fwrite(data, 1, bytes, file) != bytes) refuse(path, std::string("cannot write: ") + std::strerror(errno));
+  if (std::fwrite(data, 1, bytes, file) != bytes)
+    refuse(path, std::string("cannot write: ") + std::strerror(errno));
 }
 
 // The whole file in one block, aligned for the payload's doubles (operator new aligns to 16
@@ -74,7 +76,8 @@ FileBytes read_file(const fs::path& path) {
   out.size = static_cast<std::size_t>(size);
   out.bytes = std::shared_ptr<std::uint8_t[]>(new std::uint8_t[std::max<std::size_t>(out.size, 1)]);
   if (std::fread(out.bytes.get(), 1, out.size, file.get()) != out.size)
-    refuse(path, std::string("cannot read: ") + (std::ferror(file.get()) ? std::strerror(errno) : "shorter than its size"));
+    refuse(path, std::string("cannot read: ") +
+                     (std::ferror(file.get()) ? std::strerror(errno) : "shorter than its size"));
   return out;
 }
 
@@ -94,17 +97,19 @@ Header check_header(const FileBytes& file, const fs::path& path) {
   header.payload_bytes = get_le(p + 16, 8);
   header.payload_checksum = get_le(p + 24, 8);
   if (header.format_version != ModelBase::kFormatVersion)
-    refuse(path, "format version " + std::to_string(header.format_version) + ", this build reads version " +
-                     std::to_string(ModelBase::kFormatVersion) + " (rebuild it with `cosmos modelbase build`)");
+    refuse(path, "format version " + std::to_string(header.format_version) +
+                     ", this build reads version " + std::to_string(ModelBase::kFormatVersion) +
+                     " (rebuild it with `cosmos modelbase build`)");
   if (header.header_bytes != kModelBaseHeaderBytes)
     refuse(path, "corrupted: header size " + std::to_string(header.header_bytes) + ", expected " +
                      std::to_string(kModelBaseHeaderBytes));
   const std::uint64_t expected_size = kModelBaseHeaderBytes + header.payload_bytes;
   if (header.payload_bytes > kMaxPayloadBytes || file.size > expected_size)
-    refuse(path, "corrupted: size mismatch (" + std::to_string(file.size) + " bytes, the header announces " +
-                     std::to_string(expected_size) + ")");
+    refuse(path, "corrupted: size mismatch (" + std::to_string(file.size) +
+                     " bytes, the header announces " + std::to_string(expected_size) + ")");
   if (file.size < expected_size)
-    refuse(path, "truncated: " + std::to_string(file.size) + " of " + std::to_string(expected_size) + " bytes");
+    refuse(path, "truncated: " + std::to_string(file.size) + " of " +
+                     std::to_string(expected_size) + " bytes");
   return header;
 }
 
@@ -113,7 +118,8 @@ Header check_header(const FileBytes& file, const fs::path& path) {
 void write_model_base(const ModelBase& base, const fs::path& path) {
   const std::size_t estimate = estimated_payload_bytes(base);
   if (estimate > kMaxPayloadBytes)
-    refuse(path, "model base too large for one file (~" + std::to_string(estimate >> 20) + " MiB, at most 2048 MiB)");
+    refuse(path, "model base too large for one file (~" + std::to_string(estimate >> 20) +
+                     " MiB, at most 2048 MiB)");
   flatbuffers::FlatBufferBuilder builder(estimate);
   encode_model_base(base, builder);
   const std::uint8_t* payload = builder.GetBufferPointer();
@@ -133,7 +139,8 @@ void write_model_base(const ModelBase& base, const fs::path& path) {
     if (!file) refuse(path, std::string("cannot write: ") + std::strerror(errno));
     write_all(file.get(), header, sizeof header, path);
     write_all(file.get(), payload, payload_bytes, path);
-    if (std::fflush(file.get()) != 0) refuse(path, std::string("cannot write: ") + std::strerror(errno));
+    if (std::fflush(file.get()) != 0)
+      refuse(path, std::string("cannot write: ") + std::strerror(errno));
   }
   std::error_code error;
   fs::rename(temporary, path, error);
@@ -143,21 +150,24 @@ void write_model_base(const ModelBase& base, const fs::path& path) {
   }
 }
 
-ModelBase read_model_base(const fs::path& path, const std::optional<std::string>& expected_parameters_text) {
+ModelBase read_model_base(const fs::path& path,
+                          const std::optional<std::string>& expected_parameters_text) {
   const FileBytes file = read_file(path);
   const Header header = check_header(file, path);
   const std::uint8_t* payload = file.bytes.get() + kModelBaseHeaderBytes;
   const std::uint64_t checksum = xxh64(payload, header.payload_bytes);
   if (checksum != header.payload_checksum)
-    refuse(path, "corrupted: checksum mismatch (header " + hex(header.payload_checksum) + ", payload " + hex(checksum) +
-                     ")");
+    refuse(path, "corrupted: checksum mismatch (header " + hex(header.payload_checksum) +
+                     ", payload " + hex(checksum) + ")");
   ModelBase base;
   if (auto reason = decode_model_base(payload, header.payload_bytes, file.bytes, base))
     refuse(path, "corrupted: " + *reason);
   if (expected_parameters_text) {
-    if (auto difference = first_parameter_difference(*expected_parameters_text, base.parameters_text))
+    if (auto difference =
+            first_parameter_difference(*expected_parameters_text, base.parameters_text))
       refuse(path, "built with other parameters: " + difference->key + " is " + difference->actual +
-                       " in the file, " + difference->expected + " expected (rebuild it with `cosmos modelbase build`)");
+                       " in the file, " + difference->expected +
+                       " expected (rebuild it with `cosmos modelbase build`)");
   }
   return base;
 }

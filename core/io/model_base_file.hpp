@@ -31,7 +31,8 @@ inline constexpr std::size_t kModelBaseHeaderBytes = 32;
 void write_model_base(const ModelBase& base, const std::filesystem::path& path);
 
 // With expected_parameters_text, a base built with other parameters is refused.
-ModelBase read_model_base(const std::filesystem::path& path,
-                          const std::optional<std::string>& expected_parameters_text = std::nullopt);
+ModelBase read_model_base(
+    const std::filesystem::path& path,
+    const std::optional<std::string>& expected_parameters_text = std::nullopt);
 
 }  // namespace cosmos

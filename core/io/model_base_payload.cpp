@@ -15,7 +15,9 @@ using flatbuffers::FlatBufferBuilder;
 using flatbuffers::Offset;
 
 fb::Vec3 vec3(const Eigen::Vector3d& v) { return fb::Vec3(v.x(), v.y(), v.z()); }
-Eigen::Vector3d vec3(const fb::Vec3* v) { return v ? Eigen::Vector3d(v->x(), v->y(), v->z()) : Eigen::Vector3d::Zero(); }
+Eigen::Vector3d vec3(const fb::Vec3* v) {
+  return v ? Eigen::Vector3d(v->x(), v->y(), v->z()) : Eigen::Vector3d::Zero();
+}
 
 fb::Transform transform(const RigidTransform& T) {
   const Eigen::Matrix3d& R = T.rotation;
@@ -26,7 +28,8 @@ fb::Transform transform(const RigidTransform& T) {
 RigidTransform transform(const fb::Transform* T) {
   RigidTransform out;
   if (!T) return out;
-  out.rotation << vec3(&T->row0()).transpose(), vec3(&T->row1()).transpose(), vec3(&T->row2()).transpose();
+  out.rotation << vec3(&T->row0()).transpose(), vec3(&T->row1()).transpose(),
+      vec3(&T->row2()).transpose();
   out.translation_mm = vec3(&T->translation_mm());
   return out;
 }
@@ -34,39 +37,47 @@ RigidTransform transform(const fb::Transform* T) {
 Offset<fb::Patch> encode_patch(FlatBufferBuilder& b, const Csmp& p) {
   std::vector<fb::PatchNeighbor> neighbors;
   neighbors.reserve(p.neighbors.size());
-  for (const PatchNeighbor& n : p.neighbors) neighbors.emplace_back(n.patch, n.shared_boundary_pixels);
+  for (const PatchNeighbor& n : p.neighbors)
+    neighbors.emplace_back(n.patch, n.shared_boundary_pixels);
   const auto neighbor_vector = b.CreateVectorOfStructs(neighbors);
   const fb::Vec3 normal = vec3(p.mean_normal), centroid = vec3(p.centroid_mm);
-  return fb::CreatePatch(b, p.id, p.area_mm2, &normal, p.shape_index, p.shape_index_min, p.shape_index_max,
-                         p.mean_curvedness_per_mm, &centroid, p.pixels, p.planar, neighbor_vector);
+  return fb::CreatePatch(b, p.id, p.area_mm2, &normal, p.shape_index, p.shape_index_min,
+                         p.shape_index_max, p.mean_curvedness_per_mm, &centroid, p.pixels, p.planar,
+                         neighbor_vector);
 }
 
 Offset<fb::GaussMapPoint> encode_gauss_point(FlatBufferBuilder& b, const GaussMapPoint& g) {
   std::vector<Offset<fb::SupportTerm>> terms;
   for (const SupportTerm& t : g.terms) {
     const auto patches = b.CreateVector(t.patches);
-    terms.push_back(fb::CreateSupportTerm(b, t.shape_index, t.area_mm2, t.curvedness_area, patches));
+    terms.push_back(
+        fb::CreateSupportTerm(b, t.shape_index, t.area_mm2, t.curvedness_area, patches));
   }
   const auto term_vector = b.CreateVector(terms);
   const fb::Vec3 direction = vec3(g.direction);
   return fb::CreateGaussMapPoint(b, &direction, term_vector);
 }
 
-bool packed_is_set(const PackedRegistrationPoints& p) { return p.size() > 0 || p.grid_width > 0 || p.grid_height > 0; }
+bool packed_is_set(const PackedRegistrationPoints& p) {
+  return p.size() > 0 || p.grid_width > 0 || p.grid_height > 0;
+}
 
-Offset<fb::RegistrationPoints> encode_registration(FlatBufferBuilder& b, const ModelBaseView& view) {
-  const PackedRegistrationPoints packed =
-      packed_is_set(view.registration_packed) ? view.registration_packed : pack_registration_points(view.registration);
+Offset<fb::RegistrationPoints> encode_registration(FlatBufferBuilder& b,
+                                                   const ModelBaseView& view) {
+  const PackedRegistrationPoints packed = packed_is_set(view.registration_packed)
+                                              ? view.registration_packed
+                                              : pack_registration_points(view.registration);
   const auto occupied = b.CreateVector(packed.occupied_cells.data(), packed.occupied_cells.size());
   const auto plane = b.CreateVector(packed.plane.data(), packed.plane.size());
   const auto curvature = b.CreateVector(packed.curvature.data(), packed.curvature.size());
   const auto normal = b.CreateVector(packed.normal_xy.data(), packed.normal_xy.size());
   const auto residual = b.CreateVector(packed.residual.data(), packed.residual.size());
-  const auto cofactor = b.CreateVector(packed.fit_cofactor.data(), static_cast<std::size_t>(packed.fit_cofactor.size()));
-  return fb::CreateRegistrationPoints(b, packed.grid_width, packed.grid_height, packed.origin_x_mm, packed.origin_y_mm,
-                                      packed.spacing_x_mm, packed.spacing_y_mm, occupied, plane, curvature,
-                                      packed.curvature_step, normal, residual, packed.residual_step_mm, cofactor,
-                                      packed.z_noise_sigma_mm);
+  const auto cofactor = b.CreateVector(packed.fit_cofactor.data(),
+                                       static_cast<std::size_t>(packed.fit_cofactor.size()));
+  return fb::CreateRegistrationPoints(
+      b, packed.grid_width, packed.grid_height, packed.origin_x_mm, packed.origin_y_mm,
+      packed.spacing_x_mm, packed.spacing_y_mm, occupied, plane, curvature, packed.curvature_step,
+      normal, residual, packed.residual_step_mm, cofactor, packed.z_noise_sigma_mm);
 }
 
 Offset<fb::View> encode_view(FlatBufferBuilder& b, const ModelBaseView& view) {
@@ -74,14 +85,16 @@ Offset<fb::View> encode_view(FlatBufferBuilder& b, const ModelBaseView& view) {
   for (const Csmp& p : view.cosmos.patches) patches.push_back(encode_patch(b, p));
   const auto patch_vector = b.CreateVector(patches);
   std::vector<Offset<fb::GaussMapPoint>> gauss_map;
-  for (const GaussMapPoint& g : view.cosmos.gauss_map) gauss_map.push_back(encode_gauss_point(b, g));
+  for (const GaussMapPoint& g : view.cosmos.gauss_map)
+    gauss_map.push_back(encode_gauss_point(b, g));
   const auto gauss_vector = b.CreateVector(gauss_map);
   const auto moments = b.CreateVector(view.moments.data(), view.moments.size());
   const auto registration = encode_registration(b, view);
   const fb::Vec3 direction = vec3(view.direction_part);
   const fb::Transform T_scanner_part = transform(view.T_scanner_part);
-  return fb::CreateView(b, view.part_index, view.view_index, &direction, &T_scanner_part, patch_vector, gauss_vector,
-                        view.cosmos.visible_area_mm2, moments, registration);
+  return fb::CreateView(b, view.part_index, view.view_index, &direction, &T_scanner_part,
+                        patch_vector, gauss_vector, view.cosmos.visible_area_mm2, moments,
+                        registration);
 }
 
 }  // namespace
@@ -92,7 +105,8 @@ std::size_t estimated_payload_bytes(const ModelBase& base) {
   for (const ViewCluster& cluster : base.clusters) bytes += 160 + 4 * cluster.views.size();
   for (const ModelBaseView& view : base.views) {
     const bool packed = packed_is_set(view.registration_packed);
-    const std::size_t points = static_cast<std::size_t>(packed ? view.registration_packed.size() : view.registration.size());
+    const std::size_t points = static_cast<std::size_t>(packed ? view.registration_packed.size()
+                                                               : view.registration.size());
     const std::size_t cells = packed ? view.registration_packed.occupied_bytes()
                                      : (view.registration.cell_point.size() + 7) / 8;
     bytes += 1024 + 24 * points + cells;  // core/registration/packed_registration_points.hpp
@@ -126,8 +140,8 @@ void encode_model_base(const ModelBase& base, FlatBufferBuilder& b) {
   const auto cluster_vector = b.CreateVector(clusters);
   const auto catalog_hash = b.CreateString(base.catalog_hash);
   const auto parameters_text = b.CreateString(base.parameters_text);
-  b.Finish(fb::CreateModelBase(b, ModelBase::kFormatVersion, catalog_hash, parameters_text, part_vector, view_vector,
-                               cluster_vector),
+  b.Finish(fb::CreateModelBase(b, ModelBase::kFormatVersion, catalog_hash, parameters_text,
+                               part_vector, view_vector, cluster_vector),
            fb::ModelBaseIdentifier());
 }
 
@@ -143,7 +157,8 @@ std::string view_label(std::size_t v) { return "view " + std::to_string(v); }
 std::optional<std::string> decode_moments(const flatbuffers::Vector<double>* in, MomentVector& out,
                                           const std::string& where) {
   if (!in || in->size() != out.size())
-    return where + ": " + std::to_string(in ? in->size() : 0) + " moments, expected " + std::to_string(out.size());
+    return where + ": " + std::to_string(in ? in->size() : 0) + " moments, expected " +
+           std::to_string(out.size());
   std::memcpy(out.data(), in->data(), sizeof(double) * out.size());
   return std::nullopt;
 }
@@ -155,12 +170,21 @@ CosmosView decode_cosmos(const fb::View& in) {
     cosmos.patches.reserve(patches->size());
     for (const fb::Patch* p : *patches) {
       Csmp& csmp = cosmos.patches.emplace_back();
-      csmp = Csmp{p->id(), p->area_mm2(), vec3(p->mean_normal()), p->shape_index(), p->shape_index_min(),
-                  p->shape_index_max(), p->mean_curvedness_per_mm(), vec3(p->centroid_mm()), p->pixels(),
-                  p->planar(), {}};
+      csmp = Csmp{p->id(),
+                  p->area_mm2(),
+                  vec3(p->mean_normal()),
+                  p->shape_index(),
+                  p->shape_index_min(),
+                  p->shape_index_max(),
+                  p->mean_curvedness_per_mm(),
+                  vec3(p->centroid_mm()),
+                  p->pixels(),
+                  p->planar(),
+                  {}};
       if (!p->neighbors()) continue;
       csmp.neighbors.reserve(p->neighbors()->size());
-      for (const fb::PatchNeighbor* n : *p->neighbors()) csmp.neighbors.push_back({n->patch(), n->shared_boundary_pixels()});
+      for (const fb::PatchNeighbor* n : *p->neighbors())
+        csmp.neighbors.push_back({n->patch(), n->shared_boundary_pixels()});
     }
   }
   if (const auto* gauss_map = in.gauss_map()) {
@@ -171,15 +195,20 @@ CosmosView decode_cosmos(const fb::View& in) {
       if (!g->terms()) continue;
       for (const fb::SupportTerm* t : *g->terms()) {
         const auto patches = span_of(t->patches());
-        point.terms.push_back({t->shape_index(), t->area_mm2(), t->curvedness_area(), {patches.begin(), patches.end()}});
+        point.terms.push_back({t->shape_index(),
+                               t->area_mm2(),
+                               t->curvedness_area(),
+                               {patches.begin(), patches.end()}});
       }
     }
   }
   return cosmos;
 }
 
-std::optional<std::string> decode_registration(const fb::RegistrationPoints* in, const std::shared_ptr<const void>& owner,
-                                               PackedRegistrationPoints& out, const std::string& where) {
+std::optional<std::string> decode_registration(const fb::RegistrationPoints* in,
+                                               const std::shared_ptr<const void>& owner,
+                                               PackedRegistrationPoints& out,
+                                               const std::string& where) {
   if (!in) return where + ": no registration points table";
   out.grid_width = in->grid_width();
   out.grid_height = in->grid_height();
@@ -201,8 +230,9 @@ std::optional<std::string> decode_registration(const fb::RegistrationPoints* in,
     return where + ": fit cofactor has " + std::to_string(cofactor.size()) + " values, expected 36";
   std::memcpy(out.fit_cofactor.data(), cofactor.data(), sizeof(double) * cofactor.size());
   if (!packed_registration_points_consistent(out))
-    return where + ": registration arrays do not match the grid (" + std::to_string(out.grid_width) + " x " +
-           std::to_string(out.grid_height) + " cells, " + std::to_string(out.size()) + " points)";
+    return where + ": registration arrays do not match the grid (" +
+           std::to_string(out.grid_width) + " x " + std::to_string(out.grid_height) + " cells, " +
+           std::to_string(out.size()) + " points)";
   return std::nullopt;
 }
 
@@ -213,19 +243,20 @@ std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::s
   if (!fb::ModelBaseBufferHasIdentifier(payload)) return std::string("no CSMB payload identifier");
   // The defaults (one million tables) are too few for 20 x 320 views of ~30 tables each.
   flatbuffers::Verifier verifier(payload, payload_bytes, 64, 1u << 30);
-  if (!fb::VerifyModelBaseBuffer(verifier)) return std::string("FlatBuffers verifier rejects the payload");
+  if (!fb::VerifyModelBaseBuffer(verifier))
+    return std::string("FlatBuffers verifier rejects the payload");
   const fb::ModelBase* in = fb::GetModelBase(payload);
   if (in->format_version() != ModelBase::kFormatVersion)
-    return "payload says format version " + std::to_string(in->format_version()) + ", header says " +
-           std::to_string(ModelBase::kFormatVersion);
+    return "payload says format version " + std::to_string(in->format_version()) +
+           ", header says " + std::to_string(ModelBase::kFormatVersion);
 
   out = ModelBase{};
   out.catalog_hash = in->catalog_hash() ? in->catalog_hash()->str() : "";
   out.parameters_text = in->parameters_text() ? in->parameters_text()->str() : "";
   if (const auto* parts = in->parts()) {
     for (const fb::Part* p : *parts)
-      out.parts.push_back({p->name() ? p->name()->str() : "", p->mesh() ? p->mesh()->str() : "", p->size_mm(),
-                           p->diameter_mm(), p->symmetric()});
+      out.parts.push_back({p->name() ? p->name()->str() : "", p->mesh() ? p->mesh()->str() : "",
+                           p->size_mm(), p->diameter_mm(), p->symmetric()});
   }
   const int part_count = static_cast<int>(out.parts.size());
   if (const auto* views = in->views()) {
@@ -235,13 +266,16 @@ std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::s
       ModelBaseView& view_out = out.views[v];
       view_out.part_index = view.part_index();
       if (view_out.part_index < 0 || view_out.part_index >= part_count)
-        return view_label(v) + ": part index " + std::to_string(view_out.part_index) + " out of range";
+        return view_label(v) + ": part index " + std::to_string(view_out.part_index) +
+               " out of range";
       view_out.view_index = view.view_index();
       view_out.direction_part = vec3(view.direction_part());
       view_out.T_scanner_part = transform(view.t_scanner_part());
       view_out.cosmos = decode_cosmos(view);
-      if (auto error = decode_moments(view.moments(), view_out.moments, view_label(v))) return error;
-      if (auto error = decode_registration(view.registration(), owner, view_out.registration_packed, view_label(v)))
+      if (auto error = decode_moments(view.moments(), view_out.moments, view_label(v)))
+        return error;
+      if (auto error = decode_registration(view.registration(), owner, view_out.registration_packed,
+                                           view_label(v)))
         return error;
     }
   }
@@ -261,7 +295,8 @@ std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::s
           return where + ": view " + std::to_string(member) + " belongs to another part";
       }
       cluster_out.views.assign(members.begin(), members.end());
-      if (auto error = decode_moments(cluster.centroid(), cluster_out.centroid, where)) return error;
+      if (auto error = decode_moments(cluster.centroid(), cluster_out.centroid, where))
+        return error;
     }
   }
   return std::nullopt;

@@ -1,13 +1,13 @@
 #pragma once
 // The FlatBuffers payload of the model-base file (core/io/model_base.fbs) to and from the
 // in-memory ModelBase. Internal to core/io: model_base_file.cpp frames it with the header.
+#include <flatbuffers/flatbuffers.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
-
-#include <flatbuffers/flatbuffers.h>
 
 #include "core/modelbase/model_base.hpp"
 

@@ -32,12 +32,18 @@ std::optional<std::map<std::string, std::string>> leaves_of(std::string_view tex
 
 }  // namespace
 
-void ParameterText::set_number(std::string_view key, double value) { values_[std::string(key)] = json(value).dump(); }
-void ParameterText::set_integer(std::string_view key, std::int64_t value) { values_[std::string(key)] = json(value).dump(); }
+void ParameterText::set_number(std::string_view key, double value) {
+  values_[std::string(key)] = json(value).dump();
+}
+void ParameterText::set_integer(std::string_view key, std::int64_t value) {
+  values_[std::string(key)] = json(value).dump();
+}
 void ParameterText::set_unsigned(std::string_view key, std::uint64_t value) {
   values_[std::string(key)] = json(value).dump();
 }
-void ParameterText::set_flag(std::string_view key, bool value) { values_[std::string(key)] = json(value).dump(); }
+void ParameterText::set_flag(std::string_view key, bool value) {
+  values_[std::string(key)] = json(value).dump();
+}
 void ParameterText::set_text(std::string_view key, std::string_view value) {
   values_[std::string(key)] = json(std::string(value)).dump();
 }

@@ -3,7 +3,6 @@
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/LU>
-
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -56,8 +55,8 @@ ImageFormat format_of(const fs::path& image_path) {
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension == ".tif" || extension == ".tiff") return ImageFormat::kTiff;
   if (extension == ".pfm") return ImageFormat::kPfm;
-  fail(image_path, "unknown range image extension '" + extension +
-                       "' (expected .tif, .tiff or .pfm)");
+  fail(image_path,
+       "unknown range image extension '" + extension + "' (expected .tif, .tiff or .pfm)");
 }
 
 // OpenCV logs its own decoder complaints to stderr; the reader reports every failure itself
@@ -77,13 +76,20 @@ class QuietOpenCv {
 
 std::string depth_name(int depth) {
   switch (depth) {
-    case CV_8U: return "8-bit unsigned";
-    case CV_8S: return "8-bit signed";
-    case CV_16U: return "16-bit unsigned";
-    case CV_16S: return "16-bit signed";
-    case CV_32S: return "32-bit integer";
-    case CV_64F: return "64-bit float";
-    default: return "non-float32";
+    case CV_8U:
+      return "8-bit unsigned";
+    case CV_8S:
+      return "8-bit signed";
+    case CV_16U:
+      return "16-bit unsigned";
+    case CV_16S:
+      return "16-bit signed";
+    case CV_32S:
+      return "32-bit integer";
+    case CV_64F:
+      return "64-bit float";
+    default:
+      return "non-float32";
   }
 }
 
@@ -91,7 +97,8 @@ cv::Mat load_image(const fs::path& image_path) {
   std::error_code error;
   if (!fs::exists(image_path, error)) fail(image_path, "no such file");
   if (!fs::is_regular_file(image_path, error)) fail(image_path, "not a regular file");
-  if (!std::ifstream(image_path, std::ios::binary)) fail(image_path, "cannot be opened for reading");
+  if (!std::ifstream(image_path, std::ios::binary))
+    fail(image_path, "cannot be opened for reading");
   cv::Mat image;
   try {
     QuietOpenCv quiet;
@@ -165,7 +172,9 @@ GroundTruthPose read_ground_truth(const fs::path& sidecar, const YAML::Node& nod
   // Hand-written sidecars carry rounded values (0.7071), hence the loose tolerance; a
   // reflection or a non-orthonormal matrix would silently corrupt every pose evaluation.
   const double orthonormality_error =
-      (pose.rotation.transpose() * pose.rotation - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+      (pose.rotation.transpose() * pose.rotation - Eigen::Matrix3d::Identity())
+          .cwiseAbs()
+          .maxCoeff();
   if (orthonormality_error > 1e-3 || pose.rotation.determinant() <= 0.0) {
     fail_key(sidecar, rotation, "ground_truth.rotation", "not a rotation matrix (row-major 3x3)");
   }
@@ -260,7 +269,8 @@ RangeImage read_range_image(const std::filesystem::path& image_path) {
 
 void write_range_image(const RangeImage& image, const std::filesystem::path& image_path) {
   format_of(image_path);
-  if (image.width() <= 0 || image.height() <= 0) fail(image_path, "cannot write an empty range image");
+  if (image.width() <= 0 || image.height() <= 0)
+    fail(image_path, "cannot write an empty range image");
   if (!(image.pixel_size_x_mm > 0.0) || !(image.pixel_size_y_mm > 0.0)) {
     fail(image_path, "cannot write a range image without a positive pixel size");
   }
@@ -268,8 +278,10 @@ void write_range_image(const RangeImage& image, const std::filesystem::path& ima
   // to the one InputError line.
   const fs::path parent = image_path.has_parent_path() ? image_path.parent_path() : fs::path(".");
   std::error_code error;
-  if (!fs::is_directory(parent, error)) fail(image_path, "cannot be written: no directory " + parent.string());
-  if (!std::ofstream(image_path, std::ios::binary)) fail(image_path, "cannot be opened for writing");
+  if (!fs::is_directory(parent, error))
+    fail(image_path, "cannot be written: no directory " + parent.string());
+  if (!std::ofstream(image_path, std::ios::binary))
+    fail(image_path, "cannot be opened for writing");
   // cv::imwrite only reads the pixels; the const_cast lets a cv::Mat header view them in place.
   const cv::Mat view(image.height(), image.width(), CV_32FC1,
                      const_cast<float*>(image.z_mm.data()));

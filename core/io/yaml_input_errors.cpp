@@ -4,11 +4,13 @@
 
 namespace cosmos {
 
-void YamlInputErrors::fail(const YAML::Node& at, const std::string& key, const std::string& reason) const {
+void YamlInputErrors::fail(const YAML::Node& at, const std::string& key,
+                           const std::string& reason) const {
   fail_line(at.IsDefined() ? at.Mark().line : -1, key, reason);
 }
 
-void YamlInputErrors::fail_line(int line0, const std::string& key, const std::string& reason) const {
+void YamlInputErrors::fail_line(int line0, const std::string& key,
+                                const std::string& reason) const {
   // Built by appends: GCC 12 warns (-Wrestrict) about some chained string concatenations.
   std::string message = file_.string();
   if (line0 >= 0) message.append(":").append(std::to_string(line0 + 1));

@@ -11,7 +11,8 @@ namespace cosmos {
 class YamlInputErrors {
  public:
   explicit YamlInputErrors(std::filesystem::path file) : file_(std::move(file)) {}
-  [[noreturn]] void fail(const YAML::Node& at, const std::string& key, const std::string& reason) const;
+  [[noreturn]] void fail(const YAML::Node& at, const std::string& key,
+                         const std::string& reason) const;
   [[noreturn]] void fail_line(int line0, const std::string& key, const std::string& reason) const;
   // The file's root node. `what` names the file in the two errors that have no line:
   // "<file>: <what> not found" and "<file>: cannot read <what>: <reason>"; a parse error is

@@ -25,10 +25,12 @@ bool mask_of(const PatchGraph& graph, const std::vector<int>& ids, PatchSet& mas
 }  // namespace
 
 bool is_feasible_correspondence(const CosmosView& scene, const CosmosView& model,
-                                const std::vector<MappedPair>& pairs, double min_adjacency_strength) {
+                                const std::vector<MappedPair>& pairs,
+                                double min_adjacency_strength) {
   const PatchGraph scene_graph = build_patch_graph(scene, min_adjacency_strength);
   const PatchGraph model_graph = build_patch_graph(model, min_adjacency_strength);
-  if (scene_graph.status != PatchGraphStatus::ok || model_graph.status != PatchGraphStatus::ok) return false;
+  if (scene_graph.status != PatchGraphStatus::ok || model_graph.status != PatchGraphStatus::ok)
+    return false;
   if (pairs.empty()) return false;
 
   std::vector<GroupPair> groups(pairs.size());
@@ -37,7 +39,8 @@ bool is_feasible_correspondence(const CosmosView& scene, const CosmosView& model
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     if (!mask_of(scene_graph, pairs[p].scene_patches, groups[p].scene)) return false;
     if (!mask_of(model_graph, pairs[p].model_patches, groups[p].model)) return false;
-    if ((scene_covered & groups[p].scene) != 0 || (model_covered & groups[p].model) != 0) return false;
+    if ((scene_covered & groups[p].scene) != 0 || (model_covered & groups[p].model) != 0)
+      return false;
     scene_covered |= groups[p].scene;
     model_covered |= groups[p].model;
   }
@@ -49,8 +52,10 @@ bool is_feasible_correspondence(const CosmosView& scene, const CosmosView& model
   }
   for (std::size_t p = 0; p < groups.size(); ++p) {
     for (std::size_t q = p + 1; q < groups.size(); ++q) {
-      const bool scene_strong = groups_strongly_adjacent(scene_graph, groups[p].scene, groups[q].scene);
-      const bool model_strong = groups_strongly_adjacent(model_graph, groups[p].model, groups[q].model);
+      const bool scene_strong =
+          groups_strongly_adjacent(scene_graph, groups[p].scene, groups[q].scene);
+      const bool model_strong =
+          groups_strongly_adjacent(model_graph, groups[p].model, groups[q].model);
       const bool scene_any = groups_adjacent(scene_graph, groups[p].scene, groups[q].scene);
       const bool model_any = groups_adjacent(model_graph, groups[p].model, groups[q].model);
       if ((scene_strong && !model_any) || (model_strong && !scene_any)) return false;

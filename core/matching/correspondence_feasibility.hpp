@@ -8,8 +8,8 @@
 // check is for callers and tests.
 #include <vector>
 
-#include "core/representation/cosmos_view.hpp"
 #include "core/matching/patch_group_matching.hpp"
+#include "core/representation/cosmos_view.hpp"
 
 namespace cosmos {
 
@@ -17,6 +17,7 @@ namespace cosmos {
 // empty views and disconnected ones. False for unknown or repeated patch ids, for patches
 // left out, and for views over kMaxGraphPatches.
 bool is_feasible_correspondence(const CosmosView& scene, const CosmosView& model,
-                                const std::vector<MappedPair>& pairs, double min_adjacency_strength);
+                                const std::vector<MappedPair>& pairs,
+                                double min_adjacency_strength);
 
 }  // namespace cosmos

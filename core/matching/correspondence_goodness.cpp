@@ -72,7 +72,8 @@ bool planar_compatible(const GroupSummary& scene, const GroupSummary& model) {
 }
 
 double correspondence_quality(const PatchGraph& scene, const PatchGraph& model,
-                              std::span<const GroupPair> pairs, const GoodnessParameters& parameters) {
+                              std::span<const GroupPair> pairs,
+                              const GoodnessParameters& parameters) {
   double quality = 0;
   for (const GroupPair& pair : pairs) {
     const PairGoodness g = evaluate_pair(describe_group(scene, pair.scene),

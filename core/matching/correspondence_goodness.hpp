@@ -76,6 +76,7 @@ struct GroupPair {
 
 // §5.3.3 quality with the coarseness factor: sum over pairs of weight * score.
 double correspondence_quality(const PatchGraph& scene, const PatchGraph& model,
-                              std::span<const GroupPair> pairs, const GoodnessParameters& parameters);
+                              std::span<const GroupPair> pairs,
+                              const GoodnessParameters& parameters);
 
 }  // namespace cosmos

@@ -59,7 +59,8 @@ bool subset_of(PatchSet a, PatchSet b) { return (a & ~b) == 0; }
 
 class Matcher {
  public:
-  Matcher(const PatchGraph& scene, const PatchGraph& model, const PatchGroupMatchParameters& parameters)
+  Matcher(const PatchGraph& scene, const PatchGraph& model,
+          const PatchGroupMatchParameters& parameters)
       : scene_(scene), model_(model), parameters_(parameters) {}
 
   std::vector<GroupPair> run() {
@@ -89,7 +90,8 @@ class Matcher {
     int best = -1;
     double best_weight = -1;
     for (std::size_t p = 0; p < pairs.size(); ++p) {
-      if (settled[p] || patch_count(pairs[p].scene) < 2 || patch_count(pairs[p].model) < 2) continue;
+      if (settled[p] || patch_count(pairs[p].scene) < 2 || patch_count(pairs[p].model) < 2)
+        continue;
       const double weight = summarize_group(scene_, pairs[p].scene).area_fraction +
                             summarize_group(model_, pairs[p].model).area_fraction;
       if (weight > best_weight) {
@@ -115,8 +117,8 @@ class Matcher {
       scene_groups_[p] = pairs[p].scene;
       model_groups_[p] = pairs[p].model;
     }
-    refine_budget_end_ = std::min(parameters_.max_operations,
-                                  operations_ + parameters_.max_operations_per_refine);
+    refine_budget_end_ =
+        std::min(parameters_.max_operations, operations_ + parameters_.max_operations_per_refine);
     best_sum_ = 0;
     found_ = false;
 
@@ -145,9 +147,11 @@ class Matcher {
     if (!found_) return false;
 
     const int count = best_left_.split.count;
-    pairs[index] = {best_left_.split.components[0], best_right_->split.components[best_assignment_[0]]};
+    pairs[index] = {best_left_.split.components[0],
+                    best_right_->split.components[best_assignment_[0]]};
     for (int c = 1; c < count; ++c) {
-      pairs.push_back({best_left_.split.components[c], best_right_->split.components[best_assignment_[c]]});
+      pairs.push_back(
+          {best_left_.split.components[c], best_right_->split.components[best_assignment_[c]]});
     }
     return true;
   }
@@ -174,7 +178,8 @@ class Matcher {
     // partner.
     remaining_[k] = 0;
     for (int i = k - 1; i >= 0; --i) {
-      remaining_[i] = remaining_[i + 1] + *std::max_element(score_[i].begin(), score_[i].begin() + k);
+      remaining_[i] =
+          remaining_[i + 1] + *std::max_element(score_[i].begin(), score_[i].begin() + k);
     }
     std::array<int, kMaxComponents> assignment{};
     search(left, right, 0, 0u, 0.0, assignment);
@@ -199,9 +204,7 @@ class Matcher {
 
   // Whether a sub-correspondence whose quality is at most `bound` could beat the best one
   // so far; ties keep the first found.
-  bool can_beat_best(double bound) const {
-    return !found_ || bound + kScoreTolerance > best_sum_;
-  }
+  bool can_beat_best(double bound) const { return !found_ || bound + kScoreTolerance > best_sum_; }
 
   void search(const SideSplit& left, const SideSplit& right, int i, std::uint32_t used, double sum,
               std::array<int, kMaxComponents>& assignment) {
@@ -277,10 +280,11 @@ PatchGroupMatch match_patch_groups(const CosmosView& scene, const CosmosView& mo
   const PatchGraph scene_graph = build_patch_graph(scene, parameters.min_adjacency_strength);
   const PatchGraph model_graph = build_patch_graph(model, parameters.min_adjacency_strength);
   const bool empty = scene.patches.empty() || model.patches.empty();
-  const bool too_many = scene_graph.status != PatchGraphStatus::ok ||
-                        model_graph.status != PatchGraphStatus::ok;
+  const bool too_many =
+      scene_graph.status != PatchGraphStatus::ok || model_graph.status != PatchGraphStatus::ok;
   if (empty || too_many) {
-    result.status = empty ? PatchGroupMatchStatus::empty_view : PatchGroupMatchStatus::too_many_patches;
+    result.status =
+        empty ? PatchGroupMatchStatus::empty_view : PatchGroupMatchStatus::too_many_patches;
     PairGoodness nothing;
     nothing.area = nothing.shape_index = nothing.curvedness = nothing.neighbor = 0;
     nothing.goodness = nothing.fineness = 0;
@@ -294,8 +298,9 @@ PatchGroupMatch match_patch_groups(const CosmosView& scene, const CosmosView& mo
     return lowest_patch(a.scene) < lowest_patch(b.scene);
   });
   for (const GroupPair& pair : pairs) {
-    const PairGoodness g = evaluate_pair(describe_group(scene_graph, pair.scene),
-                                         describe_group(model_graph, pair.model), parameters.goodness);
+    const PairGoodness g =
+        evaluate_pair(describe_group(scene_graph, pair.scene),
+                      describe_group(model_graph, pair.model), parameters.goodness);
     result.score += g.weight * g.score;
     result.fineness += g.weight * g.fineness;
     result.pairs.push_back({ids_of(scene, pair.scene), ids_of(model, pair.model), g});

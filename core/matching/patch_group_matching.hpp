@@ -35,8 +35,8 @@
 namespace cosmos {
 
 struct PatchGroupMatchParameters {
-  int group_size_limit = 3;  // §5.3.2 "groupsize limit": patches grown around lp or rp
-  std::int64_t max_operations = 200000;            // the whole match
+  int group_size_limit = 3;              // §5.3.2 "groupsize limit": patches grown around lp or rp
+  std::int64_t max_operations = 200000;  // the whole match
   std::int64_t max_operations_per_refine = 20000;  // one call of refine
   // Shared boundary, as a fraction of the smaller patch's perimeter, below which an
   // adjacency is weak and need not be matched (§5.4.3); 0: every adjacency must match.
@@ -60,7 +60,7 @@ struct MappedPair {
 struct PatchGroupMatch {
   PatchGroupMatchStatus status = PatchGroupMatchStatus::ok;
   std::vector<MappedPair> pairs;  // ordered by their lowest scene patch index
-  double score = 0;     // §5.3.3 quality with the coarseness factor, in [0, 1]
+  double score = 0;               // §5.3.3 quality with the coarseness factor, in [0, 1]
   double fineness = 0;  // area-weighted mean of the pairs' fineness: 1 = all single patches
   std::int64_t operations = 0;
   int refinements = 0;  // MappedPairs replaced by finer ones

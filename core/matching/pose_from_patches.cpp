@@ -62,7 +62,8 @@ RotationFromNormals rotation_from_normals(std::span<const NormalCorrespondence> 
   if (!(total_weight > 0)) return result;
 
   // Kabsch/Horn: R = V diag(1, 1, det(V U^T)) U^T maximizes sum w n_model . (R n_scene).
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(cross_covariance, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(cross_covariance,
+                                              Eigen::ComputeFullU | Eigen::ComputeFullV);
   Eigen::Matrix3d reflection_fix = Eigen::Matrix3d::Identity();
   reflection_fix(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0 ? -1.0 : 1.0;
   result.R_model_scene = svd.matrixV() * reflection_fix * svd.matrixU().transpose();
@@ -71,13 +72,15 @@ RotationFromNormals rotation_from_normals(std::span<const NormalCorrespondence> 
   for (const NormalCorrespondence& c : normals) {
     if (!usable(c)) continue;
     const Eigen::Vector3d rotated = result.R_model_scene * c.scene_normal;
-    const double angle = std::atan2(rotated.cross(c.model_normal).norm(), rotated.dot(c.model_normal));
+    const double angle =
+        std::atan2(rotated.cross(c.model_normal).norm(), rotated.dot(c.model_normal));
     squared_angle_sum += c.weight * angle * angle;
   }
   result.rms_residual_deg = std::sqrt(squared_angle_sum / total_weight) * kRadToDeg;
   result.normal_spread_deg = std::min(spread_deg(scene_scatter), spread_deg(model_scatter));
-  result.status = result.normal_spread_deg >= min_normal_spread_deg ? PatchPoseStatus::ok
-                                                                    : PatchPoseStatus::degenerate_normals;
+  result.status = result.normal_spread_deg >= min_normal_spread_deg
+                      ? PatchPoseStatus::ok
+                      : PatchPoseStatus::degenerate_normals;
   return result;
 }
 
@@ -108,14 +111,16 @@ PoseFromPatches estimate_pose_from_patches(const CosmosView& scene, const Cosmos
     normals.push_back({scene_normal.normalized(), model_normal.normalized(), weight});
   }
   pose.pairs_used = static_cast<int>(normals.size());
-  const RotationFromNormals rotation = rotation_from_normals(normals, parameters.min_normal_spread_deg);
+  const RotationFromNormals rotation =
+      rotation_from_normals(normals, parameters.min_normal_spread_deg);
   pose.status = rotation.status;
   pose.normal_spread_deg = rotation.normal_spread_deg;
   pose.rms_normal_residual_deg = rotation.rms_residual_deg;
   pose.T_model_scene.rotation = rotation.R_model_scene;
   if (centroid_weight > 0) {
-    pose.T_model_scene.translation_mm = model_centroid_sum / centroid_weight -
-                                        rotation.R_model_scene * (scene_centroid_sum / centroid_weight);
+    pose.T_model_scene.translation_mm =
+        model_centroid_sum / centroid_weight -
+        rotation.R_model_scene * (scene_centroid_sum / centroid_weight);
   }
   return pose;
 }

@@ -14,8 +14,8 @@
 #include <span>
 #include <vector>
 
-#include "core/representation/cosmos_view.hpp"
 #include "core/matching/patch_group_matching.hpp"
+#include "core/representation/cosmos_view.hpp"
 #include "core/rigid_transform.hpp"
 
 namespace cosmos {

@@ -21,9 +21,9 @@ struct SpectralSelectionParameters {
 };
 
 struct SpectralCandidate {
-  int view = 0;             // index into ModelBase::views
-  int cluster = 0;          // index into ModelBase::clusters
-  double distance = 0;      // Eq. 4.3 (squared Euclidean) or squared Mahalanobis
+  int view = 0;         // index into ModelBase::views
+  int cluster = 0;      // index into ModelBase::clusters
+  double distance = 0;  // Eq. 4.3 (squared Euclidean) or squared Mahalanobis
 };
 
 class SpectralViewSelector {

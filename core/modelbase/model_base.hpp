@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "core/representation/cosmos_view.hpp"
 #include "core/registration/packed_registration_points.hpp"
 #include "core/registration/registration_points.hpp"
-#include "core/rigid_transform.hpp"
+#include "core/representation/cosmos_view.hpp"
 #include "core/representation/shape_spectrum.hpp"
+#include "core/rigid_transform.hpp"
 
 namespace cosmos {
 
@@ -42,8 +42,8 @@ struct ModelBaseView {
 // View indices follow the view sphere's fixed order (sim/view_sphere.hpp, two subdivisions:
 // face by face, child by child, the middle child last). The indices that are 3 mod 4 are the
 // middle children of the once-subdivided faces: the 80-view sphere, evenly spread, within
-// 0.04 degrees of its face centres (sim/model_base_build/view_direction_subset.hpp). Bases of 20 or 80 views
-// hold only such views.
+// 0.04 degrees of its face centres (sim/model_base_build/view_direction_subset.hpp). Bases of 20 or
+// 80 views hold only such views.
 inline bool is_once_subdivided_view(int view_index) { return view_index % 4 == 3; }
 
 struct ViewCluster {

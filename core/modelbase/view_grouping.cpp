@@ -2,7 +2,8 @@
 
 namespace cosmos {
 
-ViewGroupingResult group_model_views(const ModelBase& base, const ViewGroupingParameters& parameters) {
+ViewGroupingResult group_model_views(const ModelBase& base,
+                                     const ViewGroupingParameters& parameters) {
   ViewGroupingResult result;
   for (int part = 0; part < static_cast<int>(base.parts.size()); ++part) {
     std::vector<int> members;
@@ -21,14 +22,16 @@ ViewGroupingResult group_model_views(const ModelBase& base, const ViewGroupingPa
       result.clusters.clear();
       return result;
     }
-    const ViewPartition partition = parameters.cluster_count > 0 ? cut_to_count(dendrogram, parameters.cluster_count)
-                                                                 : cut_at_level(dendrogram, parameters.cut_level);
+    const ViewPartition partition = parameters.cluster_count > 0
+                                        ? cut_to_count(dendrogram, parameters.cluster_count)
+                                        : cut_at_level(dendrogram, parameters.cut_level);
     const std::vector<MomentVector> centroids = cluster_centroids(partition, moments);
     const std::size_t first = result.clusters.size();
     for (int c = 0; c < partition.clusters; ++c)
       result.clusters.push_back({part, {}, centroids[static_cast<std::size_t>(c)]});
     for (std::size_t k = 0; k < members.size(); ++k)
-      result.clusters[first + static_cast<std::size_t>(partition.label[k])].views.push_back(members[k]);
+      result.clusters[first + static_cast<std::size_t>(partition.label[k])].views.push_back(
+          members[k]);
   }
   return result;
 }

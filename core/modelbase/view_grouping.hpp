@@ -1,8 +1,8 @@
 #pragma once
 // View grouping of the model base (§4.4.2, Fig. 5.3): each part's views are clustered by the
 // complete-link method on the Eq. 4.3 dissimilarity of their spectrum moment vectors
-// (core/modelbase/view_clustering.hpp), the dendrogram is cut at a dissimilarity level (or to a given
-// number of clusters), and each cluster is summarized by its centroid, the first tier of
+// (core/modelbase/view_clustering.hpp), the dendrogram is cut at a dissimilarity level (or to a
+// given number of clusters), and each cluster is summarized by its centroid, the first tier of
 // spectral model-view selection (§5.2).
 //
 // The default level. The thesis cuts at 0.1 or less and gets 9-16 clusters per object, 11 on
@@ -43,6 +43,7 @@ struct ViewGroupingResult {
 
 // Groups the views of every part of `base` (ModelBase::views with that part_index; a part
 // without views has no clusters). Cluster view indices index ModelBase::views.
-ViewGroupingResult group_model_views(const ModelBase& base, const ViewGroupingParameters& parameters);
+ViewGroupingResult group_model_views(const ModelBase& base,
+                                     const ViewGroupingParameters& parameters);
 
 }  // namespace cosmos

@@ -146,10 +146,9 @@ std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& sce
 }
 
 std::vector<ViewPoseHypothesis> register_field_hypotheses(
-    const RegistrationPoints& scene, const ModelBase& base, int part,
-    const PartSearchModel& model, const std::vector<FieldHypothesis>& hypotheses,
-    const RegistrationParameters& registration, const PartPoseSearchParameters& parameters,
-    ModelSurfaces& surfaces) {
+    const RegistrationPoints& scene, const ModelBase& base, int part, const PartSearchModel& model,
+    const std::vector<FieldHypothesis>& hypotheses, const RegistrationParameters& registration,
+    const PartPoseSearchParameters& parameters, ModelSurfaces& surfaces) {
   std::vector<ViewPoseHypothesis> best;
   const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
   const PartDistanceField& field = model.field;
@@ -167,10 +166,10 @@ std::vector<ViewPoseHypothesis> register_field_hypotheses(
         register_views(scoring, surfaces.points(view), T_model_scene, short_registration);
     const RigidTransform& T =
         refined.status == RegistrationStatus::invalid_input ? T_model_scene : refined.T_model_scene;
-    best.push_back({view, T,
-                    field_truncated_mean_square_mm2(scoring, field,
-                                                    model_view.T_scanner_part.inverse() * T,
-                                                    parameters.field_truncation_mm)});
+    best.push_back(
+        {view, T,
+         field_truncated_mean_square_mm2(scoring, field, model_view.T_scanner_part.inverse() * T,
+                                         parameters.field_truncation_mm)});
   }
   std::stable_sort(best.begin(), best.end(),
                    [](const ViewPoseHypothesis& a, const ViewPoseHypothesis& b) {
@@ -210,10 +209,10 @@ std::vector<ViewPoseHypothesis> align_view_starts_in_field(
   keep_best(hypotheses, hypotheses.size());
   for (const FieldHypothesis& hypothesis : hypotheses) {
     const int nearest = nearest_view(base, start_view.part_index, hypothesis.T_part_scene);
-    best.push_back({nearest,
-                    base.views[static_cast<std::size_t>(nearest)].T_scanner_part *
-                        hypothesis.T_part_scene,
-                    hypothesis.truncated_mean_square_mm2});
+    best.push_back(
+        {nearest,
+         base.views[static_cast<std::size_t>(nearest)].T_scanner_part * hypothesis.T_part_scene,
+         hypothesis.truncated_mean_square_mm2});
   }
   return distinct_hypotheses(base, best, search, count);
 }

@@ -18,8 +18,8 @@
 #include "core/modelbase/model_surface.hpp"
 #include "core/registration/part_distance_field.hpp"
 #include "core/registration/registration_points.hpp"
-#include "core/rigid_transform.hpp"
 #include "core/registration/view_registration.hpp"
+#include "core/rigid_transform.hpp"
 
 namespace cosmos {
 
@@ -35,8 +35,8 @@ struct PartPoseSearchParameters {
   int field_iterations = 3;           // alignment steps for those
   int refined_hypotheses = 32;        // registered on their nearest view
   int refinement_iterations = 8;
-  FieldGate refinement_gate;          // those that fail it are not registered, nor returned
-  int best_hypotheses = 4;  // returned, best first, no two poses of the part within:
+  FieldGate refinement_gate;  // those that fail it are not registered, nor returned
+  int best_hypotheses = 4;    // returned, best first, no two poses of the part within:
   double same_pose_rad = 0.02;
   double same_pose_mm = 0.5;
   // and none whose field score exceeds factor x the best's + margin (a wrong pose scores
@@ -86,10 +86,9 @@ std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& sce
 // The search's second half: those poses moved onto the part's views nearest to them,
 // registered there and ranked by that view's fit.
 std::vector<ViewPoseHypothesis> register_field_hypotheses(
-    const RegistrationPoints& scene, const ModelBase& base, int part,
-    const PartSearchModel& model, const std::vector<FieldHypothesis>& hypotheses,
-    const RegistrationParameters& registration, const PartPoseSearchParameters& parameters,
-    ModelSurfaces& surfaces);
+    const RegistrationPoints& scene, const ModelBase& base, int part, const PartSearchModel& model,
+    const std::vector<FieldHypothesis>& hypotheses, const RegistrationParameters& registration,
+    const PartPoseSearchParameters& parameters, ModelSurfaces& surfaces);
 
 // Both halves. `model`: the part's build_part_search_model.
 // The views' surfaces come from (and stay in) `surfaces`.

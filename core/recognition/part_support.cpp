@@ -4,14 +4,12 @@
 #include <cmath>
 #include <numbers>
 
-
 namespace cosmos {
 
 PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBase& base,
                                  int matched, const RigidTransform& T_model_scene,
                                  const RegistrationParameters& registration,
-                                 const PartSupportParameters& parameters,
-                                 ModelSurfaces& surfaces) {
+                                 const PartSupportParameters& parameters, ModelSurfaces& surfaces) {
   PartSupport support;
   if (scene.size() == 0) return support;
   RegistrationParameters strict = registration;

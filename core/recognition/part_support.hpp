@@ -12,8 +12,8 @@
 #include "core/modelbase/model_base.hpp"
 #include "core/modelbase/model_surface.hpp"
 #include "core/registration/registration_points.hpp"
-#include "core/rigid_transform.hpp"
 #include "core/registration/view_registration.hpp"
+#include "core/rigid_transform.hpp"
 
 namespace cosmos {
 
@@ -36,7 +36,6 @@ struct PartSupport {
 PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBase& base,
                                  int matched, const RigidTransform& T_model_scene,
                                  const RegistrationParameters& registration,
-                                 const PartSupportParameters& parameters,
-                                 ModelSurfaces& surfaces);
+                                 const PartSupportParameters& parameters, ModelSurfaces& surfaces);
 
 }  // namespace cosmos

@@ -129,8 +129,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   ModelSurfaces surfaces(model_base_);
   for (const SpectralCandidate& candidate : selected) {
     result.candidates.push_back(verify(analysis, points, candidate, surfaces,
-                                       result.timings.matching_ms,
-                                       result.timings.registration_ms));
+                                       result.timings.matching_ms, result.timings.registration_ms));
     ++result.views_examined;
     if (result.candidates.back().registered &&
         result.candidates.back().inlier_fraction >= parameters_.sufficient_support)
@@ -166,9 +165,8 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
 }
 
 RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene, const ScenePoints& scene_points,
-                                        const SpectralCandidate& selected,
-                                        ModelSurfaces& surfaces, double& matching_ms,
-                                        double& registration_ms) const {
+                                        const SpectralCandidate& selected, ModelSurfaces& surfaces,
+                                        double& matching_ms, double& registration_ms) const {
   const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(selected.view)];
   RecognitionCandidate candidate;
   candidate.view = selected.view;
@@ -195,8 +193,7 @@ RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene, const ScenePo
 }
 
 void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
-                                        ModelSurfaces& surfaces,
-                                        RecognitionResult& result) const {
+                                        ModelSurfaces& surfaces, RecognitionResult& result) const {
   // Parts in the order of their closest view.
   std::vector<int> parts = selector_.rank_parts(scene.moments);
   if (parts.size() > static_cast<std::size_t>(parameters_.searched_parts))
@@ -204,10 +201,9 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
   // Registers one part's field poses; true when one explains enough to end the search.
   auto register_part = [&](int part, const std::vector<FieldHypothesis>& field_poses) {
     Clock::time_point stage = Clock::now();
-    const std::vector<ViewPoseHypothesis> hypotheses =
-        register_field_hypotheses(scene_points.all, model_base_, part, part_search_model(part),
-                                  field_poses, parameters_.registration, parameters_.search,
-                                  surfaces);
+    const std::vector<ViewPoseHypothesis> hypotheses = register_field_hypotheses(
+        scene_points.all, model_base_, part, part_search_model(part), field_poses,
+        parameters_.registration, parameters_.search, surfaces);
     result.timings.registration_ms += elapsed_ms(stage);
     for (const ViewPoseHypothesis& hypothesis : hypotheses) {
       const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(hypothesis.view)];
@@ -247,9 +243,8 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
     std::vector<FieldHypothesis> field_poses = field_pose_hypotheses(
         scene_points.all, model_base_, part_search_model(part), parameters_.search);
     result.timings.registration_ms += elapsed_ms(stage);
-    const double best_fit_mm2 = field_poses.empty()
-                                    ? std::numeric_limits<double>::infinity()
-                                    : field_poses.front().truncated_mean_square_mm2;
+    const double best_fit_mm2 = field_poses.empty() ? std::numeric_limits<double>::infinity()
+                                                    : field_poses.front().truncated_mean_square_mm2;
     best_fit_mm2_of_all = std::min(best_fit_mm2_of_all, best_fit_mm2);
     if (best_fit_mm2 <= parameters_.convincing_field_fit_mm2) {
       if (register_part(part, field_poses)) return;
@@ -284,10 +279,9 @@ void Recognizer::register_candidate(const ScenePoints& scene_points,
   fine.max_iterations = parameters_.fine_registration_iterations;
   for (const ViewPoseHypothesis& start : starts) {
     const ModelBaseView& start_view = model_base_.views[static_cast<std::size_t>(start.view)];
-    if (!parameters_.registration_gate.passes(scene_points.coarse,
-                                              part_search_model(candidate.part).field,
-                                              start_view.T_scanner_part.inverse() *
-                                                  start.T_model_scene))
+    if (!parameters_.registration_gate.passes(
+            scene_points.coarse, part_search_model(candidate.part).field,
+            start_view.T_scanner_part.inverse() * start.T_model_scene))
       continue;
     const RegistrationPoints& model = surfaces.points(start.view);
     RegistrationResult registration =
@@ -312,9 +306,9 @@ void Recognizer::register_candidate(const ScenePoints& scene_points,
       measure_part_support(scene_points.coarse, model_base_, candidate.view, best.T_model_scene,
                            parameters_.registration, parameters_.support, surfaces);
   if (support.inlier_fraction >= parameters_.plausible_support)
-    support = measure_part_support(scene_points.all, model_base_, candidate.view,
-                                   best.T_model_scene, parameters_.registration,
-                                   parameters_.support, surfaces);
+    support =
+        measure_part_support(scene_points.all, model_base_, candidate.view, best.T_model_scene,
+                             parameters_.registration, parameters_.support, surfaces);
   candidate.registration_status = best.status;
   candidate.T_model_scene = best.T_model_scene;
   candidate.rms_mm = support.rms_mm;

@@ -23,17 +23,17 @@
 #include <vector>
 
 #include "core/cosmos_parameters.hpp"
-#include "core/representation/cosmos_pipeline.hpp"
-#include "core/modelbase/model_base.hpp"
-#include "core/recognition/part_pose_search.hpp"
-#include "core/recognition/part_support.hpp"
 #include "core/matching/patch_group_matching.hpp"
 #include "core/matching/pose_from_patches.hpp"
-#include "core/range_image.hpp"
-#include "core/registration/registration_points.hpp"
-#include "core/rigid_transform.hpp"
 #include "core/matching/spectral_view_selection.hpp"
+#include "core/modelbase/model_base.hpp"
+#include "core/range_image.hpp"
+#include "core/recognition/part_pose_search.hpp"
+#include "core/recognition/part_support.hpp"
+#include "core/registration/registration_points.hpp"
 #include "core/registration/view_registration.hpp"
+#include "core/representation/cosmos_pipeline.hpp"
+#include "core/rigid_transform.hpp"
 
 namespace cosmos {
 

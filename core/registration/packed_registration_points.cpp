@@ -12,7 +12,8 @@ namespace {
 constexpr int kPlaneValues = 3;      // kHeight, kSlopeX, kSlopeY
 constexpr int kCurvatureValues = 3;  // kCurveXX, kCurveXY, kCurveYY
 constexpr double kOnePerNormalUnit = 1.0 / kNormalUnitsPerOne;
-static_assert(kHeight == 0 && kSlopeX == 1 && kSlopeY == 2 && kCurveXX == 3 && kSurfaceCoefficients == 6);
+static_assert(kHeight == 0 && kSlopeX == 1 && kSlopeY == 2 && kCurveXX == 3 &&
+              kSurfaceCoefficients == 6);
 
 // One allocation holding every array of a packed view, so a built base keeps one block per
 // view like a loaded one keeps one block for all views.
@@ -28,8 +29,9 @@ template <class Integer>
 Integer quantize(double value, double step) {
   if (!(step > 0)) return 0;
   const double units = std::round(value / step);
-  return static_cast<Integer>(std::clamp(units, static_cast<double>(std::numeric_limits<Integer>::lowest()),
-                                         static_cast<double>(std::numeric_limits<Integer>::max())));
+  return static_cast<Integer>(
+      std::clamp(units, static_cast<double>(std::numeric_limits<Integer>::lowest()),
+                 static_cast<double>(std::numeric_limits<Integer>::max())));
 }
 
 }  // namespace
@@ -48,7 +50,8 @@ PackedRegistrationPoints pack_registration_points(const RegistrationPoints& poin
   const int n = points.size();
   const std::size_t count = static_cast<std::size_t>(n);
   if (n > 0) {
-    packed.curvature_step = points.surface.bottomRows<kCurvatureValues>().cwiseAbs().maxCoeff() / 32767.0;
+    packed.curvature_step =
+        points.surface.bottomRows<kCurvatureValues>().cwiseAbs().maxCoeff() / 32767.0;
     packed.residual_step_mm = points.residual_rms_mm.maxCoeff() / 65535.0;
   }
   auto arrays = std::make_shared<PackedArrays>();
@@ -64,14 +67,16 @@ PackedRegistrationPoints pack_registration_points(const RegistrationPoints& poin
   for (int i = 0; i < n; ++i) {
     const std::size_t k = static_cast<std::size_t>(i);
     for (int c = 0; c < kPlaneValues; ++c)
-      arrays->plane[k * kPlaneValues + static_cast<std::size_t>(c)] = static_cast<float>(points.surface(c, i));
+      arrays->plane[k * kPlaneValues + static_cast<std::size_t>(c)] =
+          static_cast<float>(points.surface(c, i));
     for (int c = 0; c < kCurvatureValues; ++c)
       arrays->curvature[k * kCurvatureValues + static_cast<std::size_t>(c)] =
           quantize<std::int16_t>(points.surface(kCurveXX + c, i), packed.curvature_step);
     for (int c = 0; c < 2; ++c)
       arrays->normal_xy[2 * k + static_cast<std::size_t>(c)] =
           quantize<std::int16_t>(points.normal(c, i), 1.0 / kNormalUnitsPerOne);
-    arrays->residual[k] = quantize<std::uint16_t>(points.residual_rms_mm(i), packed.residual_step_mm);
+    arrays->residual[k] =
+        quantize<std::uint16_t>(points.residual_rms_mm(i), packed.residual_step_mm);
   }
   packed.occupied_cells = arrays->occupied_cells;
   packed.plane = arrays->plane;
@@ -90,10 +95,13 @@ bool packed_registration_points_consistent(const PackedRegistrationPoints& packe
       packed.normal_xy.size() != 2 * n)
     return false;
   std::size_t set_bits = 0;
-  for (std::uint8_t byte : packed.occupied_cells) set_bits += static_cast<std::size_t>(std::popcount(byte));
+  for (std::uint8_t byte : packed.occupied_cells)
+    set_bits += static_cast<std::size_t>(std::popcount(byte));
   // Bits past the last cell must be clear, or a point would have no cell.
-  const std::size_t cells = static_cast<std::size_t>(packed.grid_width) * static_cast<std::size_t>(packed.grid_height);
-  if (cells % 8 != 0 && !packed.occupied_cells.empty() && (packed.occupied_cells.back() >> (cells % 8)) != 0)
+  const std::size_t cells =
+      static_cast<std::size_t>(packed.grid_width) * static_cast<std::size_t>(packed.grid_height);
+  if (cells % 8 != 0 && !packed.occupied_cells.empty() &&
+      (packed.occupied_cells.back() >> (cells % 8)) != 0)
     return false;
   return set_bits == n;
 }
@@ -114,7 +122,8 @@ RegistrationPoints unpack_registration_points(const PackedRegistrationPoints& pa
   points.normal.resize(3, n);
   points.surface.resize(kSurfaceCoefficients, n);
   points.residual_rms_mm.resize(n);
-  const std::size_t cells = static_cast<std::size_t>(packed.grid_width) * static_cast<std::size_t>(packed.grid_height);
+  const std::size_t cells =
+      static_cast<std::size_t>(packed.grid_width) * static_cast<std::size_t>(packed.grid_height);
   points.cell_point.assign(cells, -1);
   // The occupied cells are sparse in the grid: whole empty bytes are skipped, and the set bits
   // of the others visited in increasing order.
@@ -125,9 +134,12 @@ RegistrationPoints unpack_registration_points(const PackedRegistrationPoints& pa
       if (cell >= cells) break;
       const std::size_t k = static_cast<std::size_t>(i);
       points.cell_point[cell] = i;
-      for (int c = 0; c < kPlaneValues; ++c) points.surface(c, i) = packed.plane[k * kPlaneValues + static_cast<std::size_t>(c)];
+      for (int c = 0; c < kPlaneValues; ++c)
+        points.surface(c, i) = packed.plane[k * kPlaneValues + static_cast<std::size_t>(c)];
       for (int c = 0; c < kCurvatureValues; ++c)
-        points.surface(kCurveXX + c, i) = packed.curvature_step * packed.curvature[k * kCurvatureValues + static_cast<std::size_t>(c)];
+        points.surface(kCurveXX + c, i) =
+            packed.curvature_step *
+            packed.curvature[k * kCurvatureValues + static_cast<std::size_t>(c)];
       const int u = static_cast<int>(cell % static_cast<std::size_t>(packed.grid_width));
       const int v = static_cast<int>(cell / static_cast<std::size_t>(packed.grid_width));
       points.position_mm.col(i) << packed.origin_x_mm + u * packed.spacing_x_mm,

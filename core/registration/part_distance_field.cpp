@@ -92,8 +92,8 @@ PartDistanceField::PartDistanceField(const std::vector<Eigen::Vector3d>& points_
 }
 
 template <bool kGradient>
-[[gnu::always_inline]] inline double PartDistanceField::sample(
-    const Eigen::Vector3d& point_part_mm, Eigen::Vector3d& gradient) const {
+[[gnu::always_inline]] inline double PartDistanceField::sample(const Eigen::Vector3d& point_part_mm,
+                                                               Eigen::Vector3d& gradient) const {
   if (kGradient) gradient.setZero();
   if (distance_mm_.empty()) return std::numeric_limits<double>::infinity();
   // The hot loop of the pose search: one base index and fixed strides to the 8 corners, and
@@ -104,8 +104,7 @@ template <bool kGradient>
   bool outside = false;
   for (int axis = 0; axis < 3; ++axis) {
     u[axis] = (point_part_mm[axis] - origin_mm_[axis]) * voxels_per_mm_;
-    const double clamped =
-        std::clamp(u[axis], 0.0, static_cast<double>(size_[axis] - 1) - 1e-9);
+    const double clamped = std::clamp(u[axis], 0.0, static_cast<double>(size_[axis] - 1) - 1e-9);
     outside |= clamped != u[axis];
     base[axis] = static_cast<int>(clamped);
     f[axis] = clamped - base[axis];
@@ -159,8 +158,8 @@ double field_fraction_within(const RegistrationPoints& scene, const PartDistance
   int within = 0;
   Eigen::Vector3d unused;
   for (int i = 0; i < scene.size(); ++i)
-    within += field.sample<false>(T_part_scene.apply(scene.position_mm.col(i)), unused) <=
-              distance_mm;
+    within +=
+        field.sample<false>(T_part_scene.apply(scene.position_mm.col(i)), unused) <= distance_mm;
   return static_cast<double>(within) / scene.size();
 }
 

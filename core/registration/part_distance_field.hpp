@@ -47,14 +47,12 @@ class PartDistanceField {
   // scoring and alignment loops (this file's free functions are its friends).
   template <bool kGradient>
   double sample(const Eigen::Vector3d& point_part_mm, Eigen::Vector3d& gradient) const;
-  friend double field_truncated_mean_square_mm2(const RegistrationPoints&,
-                                                const PartDistanceField&, const RigidTransform&,
-                                                double);
+  friend double field_truncated_mean_square_mm2(const RegistrationPoints&, const PartDistanceField&,
+                                                const RigidTransform&, double);
   friend double field_fraction_within(const RegistrationPoints&, const PartDistanceField&,
                                       const RigidTransform&, double);
-  friend RigidTransform align_in_distance_field(const RegistrationPoints&,
-                                                const PartDistanceField&, const RigidTransform&,
-                                                int, double);
+  friend RigidTransform align_in_distance_field(const RegistrationPoints&, const PartDistanceField&,
+                                                const RigidTransform&, int, double);
 
   Eigen::Vector3d origin_mm_ = Eigen::Vector3d::Zero();  // centre of voxel (0, 0, 0)
   double voxel_mm_ = 1.0;

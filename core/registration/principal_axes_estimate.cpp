@@ -27,7 +27,6 @@ PrincipalAxes principal_axes(const RegistrationPoints& points) {
   return {centroid, axes, gap};
 }
 
-
 // The sign flips of the axes that keep det = +1.
 constexpr std::array<std::array<double, 3>, 4> kFlips{
     {{1, 1, 1}, {-1, -1, 1}, {-1, 1, -1}, {1, -1, -1}}};
@@ -37,8 +36,7 @@ RigidTransform candidate(const PrincipalAxes& scene, const PrincipalAxes& model,
   RigidTransform T_model_scene;
   // R = M_model M_scene^-1, M orthonormal so its inverse is its transpose.
   T_model_scene.rotation =
-      model.axes * Eigen::Vector3d(flip[0], flip[1], flip[2]).asDiagonal() *
-      scene.axes.transpose();
+      model.axes * Eigen::Vector3d(flip[0], flip[1], flip[2]).asDiagonal() * scene.axes.transpose();
   T_model_scene.translation_mm = model.centroid_mm - T_model_scene.rotation * scene.centroid_mm;
   return T_model_scene;
 }

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "core/registration/registration_points.hpp"
-#include "core/rigid_transform.hpp"
 #include "core/registration/view_registration.hpp"
+#include "core/rigid_transform.hpp"
 
 namespace cosmos {
 

@@ -20,8 +20,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/surface/darboux_frame_field.hpp"
 #include "core/range_image.hpp"
+#include "core/surface/darboux_frame_field.hpp"
 
 namespace cosmos {
 

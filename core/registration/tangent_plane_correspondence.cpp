@@ -23,8 +23,8 @@ struct BlendedPlane {
 // blend would extrapolate. Each cell's local fit is evaluated (height and slopes) at the
 // query, then blended with bilinear weights.
 // `cells_per_mm`: 1 / the grid spacings (the caller divides once, not at every step).
-bool blend_planes(const RegistrationPoints& model, const Eigen::Vector2d& cells_per_mm,
-                  double x_mm, double y_mm, BlendedPlane& out) {
+bool blend_planes(const RegistrationPoints& model, const Eigen::Vector2d& cells_per_mm, double x_mm,
+                  double y_mm, BlendedPlane& out) {
   const double u = (x_mm - model.origin_x_mm) * cells_per_mm.x();
   const double v = (y_mm - model.origin_y_mm) * cells_per_mm.y();
   if (!(u >= 0.0 && v >= 0.0 && u < model.grid_width - 1 && v < model.grid_height - 1))

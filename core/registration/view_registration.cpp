@@ -3,9 +3,9 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
-#include <limits>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -127,8 +127,8 @@ SolveStatus solve_increment(const std::vector<Correspondence>& inliers, Incremen
   }
   Eigen::Matrix<double, 6, 1> scale = Eigen::Matrix<double, 6, 1>::Ones();
   scale.head<3>().setConstant(1.0 / std::sqrt(std::max(lever2 / total_weight, 1e-300)));
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eigen(
-      scale.asDiagonal() * H * scale.asDiagonal());
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eigen(scale.asDiagonal() * H *
+                                                                         scale.asDiagonal());
   const double min_constraint = kMinMeanConstraint * total_weight;
   int weak_directions = 0;
   for (int k = 0; k < 6; ++k) weak_directions += eigen.eigenvalues()(k) > min_constraint ? 0 : 1;

@@ -4,8 +4,8 @@
 // of no patch black. The field is placed by field_layout() of the label image.
 #include <vector>
 
-#include "core/segmentation/csmp_segmentation.hpp"
 #include "core/render/bgr_picture.hpp"
+#include "core/segmentation/csmp_segmentation.hpp"
 
 namespace cosmos {
 

@@ -6,8 +6,8 @@
 // and +y down, as in the field pictures, so a patch appears on the side of the sphere it faces.
 #include <Eigen/Core>
 
-#include "core/representation/cosmos_view.hpp"
 #include "core/render/bgr_picture.hpp"
+#include "core/representation/cosmos_view.hpp"
 
 namespace cosmos {
 

@@ -33,12 +33,8 @@ BgrColor patch_color(int patch_id) {
   const double q = value * (1 - saturation * f);
   const double t = value * (1 - saturation * (1 - f));
   // HSV to RGB: each sixth of the hue circle has its own order of the three levels.
-  const std::array<std::array<double, 3>, 6> rgb_of_sector{{{value, t, p},
-                                                            {q, value, p},
-                                                            {p, value, t},
-                                                            {p, q, value},
-                                                            {t, p, value},
-                                                            {value, p, q}}};
+  const std::array<std::array<double, 3>, 6> rgb_of_sector{
+      {{value, t, p}, {q, value, p}, {p, value, t}, {p, q, value}, {t, p, value}, {value, p, q}}};
   const auto& [r, g, b] = rgb_of_sector[static_cast<std::size_t>(sector)];
   const auto byte = [](double unit) {
     return static_cast<std::uint8_t>(std::lround(std::clamp(unit, 0.0, 1.0) * 255));

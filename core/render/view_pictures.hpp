@@ -2,8 +2,8 @@
 // The pictures `cosmos inspect` writes for a person to look at.
 #include <filesystem>
 
-#include "core/representation/cosmos_pipeline.hpp"
 #include "core/range_image.hpp"
+#include "core/representation/cosmos_pipeline.hpp"
 
 namespace cosmos {
 

@@ -3,12 +3,12 @@
 // curvature-consistency smoothing -> shape index / curvedness / planar label -> CSMPs ->
 // COSMOS -> shape spectrum and moments.
 #include "core/cosmos_parameters.hpp"
+#include "core/range_image.hpp"
 #include "core/representation/cosmos_view.hpp"
+#include "core/representation/shape_spectrum.hpp"
 #include "core/segmentation/csmp_segmentation.hpp"
 #include "core/surface/darboux_frame_field.hpp"
-#include "core/range_image.hpp"
 #include "core/surface/shape_index.hpp"
-#include "core/representation/shape_spectrum.hpp"
 
 namespace cosmos {
 

@@ -81,7 +81,8 @@ CosmosView build_cosmos_view(const DarbouxFrameField& frames, const ShapeIndexFi
     const double area = field.area_mm2[i];
     const double shape = field.shape_index[i];
     s.area += area;
-    s.normal_area += area * Eigen::Vector3d(frames.frame[kNx][i], frames.frame[kNy][i], frames.frame[kNz][i]);
+    s.normal_area +=
+        area * Eigen::Vector3d(frames.frame[kNx][i], frames.frame[kNy][i], frames.frame[kNz][i]);
     s.position_area += area * Eigen::Vector3d(frames.position_mm[0][i], frames.position_mm[1][i],
                                               frames.position_mm[2][i]);
     s.shape_index_area += area * shape;
@@ -99,7 +100,7 @@ CosmosView build_cosmos_view(const DarbouxFrameField& frames, const ShapeIndexFi
     Csmp patch;
     patch.id = id;
     patch.area_mm2 = s.area;
-    patch.mean_normal = s.normal_area.normalized();             // Eq. 3.7
+    patch.mean_normal = s.normal_area.normalized();  // Eq. 3.7
     patch.shape_index = s.shape_index_area / s.area;
     patch.shape_index_min = s.shape_index_min;
     patch.shape_index_max = s.shape_index_max;
@@ -107,7 +108,8 @@ CosmosView build_cosmos_view(const DarbouxFrameField& frames, const ShapeIndexFi
     patch.centroid_mm = s.position_area / s.area;
     patch.pixels = s.pixels;
     patch.planar = 2 * s.planar_pixels > s.pixels;
-    for (const auto& [neighbor, count] : adjacency[id]) patch.neighbors.push_back({neighbor, count});
+    for (const auto& [neighbor, count] : adjacency[id])
+      patch.neighbors.push_back({neighbor, count});
     view.visible_area_mm2 += s.area;
     view.patches.push_back(std::move(patch));
   }

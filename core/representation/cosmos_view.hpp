@@ -20,7 +20,7 @@ struct Csmp {
   int id = 0;
   double area_mm2 = 0;
   Eigen::Vector3d mean_normal = Eigen::Vector3d::UnitZ();  // G0, Eq. 3.7 (unit)
-  double shape_index = 0;      // area-weighted mean; 2.0 for planar patches
+  double shape_index = 0;  // area-weighted mean; 2.0 for planar patches
   double shape_index_min = 0;
   double shape_index_max = 0;
   double mean_curvedness_per_mm = 0;  // R_m, Eq. 3.16
@@ -33,8 +33,8 @@ struct Csmp {
 // One term of G1/G2 at a Gauss-map point: all patches mapped there with this shape index.
 struct SupportTerm {
   double shape_index = 0;
-  double area_mm2 = 0;              // G1 coefficient of e^{j t S_I}
-  double curvedness_area = 0;       // G2 coefficient: sum of R_m * area
+  double area_mm2 = 0;         // G1 coefficient of e^{j t S_I}
+  double curvedness_area = 0;  // G2 coefficient: sum of R_m * area
   std::vector<int> patches;
 };
 

@@ -40,12 +40,14 @@ ShapeSpectrum ShapeSpectrumAccumulator::finish() const {
   spectrum.visible_area_mm2 = total;
   spectrum.bins.assign(area_per_bin_mm2_.size(), 0.0);
   if (total <= 0) return spectrum;
-  for (std::size_t k = 0; k < area_per_bin_mm2_.size(); ++k) spectrum.bins[k] = area_per_bin_mm2_[k] / total;
+  for (std::size_t k = 0; k < area_per_bin_mm2_.size(); ++k)
+    spectrum.bins[k] = area_per_bin_mm2_[k] / total;
   spectrum.planar_fraction = planar_area_mm2_ / total;
   return spectrum;
 }
 
-ShapeSpectrum compute_shape_spectrum(const ShapeIndexField& field, const SpectrumParameters& parameters) {
+ShapeSpectrum compute_shape_spectrum(const ShapeIndexField& field,
+                                     const SpectrumParameters& parameters) {
   ShapeSpectrumAccumulator accumulator(parameters);
   for (int row = 0; row < field.height(); ++row) accumulator.add_row(field, row);
   return accumulator.finish();
@@ -59,7 +61,8 @@ MomentVector spectrum_moments(const ShapeSpectrum& spectrum) {
   if (curved_mass <= 0) return moments;
   const auto h = [&](std::size_t k) { return (static_cast<double>(k) + 0.5) * spectrum.bin_width; };
   double mean = 0;
-  for (std::size_t k = 0; k < spectrum.bins.size(); ++k) mean += h(k) * spectrum.bins[k] / curved_mass;
+  for (std::size_t k = 0; k < spectrum.bins.size(); ++k)
+    mean += h(k) * spectrum.bins[k] / curved_mass;
   moments[0] = mean;  // Eq. 4.1
   for (std::size_t k = 0; k < spectrum.bins.size(); ++k) {
     const double weight = spectrum.bins[k] / curved_mass;

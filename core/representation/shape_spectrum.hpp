@@ -15,8 +15,8 @@ using MomentVector = std::array<double, kSpectrumMoments + 1>;  // m1..m10, plan
 
 struct ShapeSpectrum {
   double bin_width = 0.005;
-  std::vector<double> bins;     // fraction of the visible area per S_I bin over [0, 1]
-  double planar_fraction = 0;   // fraction of the visible area that is planar (S_I = 2.0)
+  std::vector<double> bins;    // fraction of the visible area per S_I bin over [0, 1]
+  double planar_fraction = 0;  // fraction of the visible area that is planar (S_I = 2.0)
   double visible_area_mm2 = 0;
 };
 

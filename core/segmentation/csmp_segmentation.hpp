@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "core/cosmos_parameters.hpp"
-#include "core/surface/darboux_frame_field.hpp"
 #include "core/pixel_grid.hpp"
+#include "core/surface/darboux_frame_field.hpp"
 #include "core/surface/shape_index.hpp"
 
 namespace cosmos {
@@ -18,7 +18,7 @@ inline constexpr std::int32_t kNoPatch = -1;
 struct CsmpSegmentation {
   PixelGrid<std::int32_t> patch_of_pixel;  // patch id in [0, patch_count) or kNoPatch
   int patch_count = 0;
-  double shape_diameter_limit = 0;         // the limit that was used (adaptive or fixed)
+  double shape_diameter_limit = 0;  // the limit that was used (adaptive or fixed)
 };
 
 // `frames` supplies the normals that keep differently oriented planar faces apart.

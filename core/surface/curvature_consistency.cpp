@@ -20,8 +20,7 @@ struct RobustScales {
 RobustScales robust_scales(const SmoothingParameters& p) {
   const double normal_scale_rad = p.normal_scale_deg * std::numbers::pi / 180.0;
   const double inverse_normal_scale = 1.0 / (1.0 - std::cos(normal_scale_rad));
-  return {static_cast<float>(inverse_normal_scale),
-          static_cast<float>(1.0 + inverse_normal_scale),
+  return {static_cast<float>(inverse_normal_scale), static_cast<float>(1.0 + inverse_normal_scale),
           static_cast<float>(1.0 / (p.curvature_scale * p.curvature_scale)),
           static_cast<float>(p.self_weight),
           static_cast<float>(p.curvature_floor_per_mm * p.curvature_floor_per_mm)};

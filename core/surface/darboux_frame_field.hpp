@@ -19,8 +19,8 @@ struct PixelOffset {
   int column;
   int row;
 };
-inline constexpr std::array<PixelOffset, 8> kNeighborOffsets{{
-    {-1, -1}, {0, -1}, {1, -1}, {-1, 0}, {1, 0}, {-1, 1}, {0, 1}, {1, 1}}};
+inline constexpr std::array<PixelOffset, 8> kNeighborOffsets{
+    {{-1, -1}, {0, -1}, {1, -1}, {-1, 0}, {1, 0}, {-1, 1}, {0, 1}, {1, 1}}};
 
 enum FrameComponent : int { kNx, kNy, kNz, kWxx, kWxy, kWxz, kWyy, kWyz, kWzz, kFrameComponents };
 
@@ -31,10 +31,10 @@ struct DarbouxFrameField {
   int width() const { return valid.width(); }
   int height() const { return valid.height(); }
 
-  PixelGrid<std::uint8_t> valid;       // 1 where the local fit succeeded
-  PixelGrid<std::uint8_t> same_side;   // bit k: neighbour k valid and not across a depth jump
-  std::array<PixelGrid<float>, 3> position_mm;                    // fitted surface point
-  std::array<PixelGrid<float>, kFrameComponents> frame;           // normal, then W
+  PixelGrid<std::uint8_t> valid;      // 1 where the local fit succeeded
+  PixelGrid<std::uint8_t> same_side;  // bit k: neighbour k valid and not across a depth jump
+  std::array<PixelGrid<float>, 3> position_mm;           // fitted surface point
+  std::array<PixelGrid<float>, kFrameComponents> frame;  // normal, then W
 };
 
 struct PrincipalCurvatures {

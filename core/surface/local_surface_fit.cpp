@@ -15,11 +15,11 @@ namespace {
 // quadric coefficients of the Taylor expansion at that point).
 Eigen::Matrix<double, 6, kBicubicTerms> taylor_rows(double u, double v) {
   Eigen::Matrix<double, 6, kBicubicTerms> t;
-  t << 1, u, v, u * u, u * v, v * v, u * u * u, u * u * v, u * v * v, v * v * v,    //
-      0, 1, 0, 2 * u, v, 0, 3 * u * u, 2 * u * v, v * v, 0,                         //
-      0, 0, 1, 0, u, 2 * v, 0, u * u, 2 * u * v, 3 * v * v,                         //
-      0, 0, 0, 1, 0, 0, 3 * u, v, 0, 0,                                             //
-      0, 0, 0, 0, 1, 0, 0, 2 * u, 2 * v, 0,                                         //
+  t << 1, u, v, u * u, u * v, v * v, u * u * u, u * u * v, u * v * v, v * v * v,  //
+      0, 1, 0, 2 * u, v, 0, 3 * u * u, 2 * u * v, v * v, 0,                       //
+      0, 0, 1, 0, u, 2 * v, 0, u * u, 2 * u * v, 3 * v * v,                       //
+      0, 0, 0, 1, 0, 0, 3 * u, v, 0, 0,                                           //
+      0, 0, 0, 0, 1, 0, 0, 2 * u, 2 * v, 0,                                       //
       0, 0, 0, 0, 0, 1, 0, 0, u, 3 * v;
   return t;
 }
@@ -69,9 +69,9 @@ void frames_from_quadrics(int width, float inv_dx, float inv_dy, const float* __
                           float* __restrict z_row) {
   for (int c = 0; c < width; ++c) {
     const bool fit = fits[c] != 0.0f;
-    const FrameValues f = graph_surface_frame(
-        q1[c] * inv_dx, q2[c] * inv_dy, 2 * q3[c] * inv_dx * inv_dx, q4[c] * inv_dx * inv_dy,
-        2 * q5[c] * inv_dy * inv_dy);
+    const FrameValues f =
+        graph_surface_frame(q1[c] * inv_dx, q2[c] * inv_dy, 2 * q3[c] * inv_dx * inv_dx,
+                            q4[c] * inv_dx * inv_dy, 2 * q5[c] * inv_dy * inv_dy);
     nx[c] = fit ? f[kNx] : kNeutralFrame[kNx];
     ny[c] = fit ? f[kNy] : kNeutralFrame[kNy];
     nz[c] = fit ? f[kNz] : kNeutralFrame[kNz];
@@ -144,7 +144,8 @@ bool LocalSurfaceFitter::gather_window(const RangeImage& image, int window_colum
     const float* z_row = image.z_mm.row(window_row + dv);
     for (int du = -h; du <= h; ++du, ++k) {
       const float z = z_row[window_column + du];
-      const int steps = std::max(std::abs(window_column + du - column), std::abs(window_row + dv - row));
+      const int steps =
+          std::max(std::abs(window_column + du - column), std::abs(window_row + dv - row));
       if (!(std::abs(z - center) <= parameters_.depth_jump_mm * steps)) return false;
       samples[k] = static_cast<double>(z) - center;
     }
@@ -202,7 +203,8 @@ bool LocalSurfaceFitter::fit_crease_window(const RangeImage& image, int column, 
     WindowSamples shifted;
     for (int ov = -half_window_, o = 0; ov <= half_window_; ++ov) {
       for (int ou = -half_window_; ou <= half_window_; ++ou, ++o) {
-        if (o == centered || !gather_window(image, column + ou, row + ov, column, row, shifted)) continue;
+        if (o == centered || !gather_window(image, column + ou, row + ov, column, row, shifted))
+          continue;
         const double rss = residual_sum_of_squares(shifted);
         if (rss < best_rss) {
           best_rss = rss;
@@ -264,15 +266,19 @@ void LocalSurfaceFitter::fit_row(const RangeImage& image, int row, DarbouxFrameF
   float* z_row = out.position_mm[2].row(row);
   std::uint8_t* valid_row = out.valid.row(row);
   float* x_row = out.position_mm[0].row(row);
-  for (int column = 0; column < width; ++column) x_row[column] = static_cast<float>(image.x_mm(column));
-  std::fill(out.position_mm[1].row(row), out.position_mm[1].row(row) + width, static_cast<float>(image.y_mm(row)));
+  for (int column = 0; column < width; ++column)
+    x_row[column] = static_cast<float>(image.x_mm(column));
+  std::fill(out.position_mm[1].row(row), out.position_mm[1].row(row) + width,
+            static_cast<float>(image.y_mm(row)));
   // Complete, crease-free windows: the separable fit, in a vectorized kernel over the row.
-  for (int column = 0; column < width; ++column) fits_[column] = separable_fits(column) ? 1.0f : 0.0f;
+  for (int column = 0; column < width; ++column)
+    fits_[column] = separable_fits(column) ? 1.0f : 0.0f;
   const float* q[SeparableWindowFit::kQuadricTerms];
   for (int t = 0; t < SeparableWindowFit::kQuadricTerms; ++t) q[t] = separable_.quadric(t);
-  frames_from_quadrics(width, static_cast<float>(1 / pixel_size_x_mm_), static_cast<float>(1 / pixel_size_y_mm_),
-                       fits_.data(), q[0], q[1], q[2], q[3], q[4], q[5], frame_row[kNx], frame_row[kNy],
-                       frame_row[kNz], frame_row[kWxx], frame_row[kWxy], frame_row[kWxz], frame_row[kWyy],
+  frames_from_quadrics(width, static_cast<float>(1 / pixel_size_x_mm_),
+                       static_cast<float>(1 / pixel_size_y_mm_), fits_.data(), q[0], q[1], q[2],
+                       q[3], q[4], q[5], frame_row[kNx], frame_row[kNy], frame_row[kNz],
+                       frame_row[kWxx], frame_row[kWxy], frame_row[kWxz], frame_row[kWyy],
                        frame_row[kWyz], frame_row[kWzz], z_row);
   for (int column = 0; column < width; ++column) valid_row[column] = fits_[column] != 0.0f ? 1 : 0;
   // The rest (borders, holes, depth jumps, creases) pixel by pixel.
@@ -296,8 +302,7 @@ namespace {
 void link_direction(int begin, int end, int dc, float jump, std::uint8_t bit,
                     const float* __restrict z_center, const std::uint8_t* __restrict valid_center,
                     const float* __restrict z_neighbor,
-                    const std::uint8_t* __restrict valid_neighbor,
-                    std::uint8_t* __restrict mask) {
+                    const std::uint8_t* __restrict valid_neighbor, std::uint8_t* __restrict mask) {
   for (int c = begin; c < end; ++c) {
     const bool linked = (valid_center[c] != 0) & (valid_neighbor[c + dc] != 0) &
                         (std::abs(z_neighbor[c + dc] - z_center[c]) <= jump);
@@ -319,15 +324,15 @@ void LocalSurfaceFitter::link_row(const RangeImage& image, int row, DarbouxFrame
     if (neighbor_row < 0 || neighbor_row >= height) continue;
     // Columns whose neighbour in this direction lies inside the image.
     const int begin = std::max(0, -dc), end = std::min(width, width - dc);
-    link_direction(begin, end, dc, jump, static_cast<std::uint8_t>(1u << k), z_center,
-                   valid_center, image.z_mm.row(neighbor_row), out.valid.row(neighbor_row),
-                   mask_row);
+    link_direction(begin, end, dc, jump, static_cast<std::uint8_t>(1u << k), z_center, valid_center,
+                   image.z_mm.row(neighbor_row), out.valid.row(neighbor_row), mask_row);
   }
 }
 
 void fit_local_surfaces(const RangeImage& image, const SurfaceFitParameters& parameters,
                         DarbouxFrameField& field) {
-  LocalSurfaceFitter fitter(parameters, image.pixel_size_x_mm, image.pixel_size_y_mm, image.width());
+  LocalSurfaceFitter fitter(parameters, image.pixel_size_x_mm, image.pixel_size_y_mm,
+                            image.width());
   for (int row = 0; row < image.height(); ++row) fitter.fit_row(image, row, field);
   for (int row = 0; row < image.height(); ++row) fitter.link_row(image, row, field);
 }

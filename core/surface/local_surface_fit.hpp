@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "core/cosmos_parameters.hpp"
+#include "core/range_image.hpp"
 #include "core/surface/darboux_frame_field.hpp"
 #include "core/surface/partial_window_kernels.hpp"
-#include "core/range_image.hpp"
 #include "core/surface/separable_window_fit.hpp"
 
 namespace cosmos {

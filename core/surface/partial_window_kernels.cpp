@@ -25,7 +25,8 @@ PartialWindowKernels::PartialWindowKernels(int side, bool bicubic)
     throw std::invalid_argument("PartialWindowKernels: window side must be odd, 3..11");
   const int half = side / 2;
   for (int k = 0; k < side * side; ++k) {
-    const Eigen::Matrix<double, kBicubicTerms, 1> m = window_monomials(k % side - half, k / side - half);
+    const Eigen::Matrix<double, kBicubicTerms, 1> m =
+        window_monomials(k % side - half, k / side - half);
     monomials_.push_back(m);
     outer_products_.push_back(m * m.transpose());
   }
@@ -46,7 +47,8 @@ bool PartialWindowKernels::solve(const Mask& mask, double* kernel_storage) const
   const int samples = side_ * side_;
   for (int k = 0; k < samples; ++k)
     if (is_valid(mask, k))
-      normal_matrix += outer_products_[static_cast<std::size_t>(k)].template topLeftCorner<Terms, Terms>();
+      normal_matrix +=
+          outer_products_[static_cast<std::size_t>(k)].template topLeftCorner<Terms, Terms>();
   const Eigen::LDLT<Eigen::Matrix<double, Terms, Terms>> solver(normal_matrix);
   const auto diagonal = solver.vectorD();
   if (solver.info() != Eigen::Success || diagonal.minCoeff() <= 1e-9 * diagonal.maxCoeff())
@@ -66,7 +68,8 @@ bool PartialWindowKernels::solve(const Mask& mask, double* kernel_storage) const
   return true;
 }
 
-const PartialWindowKernels::Kernel* PartialWindowKernels::kernel(const Mask& mask, int valid_count) {
+const PartialWindowKernels::Kernel* PartialWindowKernels::kernel(const Mask& mask,
+                                                                 int valid_count) {
   std::uint64_t hash = 0;
   for (std::uint64_t word : mask) hash = (hash ^ word) * 0x9E3779B97F4A7C15ULL;
   const std::size_t index = static_cast<std::size_t>(hash >> (64 - kEntriesLog2));

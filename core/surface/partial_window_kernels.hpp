@@ -39,7 +39,7 @@ class PartialWindowKernels {
 
   int side_;
   bool bicubic_;
-  std::vector<Eigen::Matrix<double, 10, 1>> monomials_;       // per sample
+  std::vector<Eigen::Matrix<double, 10, 1>> monomials_;        // per sample
   std::vector<Eigen::Matrix<double, 10, 10>> outer_products_;  // per sample, m m^T
   std::vector<Entry> entries_;
   // Every entry's kernel, uninitialized: a fitter touches only the entries it fills, so a

@@ -62,7 +62,8 @@ SeparableWindowFit::SeparableWindowFit(int half_window, int degree, int max_widt
                                             mi[0] * mj[1], degree_ >= 2 ? mi[2] * mj[0] : 0.0,
                                             mi[1] * mj[1], degree_ >= 2 ? mi[0] * mj[2] : 0.0};
       pair_inverse_norm_.push_back(1.0 / (norm_[i] * norm_[j]));
-      for (int t = 0; t < kQuadricTerms; ++t) pair_taylor.push_back(taylor[t] * pair_inverse_norm_.back());
+      for (int t = 0; t < kQuadricTerms; ++t)
+        pair_taylor.push_back(taylor[t] * pair_inverse_norm_.back());
     }
   }
   // Dense table [term][pair] for the column pass.
@@ -74,7 +75,6 @@ SeparableWindowFit::SeparableWindowFit(int half_window, int degree, int max_widt
 }
 
 void SeparableWindowFit::reset() { std::fill(slot_row_.begin(), slot_row_.end(), -1); }
-
 
 // The column pass's constants and outputs, copied out of the members so that the compiler
 // sees they do not alias the outputs (and keeps the constants in registers).
@@ -124,7 +124,7 @@ template <int Side, int Degree, class V>
   // p_i can be nonzero only for a <= i of i's parity: after unrolling, the zero products of
   // the table are known at compile time and dropped.
   constexpr int kOrders[SeparableWindowFit::kQuadricTerms][2] = {{0, 0}, {1, 0}, {0, 1},
-                                                                  {2, 0}, {1, 1}, {0, 2}};
+                                                                 {2, 0}, {1, 1}, {0, 2}};
 #pragma GCC unroll 6
   for (int term = 0; term < SeparableWindowFit::kQuadricTerms; ++term) {
     const int a = kOrders[term][0], b = kOrders[term][1];
@@ -170,7 +170,8 @@ namespace {
 // The row filters of one image row for columns [c, c + lanes): the degree + 1 polynomial
 // filters and the sum of squares over the window's columns, and the depth range.
 template <int Side, int Degree, class V>
-[[gnu::always_inline]] inline void filter_columns(const float* z, const double (&polynomial)[Degree + 1][Side],
+[[gnu::always_inline]] inline void filter_columns(const float* z,
+                                                  const double (&polynomial)[Degree + 1][Side],
                                                   double* const* out, float* low, float* high,
                                                   int c) {
   using L = Lanes<V>;
@@ -205,7 +206,8 @@ void SeparableWindowFit::filter_column_range(const float* z, int slot, int begin
   float* low = &row_min_[static_cast<std::size_t>(slot) * max_width_];
   float* high = &row_max_[static_cast<std::size_t>(slot) * max_width_];
   int c = begin;
-  for (; c + 4 <= end; c += 4) filter_columns<Side, Degree, Double4>(z, polynomial, out, low, high, c);
+  for (; c + 4 <= end; c += 4)
+    filter_columns<Side, Degree, Double4>(z, polynomial, out, low, high, c);
   for (; c < end; ++c) filter_columns<Side, Degree, double>(z, polynomial, out, low, high, c);
 }
 
@@ -213,16 +215,36 @@ void SeparableWindowFit::filter_column_range(const float* z, int slot, int begin
 template <class Run>
 void SeparableWindowFit::with_window_shape(Run&& run) const {
   switch (side_ * 10 + degree_) {
-    case 32: run.template operator()<3, 2>(); break;
-    case 33: run.template operator()<3, 3>(); break;
-    case 52: run.template operator()<5, 2>(); break;
-    case 53: run.template operator()<5, 3>(); break;
-    case 72: run.template operator()<7, 2>(); break;
-    case 73: run.template operator()<7, 3>(); break;
-    case 92: run.template operator()<9, 2>(); break;
-    case 93: run.template operator()<9, 3>(); break;
-    case 112: run.template operator()<11, 2>(); break;
-    default: run.template operator()<11, 3>(); break;
+    case 32:
+      run.template operator()<3, 2>();
+      break;
+    case 33:
+      run.template operator()<3, 3>();
+      break;
+    case 52:
+      run.template operator()<5, 2>();
+      break;
+    case 53:
+      run.template operator()<5, 3>();
+      break;
+    case 72:
+      run.template operator()<7, 2>();
+      break;
+    case 73:
+      run.template operator()<7, 3>();
+      break;
+    case 92:
+      run.template operator()<9, 2>();
+      break;
+    case 93:
+      run.template operator()<9, 3>();
+      break;
+    case 112:
+      run.template operator()<11, 2>();
+      break;
+    default:
+      run.template operator()<11, 3>();
+      break;
   }
 }
 
@@ -245,7 +267,8 @@ void SeparableWindowFit::filter_image_row(const RangeImage& image, int image_row
     std::fill(out, out + begin, nan);
     std::fill(out + end, out + width, nan);
   }
-  with_window_shape([&]<int Side, int Degree>() { filter_column_range<Side, Degree>(z, slot, begin, end); });
+  with_window_shape(
+      [&]<int Side, int Degree>() { filter_column_range<Side, Degree>(z, slot, begin, end); });
 }
 
 void SeparableWindowFit::fit_row(const RangeImage& image, int row, double max_depth_range_mm) {

@@ -13,8 +13,10 @@ namespace {
 // per-pixel loops vectorize; libm's atan2 would be a call per pixel.
 inline float atan_unit(float t) {
   const float t2 = t * t;
-  return t * (0.99997726f + t2 * (-0.33262347f + t2 * (0.19354346f + t2 * (-0.11643287f +
-              t2 * (0.05265332f + t2 * -0.01172120f)))));
+  return t *
+         (0.99997726f +
+          t2 * (-0.33262347f +
+                t2 * (0.19354346f + t2 * (-0.11643287f + t2 * (0.05265332f + t2 * -0.01172120f)))));
 }
 
 // Eq. 3.2 is written for the thesis's sign convention, where convex surfaces have negative

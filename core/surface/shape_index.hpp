@@ -4,8 +4,8 @@
 #include <cstdint>
 
 #include "core/cosmos_parameters.hpp"
-#include "core/surface/darboux_frame_field.hpp"
 #include "core/pixel_grid.hpp"
+#include "core/surface/darboux_frame_field.hpp"
 
 namespace cosmos {
 
@@ -24,10 +24,10 @@ float shape_index_sensitivity_mm(float kappa1, float kappa2);
 
 struct ShapeIndexField {
   PixelGrid<SurfaceLabel> label;
-  PixelGrid<float> shape_index;      // [0, 1] on curved pixels, 2.0 on planar, NaN invalid
+  PixelGrid<float> shape_index;  // [0, 1] on curved pixels, 2.0 on planar, NaN invalid
   PixelGrid<float> curvedness_per_mm;
-  PixelGrid<float> area_mm2;         // true surface area of the pixel's cell, from its normal
-  PixelGrid<std::uint8_t> same_side; // copied from the frame field: 8-connectivity for growing
+  PixelGrid<float> area_mm2;          // true surface area of the pixel's cell, from its normal
+  PixelGrid<std::uint8_t> same_side;  // copied from the frame field: 8-connectivity for growing
 
   int width() const { return label.width(); }
   int height() const { return label.height(); }

@@ -21,8 +21,8 @@
 #include "realtime/cell/cell_status.hpp"
 #include "realtime/cell/part_recognition.hpp"
 #include "realtime/lcm/pose_publisher.hpp"
-#include "realtime/rt/realtime_settings.hpp"
 #include "realtime/loop/scan_loop.hpp"
+#include "realtime/rt/realtime_settings.hpp"
 #include "realtime/sources/scanner_source.hpp"
 
 namespace cosmos {

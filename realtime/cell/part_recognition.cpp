@@ -6,8 +6,8 @@
 #include <limits>
 
 #include "core/representation/cosmos_view.hpp"
-#include "core/segmentation/csmp_segmentation.hpp"
 #include "core/representation/shape_spectrum.hpp"
+#include "core/segmentation/csmp_segmentation.hpp"
 
 namespace cosmos {
 namespace {

@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "core/representation/cosmos_pipeline.hpp"
 #include "core/modelbase/model_base.hpp"
 #include "core/range_image.hpp"
 #include "core/recognition/recognizer.hpp"
+#include "core/representation/cosmos_pipeline.hpp"
 #include "core/rigid_transform.hpp"
 #include "realtime/cell/part_pose.hpp"
 #include "realtime/loop/scan_loop.hpp"

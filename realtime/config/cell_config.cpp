@@ -8,9 +8,9 @@
 #include <set>
 
 #include "core/input_error.hpp"
+#include "core/io/yaml_input_errors.hpp"
 #include "core/io/yaml_section_reader.hpp"
 #include "scanner/scanner_config.hpp"
-#include "core/io/yaml_input_errors.hpp"
 
 namespace cosmos {
 namespace {

@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "core/input_error.hpp"
+#include "core/io/yaml_input_errors.hpp"
+#include "core/io/yaml_section_reader.hpp"
 #include "firmware_bridge/pixel_format.hpp"
 #include "firmware_bridge/v4l2_camera.hpp"
-#include "core/io/yaml_section_reader.hpp"
-#include "core/io/yaml_input_errors.hpp"
 
 namespace cosmos {
 namespace {

@@ -12,8 +12,8 @@
 
 #include "core/profile.hpp"
 #include "realtime/cell/cell_status.hpp"
-#include "realtime/lcm/lcm_channels.hpp"
 #include "realtime/cell/part_pose.hpp"
+#include "realtime/lcm/lcm_channels.hpp"
 
 namespace lcm {
 class LCM;

@@ -13,12 +13,12 @@
 #include <vector>
 
 #include "core/cosmos_parameters.hpp"
+#include "core/range_image.hpp"
+#include "core/representation/shape_spectrum.hpp"
 #include "core/surface/curvature_consistency.hpp"
 #include "core/surface/darboux_frame_field.hpp"
 #include "core/surface/local_surface_fit.hpp"
-#include "core/range_image.hpp"
 #include "core/surface/shape_index.hpp"
-#include "core/representation/shape_spectrum.hpp"
 
 namespace cosmos {
 

@@ -13,8 +13,8 @@
 #include <system_error>
 #include <vector>
 
-#include "sim/evaluation/plot_frame.hpp"
 #include "core/input_error.hpp"
+#include "sim/evaluation/plot_frame.hpp"
 
 namespace cosmos {
 namespace {
@@ -246,9 +246,8 @@ std::string report_html(std::span<const EvaluationRecord> records, const Evaluat
          << "</td><td>" << format_or_dash(outcome.translation_error_mm, "%.3f") << "</td><td>"
          << format_or_dash(outcome.add_s_over_diameter, "%.4f") << "</td><td>"
          << format("%.2f", record.recognition_ms) << "</td><td>"
-         << format("%.2f", record.features_ms) << "</td><td>"
-         << format("%.2f", record.matching_ms) << "</td><td>"
-         << format("%.2f", record.registration_ms) << "</td><td>"
+         << format("%.2f", record.features_ms) << "</td><td>" << format("%.2f", record.matching_ms)
+         << "</td><td>" << format("%.2f", record.registration_ms) << "</td><td>"
          << (record.pose_searched ? "yes" : "no") << "</td><td>"
          << html_escape(record.rejection_reason) << "</td></tr>\n";
   }

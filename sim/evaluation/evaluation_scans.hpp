@@ -13,12 +13,12 @@
 #include <string>
 #include <vector>
 
-#include "sim/evaluation/evaluation_metrics.hpp"
 #include "core/modelbase/model_base.hpp"
 #include "core/recognition/recognizer.hpp"
+#include "scanner/scanner_model.hpp"
+#include "sim/evaluation/evaluation_metrics.hpp"
 #include "sim/mesh.hpp"
 #include "sim/part_catalog.hpp"
-#include "scanner/scanner_model.hpp"
 
 namespace cosmos {
 

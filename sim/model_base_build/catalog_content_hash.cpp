@@ -23,7 +23,8 @@ std::string catalog_content_hash(const PartCatalog& catalog) {
     field(size);
     field(part.symmetric ? "symmetric" : "asymmetric");
     std::ifstream mesh(part.mesh_path, std::ios::binary);
-    if (!mesh) throw InputError(part.mesh_path.string() + ": cannot read the mesh to hash the catalog");
+    if (!mesh)
+      throw InputError(part.mesh_path.string() + ": cannot read the mesh to hash the catalog");
     std::uint64_t mesh_bytes = 0;
     while (mesh) {
       mesh.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));

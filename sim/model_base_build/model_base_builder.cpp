@@ -10,11 +10,11 @@
 #include <stdexcept>
 #include <thread>
 
-#include "sim/model_base_build/catalog_content_hash.hpp"
-#include "sim/model_base_build/model_base_parameters.hpp"
 #include "core/representation/cosmos_pipeline.hpp"
 #include "sim/convex_hull.hpp"
 #include "sim/mesh.hpp"
+#include "sim/model_base_build/catalog_content_hash.hpp"
+#include "sim/model_base_build/model_base_parameters.hpp"
 #include "sim/model_views.hpp"
 
 namespace cosmos {
@@ -49,8 +49,8 @@ struct ViewResult {
 
 // What the workers share. Each job writes only its own result slot.
 struct BuildJobs {
-  BuildJobs(const PartCatalog& catalog_, const std::vector<TriangleMesh>& meshes_, const ScannerParameters& scanner_,
-            const ModelBaseBuildSettings& settings_)
+  BuildJobs(const PartCatalog& catalog_, const std::vector<TriangleMesh>& meshes_,
+            const ScannerParameters& scanner_, const ModelBaseBuildSettings& settings_)
       : catalog(catalog_),
         meshes(meshes_),
         scanner(scanner_),
@@ -75,8 +75,8 @@ struct BuildJobs {
   std::size_t views_per_part() const { return view_indices.size(); }
 };
 
-void analyze_job(const ModelBaseBuildSettings& settings, ModelViewRenderer& renderer, int part, int view_index,
-                 ViewResult& result) {
+void analyze_job(const ModelBaseBuildSettings& settings, ModelViewRenderer& renderer, int part,
+                 int view_index, ViewResult& result) {
   const ModelView scanned = renderer.scan_view(view_index);
   if (scanned.image.width() == 0 || scanned.image.count_valid() == 0) return;
   ViewAnalysis analysis = analyze_view(scanned.image, settings.cosmos);
@@ -87,7 +87,8 @@ void analyze_job(const ModelBaseBuildSettings& settings, ModelViewRenderer& rend
   view.T_scanner_part = {scanned.T_scanner_part.linear(), scanned.T_scanner_part.translation()};
   view.moments = analysis.moments;
   // With the view's Darboux frames, control-point normals come from the smoothed bicubic fit,
-  // more accurate on curved surfaces than the window plane's (core/registration/registration_points.hpp).
+  // more accurate on curved surfaces than the window plane's
+  // (core/registration/registration_points.hpp).
   const RegistrationPointsResult registration =
       build_registration_points(scanned.image, settings.registration, &analysis.frames);
   view.registration_packed = pack_registration_points(registration.points);
@@ -105,9 +106,10 @@ void run_worker(BuildJobs& jobs) {
       const int view_index = jobs.view_indices[job % jobs.views_per_part()];
       if (part != renderer_part) {
         renderer.reset();
-        renderer = std::make_unique<ModelViewRenderer>(jobs.meshes[static_cast<std::size_t>(part)],
-                                                       jobs.catalog.parts[static_cast<std::size_t>(part)].name,
-                                                       jobs.scanner, kViewSphereSubdivisions);
+        renderer = std::make_unique<ModelViewRenderer>(
+            jobs.meshes[static_cast<std::size_t>(part)],
+            jobs.catalog.parts[static_cast<std::size_t>(part)].name, jobs.scanner,
+            kViewSphereSubdivisions);
         renderer_part = part;
       }
       analyze_job(jobs.settings, *renderer, part, view_index, jobs.results[job]);
@@ -149,7 +151,8 @@ void run_jobs(BuildJobs& jobs, int threads, const ModelBaseProgress& progress) {
     const ModelBaseBuildProgress now = snapshot(jobs);
     const bool finished = now.views_done == now.views_total || jobs.failed;
     const auto time = std::chrono::steady_clock::now();
-    if (progress && (finished || now.parts_done != reported_parts || time - last_report >= std::chrono::milliseconds(100))) {
+    if (progress && (finished || now.parts_done != reported_parts ||
+                     time - last_report >= std::chrono::milliseconds(100))) {
       progress(now);
       reported_parts = now.parts_done;
       last_report = time;
@@ -169,7 +172,8 @@ RegistrationPointParameters model_surface_registration_parameters() {
 }
 
 ModelBase build_model_base(const PartCatalog& catalog, const ScannerParameters& scanner,
-                           const ModelBaseBuildSettings& settings, const ModelBaseProgress& progress) {
+                           const ModelBaseBuildSettings& settings,
+                           const ModelBaseProgress& progress) {
   ModelBase base;
   base.catalog_hash = catalog_content_hash(catalog);
   base.parameters_text = model_base_parameters_text(settings.cosmos, scanner, settings.registration,
@@ -191,7 +195,8 @@ ModelBase build_model_base(const PartCatalog& catalog, const ScannerParameters& 
     if (result.measured) base.views.push_back(std::move(result.view));
   ViewGroupingResult grouping = group_model_views(base, settings.grouping);
   if (grouping.status != ClusteringStatus::ok)
-    throw std::logic_error("view grouping failed for part '" + base.parts[static_cast<std::size_t>(grouping.failed_part)].name +
+    throw std::logic_error("view grouping failed for part '" +
+                           base.parts[static_cast<std::size_t>(grouping.failed_part)].name +
                            "' (non-finite moments?)");
   base.clusters = std::move(grouping.clusters);
   return base;

@@ -9,13 +9,13 @@
 // order, so the base is byte-identical for any thread count.
 #include <functional>
 
-#include "sim/model_base_build/view_direction_subset.hpp"
 #include "core/cosmos_parameters.hpp"
 #include "core/modelbase/model_base.hpp"
-#include "core/registration/registration_points.hpp"
 #include "core/modelbase/view_grouping.hpp"
-#include "sim/part_catalog.hpp"
+#include "core/registration/registration_points.hpp"
 #include "scanner/scanner_model.hpp"
+#include "sim/model_base_build/view_direction_subset.hpp"
+#include "sim/part_catalog.hpp"
 
 namespace cosmos {
 
@@ -50,6 +50,7 @@ using ModelBaseProgress = std::function<void(const ModelBaseBuildProgress&)>;
 // Meshes that do not load throw InputError naming the file. Views in which the scanner
 // measured nothing (a part outside the measuring range from that side) are left out.
 ModelBase build_model_base(const PartCatalog& catalog, const ScannerParameters& scanner,
-                           const ModelBaseBuildSettings& settings, const ModelBaseProgress& progress = {});
+                           const ModelBaseBuildSettings& settings,
+                           const ModelBaseProgress& progress = {});
 
 }  // namespace cosmos

@@ -2,10 +2,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/model_base_build/view_direction_subset.hpp"
 #include "core/input_error.hpp"
 #include "core/io/model_base_file.hpp"
 #include "core/io/parameters_text.hpp"
+#include "sim/model_base_build/view_direction_subset.hpp"
 
 namespace cosmos {
 namespace {
@@ -28,8 +28,10 @@ void add_cosmos(ParameterText& t, const CosmosParameters& p) {
   t.set_number("cosmos.segmentation.adaptive_start_limit", p.segmentation.adaptive_start_limit);
   t.set_number("cosmos.segmentation.adaptive_limit_step", p.segmentation.adaptive_limit_step);
   t.set_number("cosmos.segmentation.adaptive_max_limit", p.segmentation.adaptive_max_limit);
-  t.set_integer("cosmos.segmentation.boundary_refinement_passes", p.segmentation.boundary_refinement_passes);
-  t.set_number("cosmos.segmentation.min_patch_area_fraction", p.segmentation.min_patch_area_fraction);
+  t.set_integer("cosmos.segmentation.boundary_refinement_passes",
+                p.segmentation.boundary_refinement_passes);
+  t.set_number("cosmos.segmentation.min_patch_area_fraction",
+               p.segmentation.min_patch_area_fraction);
   t.set_number("cosmos.segmentation.planar_crease_deg", p.segmentation.planar_crease_deg);
   t.set_number("cosmos.segmentation.seed_shape_index_quantum",
                p.segmentation.seed_shape_index_quantum);
@@ -69,16 +71,18 @@ void add_scanner(ParameterText& t, const ScannerParameters& p) {
 
 }  // namespace
 
-std::string model_base_parameters_text(const CosmosParameters& cosmos, const ScannerParameters& scanner,
-                                       const RegistrationPointParameters& registration, int view_count,
-                                       const ViewGroupingParameters& grouping) {
+std::string model_base_parameters_text(const CosmosParameters& cosmos,
+                                       const ScannerParameters& scanner,
+                                       const RegistrationPointParameters& registration,
+                                       int view_count, const ViewGroupingParameters& grouping) {
   ParameterText text;
   add_cosmos(text, cosmos);
   add_registration(text, registration);
   add_scanner(text, scanner);
   text.set_integer("views.count", view_count);
   text.set_integer("views.sphere_subdivisions", kViewSphereSubdivisions);
-  text.set_text("views.subset", "spread: face centres, then once-subdivided middles, then the rest");
+  text.set_text("views.subset",
+                "spread: face centres, then once-subdivided middles, then the rest");
   text.set_text("views.scan_mode", "profile");
   if (grouping.cluster_count > 0) {
     text.set_integer("grouping.cluster_count", grouping.cluster_count);
@@ -94,10 +98,9 @@ ModelBase read_model_base_for(const std::filesystem::path& path, const CosmosPar
   ParameterText expected;
   add_cosmos(expected, cosmos);
   const nlohmann::json recorded = nlohmann::json::parse(base.parameters_text, nullptr, false);
-  const std::string recorded_cosmos =
-      recorded.is_object() && recorded.contains("cosmos")
-          ? nlohmann::json{{"cosmos", recorded["cosmos"]}}.dump(2)
-          : std::string("{}");
+  const std::string recorded_cosmos = recorded.is_object() && recorded.contains("cosmos")
+                                          ? nlohmann::json{{"cosmos", recorded["cosmos"]}}.dump(2)
+                                          : std::string("{}");
   if (const auto difference = first_parameter_difference(expected.text(), recorded_cosmos))
     throw InputError(path.string() + ": built with other parameters: " + difference->key + " is " +
                      difference->actual + ", this recognizer uses " + difference->expected);

@@ -12,18 +12,18 @@
 #include <filesystem>
 #include <string>
 
-#include "core/modelbase/model_base.hpp"
-
 #include "core/cosmos_parameters.hpp"
-#include "core/registration/registration_points.hpp"
+#include "core/modelbase/model_base.hpp"
 #include "core/modelbase/view_grouping.hpp"
+#include "core/registration/registration_points.hpp"
 #include "scanner/scanner_model.hpp"
 
 namespace cosmos {
 
-std::string model_base_parameters_text(const CosmosParameters& cosmos, const ScannerParameters& scanner,
-                                       const RegistrationPointParameters& registration, int view_count,
-                                       const ViewGroupingParameters& grouping);
+std::string model_base_parameters_text(const CosmosParameters& cosmos,
+                                       const ScannerParameters& scanner,
+                                       const RegistrationPointParameters& registration,
+                                       int view_count, const ViewGroupingParameters& grouping);
 
 // Reads a model base for recognition with `cosmos`: live scans must be analyzed exactly as
 // the model views were, so a base whose cosmos.* parameters differ is refused with one line

@@ -27,21 +27,25 @@ std::vector<int> spread_view_subset(int count) {
   std::vector<int> order;
   std::vector<bool> taken(static_cast<std::size_t>(n), false);
   // Smallest angle-proxy (chord length) from each direction to the taken ones.
-  std::vector<double> distance(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
+  std::vector<double> distance(static_cast<std::size_t>(n),
+                               std::numeric_limits<double>::infinity());
   for (int tier = 0; tier <= 2 && static_cast<int>(order.size()) < count; ++tier) {
     while (static_cast<int>(order.size()) < count) {
       int best = -1;
       for (int i = 0; i < n; ++i) {
         if (taken[static_cast<std::size_t>(i)] || tier_of(i) != tier) continue;
-        if (best < 0 || distance[static_cast<std::size_t>(i)] > distance[static_cast<std::size_t>(best)]) best = i;
+        if (best < 0 ||
+            distance[static_cast<std::size_t>(i)] > distance[static_cast<std::size_t>(best)])
+          best = i;
       }
       if (best < 0) break;
       taken[static_cast<std::size_t>(best)] = true;
       order.push_back(best);
       for (int i = 0; i < n; ++i)
-        distance[static_cast<std::size_t>(i)] =
-            std::min(distance[static_cast<std::size_t>(i)], (directions[static_cast<std::size_t>(i)] -
-                                                             directions[static_cast<std::size_t>(best)]).norm());
+        distance[static_cast<std::size_t>(i)] = std::min(
+            distance[static_cast<std::size_t>(i)],
+            (directions[static_cast<std::size_t>(i)] - directions[static_cast<std::size_t>(best)])
+                .norm());
     }
   }
   std::sort(order.begin(), order.end());

@@ -188,8 +188,8 @@ const PlacedSimPart* SimulatedSource::placed_part_scanned_in(std::int64_t first_
   const PlacedSimPart* best = nullptr;
   std::int64_t best_overlap = 0;
   for (const PlacedSimPart& part : placed_) {
-    const std::int64_t overlap = std::min(last_profile, part.last_profile) -
-                                 std::max(first_profile, part.first_profile) + 1;
+    const std::int64_t overlap =
+        std::min(last_profile, part.last_profile) - std::max(first_profile, part.first_profile) + 1;
     if (overlap > best_overlap) {
       best = &part;
       best_overlap = overlap;

@@ -23,10 +23,10 @@
 
 #include "firmware_bridge/error_line.hpp"
 #include "realtime/sources/scanner_source.hpp"
+#include "scanner/scanner_model.hpp"
 #include "sim/conveyor_scene.hpp"
 #include "sim/mesh.hpp"
 #include "sim/part_catalog.hpp"
-#include "scanner/scanner_model.hpp"
 #include "sim/simulated_scanner.hpp"
 
 namespace cosmos {

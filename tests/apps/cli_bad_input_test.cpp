@@ -15,8 +15,8 @@
 #include <string>
 
 #include "core/io/range_image_file.hpp"
-#include "tests/apps/cosmos_cli.hpp"
 #include "sim/analytic_surface.hpp"
+#include "tests/apps/cosmos_cli.hpp"
 #include "tests/sim/handmade_image_files.hpp"
 
 namespace cosmos {
@@ -49,8 +49,8 @@ class CliBadInput : public ::testing::Test {
   }
 
   void expect_inspect_rejects(const fs::path& range, const std::string& needle) const {
-    expect_one_line_failure("inspect '" + range.string() + "' --out '" + file("inspect_out").string() + "'",
-                            needle);
+    expect_one_line_failure(
+        "inspect '" + range.string() + "' --out '" + file("inspect_out").string() + "'", needle);
   }
 
   void write_valid_range(const fs::path& path) const {
@@ -118,7 +118,8 @@ TEST_F(CliBadInput, SynthRejectsBadShapesAndFiles) {
   expect_one_line_failure("synth" + out, "SHAPE");
   expect_one_line_failure("synth sphere", "--out");
   expect_one_line_failure("synth sphere --out '" + file("x.png").string() + "'", "x.png");
-  expect_one_line_failure("synth sphere --out '" + (dir_ / "no_dir" / "y.tiff").string() + "'", "y.tiff");
+  expect_one_line_failure("synth sphere --out '" + (dir_ / "no_dir" / "y.tiff").string() + "'",
+                          "y.tiff");
   EXPECT_FALSE(fs::exists(file("x.tiff")));
 }
 
@@ -145,7 +146,9 @@ TEST_F(CliBadInput, SynthSphereLoadsBack) {
   const AnalyticSurface expected = make_analytic_surface(AnalyticSurfaceSpec{});
   ASSERT_EQ(image.width(), expected.range.width());
   ASSERT_EQ(image.height(), expected.range.height());
-  EXPECT_EQ(std::memcmp(image.z_mm.data(), expected.range.z_mm.data(), image.z_mm.size() * sizeof(float)), 0);
+  EXPECT_EQ(
+      std::memcmp(image.z_mm.data(), expected.range.z_mm.data(), image.z_mm.size() * sizeof(float)),
+      0);
   EXPECT_EQ(image.pixel_size_x_mm, 0.5);
   EXPECT_EQ(image.origin_x_mm, expected.range.origin_x_mm);
   ASSERT_TRUE(image.ground_truth.has_value());
@@ -169,7 +172,9 @@ TEST_F(CliBadInput, SynthOptionsReachTheSurface) {
   const RangeImage image = read_range_image(file("corner.pfm"));
   ASSERT_EQ(image.width(), expected.range.width());
   ASSERT_EQ(image.height(), expected.range.height());
-  EXPECT_EQ(std::memcmp(image.z_mm.data(), expected.range.z_mm.data(), image.z_mm.size() * sizeof(float)), 0);
+  EXPECT_EQ(
+      std::memcmp(image.z_mm.data(), expected.range.z_mm.data(), image.z_mm.size() * sizeof(float)),
+      0);
   EXPECT_EQ(image.pixel_size_y_mm, 0.25);
   ASSERT_TRUE(image.ground_truth.has_value());
   EXPECT_EQ(image.ground_truth->part, "box-corner");

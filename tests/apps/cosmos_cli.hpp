@@ -29,8 +29,8 @@ inline std::string read_text(const std::filesystem::path& path) {
 // Runs `cosmos ARGS`, capturing stdout and stderr in files inside `dir`.
 inline CliRun run_cosmos(const std::string& args, const std::filesystem::path& dir) {
   const std::filesystem::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command = std::string("exec '") + COSMOS_BINARY + "' " + args + " >'" + out.string() +
-                              "' 2>'" + err.string() + "'";
+  const std::string command = std::string("exec '") + COSMOS_BINARY + "' " + args + " >'" +
+                              out.string() + "' 2>'" + err.string() + "'";
   const int status = std::system(command.c_str());
   CliRun result;
   result.exited = WIFEXITED(status);
@@ -47,7 +47,8 @@ inline void expect_one_line_failure(const CliRun& result, const std::string& nee
   ASSERT_FALSE(result.err.empty());
   EXPECT_EQ(result.err.back(), '\n') << result.err;
   EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
-  EXPECT_NE(result.err.find(needle), std::string::npos) << "'" << needle << "' not in: " << result.err;
+  EXPECT_NE(result.err.find(needle), std::string::npos)
+      << "'" << needle << "' not in: " << result.err;
 }
 
 }  // namespace cosmos::testing

@@ -63,22 +63,25 @@ class ModelBaseCli : public ::testing::Test {
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     write_periodic_off(dir_ / "torus.off", 64, 32, [](double u, double v) {
-      return std::array<double, 3>{(25 + 10 * std::cos(v)) * std::cos(u), (25 + 10 * std::cos(v)) * std::sin(u),
-                                   10 * std::sin(v)};
+      return std::array<double, 3>{(25 + 10 * std::cos(v)) * std::cos(u),
+                                   (25 + 10 * std::cos(v)) * std::sin(u), 10 * std::sin(v)};
     });
     // An ellipsoid parametrized over a full v turn (each point twice; joined on loading).
     write_periodic_off(dir_ / "ellipsoid.off", 64, 32, [](double u, double v) {
       const double polar = v / 2;
-      return std::array<double, 3>{30 * std::sin(polar) * std::cos(u), 20 * std::sin(polar) * std::sin(u),
-                                   15 * std::cos(polar)};
+      return std::array<double, 3>{30 * std::sin(polar) * std::cos(u),
+                                   20 * std::sin(polar) * std::sin(u), 15 * std::cos(polar)};
     });
-    std::ofstream(dir_ / "parts.yaml") << "parts:\n"
-                                          "  - {name: torus, mesh: ./torus.off, size_mm: 70}\n"
-                                          "  - {name: ellipsoid, mesh: ./ellipsoid.off, size_mm: 60, symmetric: false}\n";
+    std::ofstream(dir_ / "parts.yaml")
+        << "parts:\n"
+           "  - {name: torus, mesh: ./torus.off, size_mm: 70}\n"
+           "  - {name: ellipsoid, mesh: ./ellipsoid.off, size_mm: 60, symmetric: false}\n";
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
 
-  static fs::path base_path(int threads) { return dir_ / ("base_t" + std::to_string(threads) + ".cmb"); }
+  static fs::path base_path(int threads) {
+    return dir_ / ("base_t" + std::to_string(threads) + ".cmb");
+  }
 
   // The base built with 1 or 2 threads, on first use: ctest runs each test in its own process.
   static const RunResult& build(int threads) {
@@ -92,8 +95,8 @@ class ModelBaseCli : public ::testing::Test {
 
   static RunResult run(const std::string& args) {
     const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command =
-        std::string("exec '") + COSMOS_BINARY + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+    const std::string command = std::string("exec '") + COSMOS_BINARY + "' " + args + " >'" +
+                                out.string() + "' 2>'" + err.string() + "'";
     const int status = std::system(command.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
   }
@@ -104,7 +107,8 @@ class ModelBaseCli : public ::testing::Test {
     EXPECT_GT(result.exit_code, 0);
     EXPECT_LT(result.exit_code, 128);
     EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
-    EXPECT_NE(result.err.find(needle), std::string::npos) << "'" << needle << "' not in: " << result.err;
+    EXPECT_NE(result.err.find(needle), std::string::npos)
+        << "'" << needle << "' not in: " << result.err;
   }
 
   static inline fs::path dir_;
@@ -114,7 +118,9 @@ class ModelBaseCli : public ::testing::Test {
 TEST_F(ModelBaseCli, BuildsEveryPartFromTheSpreadViewsAndGroupsThem) {
   const RunResult& built = build(1);
   ASSERT_EQ(built.exit_code, 0) << built.err;
-  EXPECT_NE(built.out.find("modelbase build: 2 parts, 24 views (0 measured nothing)"), std::string::npos) << built.out;
+  EXPECT_NE(built.out.find("modelbase build: 2 parts, 24 views (0 measured nothing)"),
+            std::string::npos)
+      << built.out;
   // stderr is not a terminal here: one line per part.
   EXPECT_NE(built.err.find("part 1/2 torus scanned"), std::string::npos) << built.err;
   EXPECT_NE(built.err.find("part 2/2 ellipsoid scanned"), std::string::npos) << built.err;
@@ -134,7 +140,9 @@ TEST_F(ModelBaseCli, BuildsEveryPartFromTheSpreadViewsAndGroupsThem) {
     EXPECT_EQ(view.view_index % 16, 15) << "12 <= 20 views: icosahedron face centres only";
     EXPECT_NEAR(view.direction_part.norm(), 1.0, 1e-12);
     // The part turned so the view direction points at the scanner (+z).
-    EXPECT_NEAR((view.T_scanner_part.rotation * view.direction_part - Eigen::Vector3d::UnitZ()).norm(), 0.0, 1e-9);
+    EXPECT_NEAR(
+        (view.T_scanner_part.rotation * view.direction_part - Eigen::Vector3d::UnitZ()).norm(), 0.0,
+        1e-9);
     EXPECT_FALSE(view.cosmos.patches.empty());
     EXPECT_GT(view.registration_packed.size(), 100);
   }
@@ -169,12 +177,15 @@ TEST_F(ModelBaseCli, InfoPrintsPartsAndClusterCounts) {
             std::string::npos)
       << info.out;
   for (int part = 0; part < 2; ++part) {
-    const auto clusters = std::count_if(base.clusters.begin(), base.clusters.end(),
-                                        [part](const ViewCluster& c) { return c.part_index == part; });
-    const std::regex row(base.parts[static_cast<std::size_t>(part)].name + " +12 +" + std::to_string(clusters) + " ");
+    const auto clusters =
+        std::count_if(base.clusters.begin(), base.clusters.end(),
+                      [part](const ViewCluster& c) { return c.part_index == part; });
+    const std::regex row(base.parts[static_cast<std::size_t>(part)].name + " +12 +" +
+                         std::to_string(clusters) + " ");
     EXPECT_TRUE(std::regex_search(info.out, row)) << info.out;
   }
-  EXPECT_NE(info.out.find("file size: " + std::to_string(fs::file_size(base_path(1))) + " bytes"), std::string::npos);
+  EXPECT_NE(info.out.find("file size: " + std::to_string(fs::file_size(base_path(1))) + " bytes"),
+            std::string::npos);
   EXPECT_NE(info.out.find("\"z_noise_mm\": 0.02"), std::string::npos) << "the parameters are shown";
 }
 
@@ -196,9 +207,12 @@ TEST_F(ModelBaseCli, DamagedFilesAreRefusedInOneLine) {
   const fs::path damaged = dir_ / "damaged.cmb";
   content[content.size() / 3] = static_cast<char>(content[content.size() / 3] ^ 0x01);
   std::ofstream(damaged, std::ios::binary) << content;
-  expect_one_line_failure("modelbase info '" + damaged.string() + "'", damaged.string() + ": corrupted: checksum mismatch");
-  std::ofstream(damaged, std::ios::binary | std::ios::trunc) << content.substr(0, content.size() / 2);
-  expect_one_line_failure("modelbase info '" + damaged.string() + "'", damaged.string() + ": truncated");
+  expect_one_line_failure("modelbase info '" + damaged.string() + "'",
+                          damaged.string() + ": corrupted: checksum mismatch");
+  std::ofstream(damaged, std::ios::binary | std::ios::trunc)
+      << content.substr(0, content.size() / 2);
+  expect_one_line_failure("modelbase info '" + damaged.string() + "'",
+                          damaged.string() + ": truncated");
 }
 
 TEST_F(ModelBaseCli, BadOptionsAreRefusedInOneLine) {
@@ -207,10 +221,13 @@ TEST_F(ModelBaseCli, BadOptionsAreRefusedInOneLine) {
   expect_one_line_failure("modelbase build " + catalog + "--views 0" + out, "--views '0'");
   expect_one_line_failure("modelbase build " + catalog + "--views 321" + out, "--views '321'");
   expect_one_line_failure("modelbase build " + catalog + "--threads x" + out, "--threads 'x'");
-  expect_one_line_failure("modelbase build " + catalog + "--cluster-level 1e-4 --clusters 5" + out, "not both");
-  expect_one_line_failure("modelbase build " + catalog + "--cluster-level -1" + out, "--cluster-level '-1'");
+  expect_one_line_failure("modelbase build " + catalog + "--cluster-level 1e-4 --clusters 5" + out,
+                          "not both");
+  expect_one_line_failure("modelbase build " + catalog + "--cluster-level -1" + out,
+                          "--cluster-level '-1'");
   expect_one_line_failure("modelbase build " + catalog, "missing --out");
-  expect_one_line_failure("modelbase info '" + (dir_ / "absent.cmb").string() + "'", "absent.cmb: cannot open");
+  expect_one_line_failure("modelbase info '" + (dir_ / "absent.cmb").string() + "'",
+                          "absent.cmb: cannot open");
   EXPECT_FALSE(fs::exists(dir_ / "never.cmb"));
 }
 

@@ -33,7 +33,8 @@ class SimCli : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("cosmos_sim_cli_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    dir_ = fs::temp_directory_path() /
+           ("cosmos_sim_cli_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     write("box.off", kBoxOff);
@@ -42,7 +43,9 @@ class SimCli : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
 
   std::string file(const std::string& name) const { return (dir_ / name).string(); }
-  void write(const std::string& name, const std::string& text) const { std::ofstream(dir_ / name) << text; }
+  void write(const std::string& name, const std::string& text) const {
+    std::ofstream(dir_ / name) << text;
+  }
 
   CliRun run(const std::string& args) const { return run_cosmos(args, dir_); }
 
@@ -52,7 +55,8 @@ class SimCli : public ::testing::Test {
   }
 
   std::string scan_mesh(const std::string& mesh, const std::string& size = "40") const {
-    return "sim scan --mesh '" + file(mesh) + "' --size-mm " + size + " --out '" + file("out.tiff") + "'";
+    return "sim scan --mesh '" + file(mesh) + "' --size-mm " + size + " --out '" +
+           file("out.tiff") + "'";
   }
 
   fs::path dir_;
@@ -95,29 +99,42 @@ TEST_F(SimCli, BadPartsConfigsAndOptionsAreOneLine) {
   const std::string catalog = " --catalog '" + file("catalog.yaml") + "'";
   expect_one_line_failure("sim scan --part nosuch" + catalog + out, "unknown part 'nosuch'");
   write("cell.yaml", "scanner:\n  beam_width: 3\n");
-  expect_one_line_failure("sim scan --part box" + catalog + out + " --config '" + file("cell.yaml") + "'",
-                          "cell.yaml:2: scanner.beam_width: unknown key");
+  expect_one_line_failure(
+      "sim scan --part box" + catalog + out + " --config '" + file("cell.yaml") + "'",
+      "cell.yaml:2: scanner.beam_width: unknown key");
   write("range.yaml", "scanner:\n  points_per_profile: 5\n");
-  expect_one_line_failure("sim scan --part box" + catalog + out + " --config '" + file("range.yaml") + "'",
-                          "range.yaml:2: scanner.points_per_profile: must be in");
-  expect_one_line_failure("sim scan --part box" + catalog + " --out '" + file("out.png") + "'", "out.png");
-  expect_one_line_failure("sim scan --part box" + catalog + " --out '" + file("no/dir.tiff") + "'", "dir.tiff");
+  expect_one_line_failure(
+      "sim scan --part box" + catalog + out + " --config '" + file("range.yaml") + "'",
+      "range.yaml:2: scanner.points_per_profile: must be in");
+  expect_one_line_failure("sim scan --part box" + catalog + " --out '" + file("out.png") + "'",
+                          "out.png");
+  expect_one_line_failure("sim scan --part box" + catalog + " --out '" + file("no/dir.tiff") + "'",
+                          "dir.tiff");
   expect_one_line_failure("sim scan --part box" + catalog, "--out");
   expect_one_line_failure("sim scan" + out, "--part");
-  expect_one_line_failure("sim scan --part box" + catalog + out + " --mode laser", "--mode 'laser'");
-  expect_one_line_failure("sim scan --part box" + catalog + out + " --frames '" + file("f") + "'", "--frames");
-  expect_one_line_failure("sim scan --part box" + catalog + out + " --rotation-deg 1 2", "--rotation-deg");
-  expect_one_line_failure("sim scan --part box" + catalog + out + " --rotation-deg 1 x 2", "--rotation-deg 'x'");
-  expect_one_line_failure("sim scan --part box" + catalog + out + " --resting --random-pose", "one of");
+  expect_one_line_failure("sim scan --part box" + catalog + out + " --mode laser",
+                          "--mode 'laser'");
+  expect_one_line_failure("sim scan --part box" + catalog + out + " --frames '" + file("f") + "'",
+                          "--frames");
+  expect_one_line_failure("sim scan --part box" + catalog + out + " --rotation-deg 1 2",
+                          "--rotation-deg");
+  expect_one_line_failure("sim scan --part box" + catalog + out + " --rotation-deg 1 x 2",
+                          "--rotation-deg 'x'");
+  expect_one_line_failure("sim scan --part box" + catalog + out + " --resting --random-pose",
+                          "one of");
   expect_one_line_failure("sim scan --part box" + catalog + out + " --seed -1", "--seed '-1'");
-  expect_one_line_failure("sim scan --part box" + catalog + out + " --noise-mm -1", "--noise-mm '-1'");
-  expect_one_line_failure("sim views --part box" + catalog + " --out '" + file("v") + "' --count 0", "--count '0'");
-  expect_one_line_failure("sim views --part nosuch" + catalog + " --out '" + file("v") + "'", "unknown part 'nosuch'");
+  expect_one_line_failure("sim scan --part box" + catalog + out + " --noise-mm -1",
+                          "--noise-mm '-1'");
+  expect_one_line_failure("sim views --part box" + catalog + " --out '" + file("v") + "' --count 0",
+                          "--count '0'");
+  expect_one_line_failure("sim views --part nosuch" + catalog + " --out '" + file("v") + "'",
+                          "unknown part 'nosuch'");
   EXPECT_FALSE(fs::exists(file("out.tiff")));
 }
 
 TEST_F(SimCli, ScanWritesGroundTruthAndRepeatsByteForByte) {
-  const std::string args = "sim scan --part box --catalog '" + file("catalog.yaml") + "' --random-pose --seed 4";
+  const std::string args =
+      "sim scan --part box --catalog '" + file("catalog.yaml") + "' --random-pose --seed 4";
   for (const char* name : {"a.tiff", "b.tiff"}) {
     const CliRun result = run(args + " --out '" + file(name) + "'");
     ASSERT_TRUE(result.exited);
@@ -137,18 +154,21 @@ TEST_F(SimCli, CameraModeDumpsFramesAndViewsWriteTheirPoses) {
   const std::string catalog = " --catalog '" + file("catalog.yaml") + "'";
   // A smaller sensor keeps the PNG writing short.
   write("small.yaml", "scanner:\n  sensor_width_px: 640\n  roi_height_px: 256\n");
-  const CliRun scan = run("sim scan --part box" + catalog + " --resting --mode camera --frames '" +
-                             file("frames") + "' --config '" + file("small.yaml") + "' --out '" + file("camera.pfm") + "'");
+  const CliRun scan =
+      run("sim scan --part box" + catalog + " --resting --mode camera --frames '" + file("frames") +
+          "' --config '" + file("small.yaml") + "' --out '" + file("camera.pfm") + "'");
   ASSERT_EQ(scan.exit_code, 0) << scan.err;
   EXPECT_GT(read_range_image(file("camera.pfm")).count_valid(), 1000u);
   EXPECT_TRUE(fs::exists(dir_ / "frames" / "frame_000010.png"));
 
-  const CliRun views = run("sim views --part box" + catalog + " --count 3 --out '" + file("views") + "'");
+  const CliRun views =
+      run("sim views --part box" + catalog + " --count 3 --out '" + file("views") + "'");
   ASSERT_EQ(views.exit_code, 0) << views.err;
   for (const char* stem : {"view_000", "view_001", "view_002"}) {
     EXPECT_TRUE(fs::exists(dir_ / "views" / (std::string(stem) + ".tiff"))) << stem;
-    EXPECT_NE(read_text(dir_ / "views" / (std::string(stem) + ".view.yaml")).find("direction_part: ["),
-              std::string::npos);
+    EXPECT_NE(
+        read_text(dir_ / "views" / (std::string(stem) + ".view.yaml")).find("direction_part: ["),
+        std::string::npos);
   }
   EXPECT_FALSE(fs::exists(dir_ / "views" / "view_003.tiff"));
   const RangeImage view = read_range_image(dir_ / "views" / "view_001.tiff");

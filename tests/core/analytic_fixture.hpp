@@ -10,7 +10,8 @@
 
 namespace cosmos::testing {
 
-inline AnalyticSurface analytic(AnalyticShape shape, double noise_mm = 0.0, double rotate_deg = 0.0) {
+inline AnalyticSurface analytic(AnalyticShape shape, double noise_mm = 0.0,
+                                double rotate_deg = 0.0) {
   AnalyticSurfaceSpec spec;
   spec.shape = shape;
   spec.noise_mm = noise_mm;

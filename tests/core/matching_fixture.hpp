@@ -42,8 +42,10 @@ inline constexpr ReliefFeature kReliefFeatures[] = {
 inline double relief_roof_mm(double x_mm) {
   const double fillet_half_width_mm = kReliefFilletMm * std::sin(kReliefTiltRad);
   const double ax = std::abs(x_mm);
-  if (ax <= fillet_half_width_mm) return std::sqrt(kReliefFilletMm * kReliefFilletMm - x_mm * x_mm) - kReliefFilletMm;
-  return kReliefFilletMm * (std::cos(kReliefTiltRad) - 1.0) - (ax - fillet_half_width_mm) * std::tan(kReliefTiltRad);
+  if (ax <= fillet_half_width_mm)
+    return std::sqrt(kReliefFilletMm * kReliefFilletMm - x_mm * x_mm) - kReliefFilletMm;
+  return kReliefFilletMm * (std::cos(kReliefTiltRad) - 1.0) -
+         (ax - fillet_half_width_mm) * std::tan(kReliefTiltRad);
 }
 
 // The sphere of a feature: centred on the flank normal through the foot point, so the bump
@@ -109,7 +111,8 @@ inline RangeImage make_relief_range_image(double turn_deg, double noise_mm, std:
         continue;
       }
       const Eigen::Vector2d p = relief_part_point(x, y, turn_deg);
-      image.z_mm(column, row) = static_cast<float>(kReliefBaseHeightMm + relief_height_mm(p.x(), p.y()) + noise(generator));
+      image.z_mm(column, row) = static_cast<float>(
+          kReliefBaseHeightMm + relief_height_mm(p.x(), p.y()) + noise(generator));
     }
   }
   return image;

@@ -28,7 +28,8 @@ struct ErrorStats {
   int found = 0;  // columns with a stripe in the truth that got a peak
 };
 
-ErrorStats measure(const std::vector<double>& truth_rows, const StripePeaks& peaks, double row_offset = 0.0) {
+ErrorStats measure(const std::vector<double>& truth_rows, const StripePeaks& peaks,
+                   double row_offset = 0.0) {
   ErrorStats s;
   double sum2 = 0.0;
   for (std::size_t c = 0; c < truth_rows.size(); ++c) {
@@ -47,8 +48,8 @@ const char* name(StripePeakMethod m) {
 }
 
 void report(const std::string& what, StripePeakMethod method, const ErrorStats& s) {
-  std::printf("[ accuracy ] %-28s %-18s max %.4f px  rms %.4f px  (%d columns)\n", what.c_str(), name(method),
-              s.max_px, s.rms_px, s.found);
+  std::printf("[ accuracy ] %-28s %-18s max %.4f px  rms %.4f px  (%d columns)\n", what.c_str(),
+              name(method), s.max_px, s.rms_px, s.found);
   ::testing::Test::RecordProperty(what + "/" + name(method) + "/max_px", std::to_string(s.max_px));
   ::testing::Test::RecordProperty(what + "/" + name(method) + "/rms_px", std::to_string(s.rms_px));
 }
@@ -96,9 +97,11 @@ TEST_P(StripeMethods, NoiseFree16BitWithinFiveHundredthsOfAPixel) {
 const StripeNoise kNoise8Bit{2.0, 0.01, 40.0};
 const StripeNoise kNoise16Bit{300.0, 0.01, 0.5};
 
-cv::Mat noisy_frame(const std::vector<double>& truth, bool sixteen_bit, double sigma_px, std::uint32_t seed) {
-  return sixteen_bit ? render_stripe<std::uint16_t>(truth, kRows, {sigma_px, 40000.0}, kNoise16Bit, seed)
-                     : render_stripe<std::uint8_t>(truth, kRows, {sigma_px, 200.0}, kNoise8Bit, seed);
+cv::Mat noisy_frame(const std::vector<double>& truth, bool sixteen_bit, double sigma_px,
+                    std::uint32_t seed) {
+  return sixteen_bit
+             ? render_stripe<std::uint16_t>(truth, kRows, {sigma_px, 40000.0}, kNoise16Bit, seed)
+             : render_stripe<std::uint8_t>(truth, kRows, {sigma_px, 200.0}, kNoise8Bit, seed);
 }
 
 // A narrow stripe (σ = 1.5 px, what a focused laser line gives): both methods within
@@ -128,10 +131,11 @@ TEST(LaserStripeExtraction, NoisyWideStripesCentreOfGravityWithinTwoTenthsOfAPix
   for (const bool sixteen_bit : {false, true}) {
     for (const double sigma : {2.0, 2.5, 3.0}) {
       const cv::Mat frame = noisy_frame(truth, sixteen_bit, sigma, 42);
-      const std::string what =
-          std::string(sixteen_bit ? "16" : "8") + "-bit noisy sigma=" + std::to_string(sigma).substr(0, 3);
+      const std::string what = std::string(sixteen_bit ? "16" : "8") +
+                               "-bit noisy sigma=" + std::to_string(sigma).substr(0, 3);
       ErrorStats stats[2];
-      for (const auto method : {StripePeakMethod::kCentreOfGravity, StripePeakMethod::kGaussianThreePoint}) {
+      for (const auto method :
+           {StripePeakMethod::kCentreOfGravity, StripePeakMethod::kGaussianThreePoint}) {
         LaserStripeExtractor extractor(parameters_for(method, sixteen_bit ? 257.0 : 1.0));
         StripePeaks peaks;
         ASSERT_EQ(extractor.extract(frame, {}, peaks), StripeExtractionStatus::kOk);
@@ -194,7 +198,7 @@ TEST_P(StripeMethods, DarkWeakAndCutStripesGiveNaN) {
   auto truth = wandering_centres(kColumns, 128.0, 60.0);
   for (int c = 100; c < 150; ++c) truth[static_cast<std::size_t>(c)] = kNaN;  // occluded
   truth[300] = 0.2;                                                           // cut by the ROI top
-  truth[301] = kRows - 1.0;                                                   // cut by the ROI bottom
+  truth[301] = kRows - 1.0;  // cut by the ROI bottom
   cv::Mat frame = render_stripe<std::uint8_t>(truth, kRows, {2.0, 200.0}, {2.0, 0.0, 0.0}, 3);
   // Columns 400..409: a stripe too weak to trust (peak 30 < min_peak_intensity 40).
   const auto weak = render_stripe<std::uint8_t>(std::vector<double>(10, 128.3), kRows, {2.0, 30.0});
@@ -202,8 +206,10 @@ TEST_P(StripeMethods, DarkWeakAndCutStripesGiveNaN) {
   LaserStripeExtractor extractor(parameters_for(GetParam()));
   StripePeaks peaks;
   ASSERT_EQ(extractor.extract(frame, {}, peaks), StripeExtractionStatus::kOk);
-  for (int c = 100; c < 150; ++c) EXPECT_TRUE(std::isnan(peaks.row_px[static_cast<std::size_t>(c)])) << c;
-  for (int c = 400; c < 410; ++c) EXPECT_TRUE(std::isnan(peaks.row_px[static_cast<std::size_t>(c)])) << c;
+  for (int c = 100; c < 150; ++c)
+    EXPECT_TRUE(std::isnan(peaks.row_px[static_cast<std::size_t>(c)])) << c;
+  for (int c = 400; c < 410; ++c)
+    EXPECT_TRUE(std::isnan(peaks.row_px[static_cast<std::size_t>(c)])) << c;
   EXPECT_TRUE(std::isnan(peaks.row_px[300]));
   EXPECT_TRUE(std::isnan(peaks.row_px[301]));
   EXPECT_FLOAT_EQ(peaks.peak_intensity[120], 0.0f);
@@ -230,8 +236,9 @@ INSTANTIATE_TEST_SUITE_P(BothMethods, StripeMethods,
                          ::testing::Values(StripePeakMethod::kCentreOfGravity,
                                            StripePeakMethod::kGaussianThreePoint),
                          [](const auto& info) {
-                           return info.param == StripePeakMethod::kCentreOfGravity ? "CentreOfGravity"
-                                                                                   : "GaussianThreePoint";
+                           return info.param == StripePeakMethod::kCentreOfGravity
+                                      ? "CentreOfGravity"
+                                      : "GaussianThreePoint";
                          });
 
 TEST(LaserStripeExtraction, ReusesItsBuffersFrameAfterFrame) {
@@ -241,7 +248,8 @@ TEST(LaserStripeExtraction, ReusesItsBuffersFrameAfterFrame) {
   StripePeaks peaks;
   extractor.reserve(kColumns, peaks);
   const float* rows_before = peaks.row_px.data();
-  for (int i = 0; i < 3; ++i) ASSERT_EQ(extractor.extract(frame, {}, peaks), StripeExtractionStatus::kOk);
+  for (int i = 0; i < 3; ++i)
+    ASSERT_EQ(extractor.extract(frame, {}, peaks), StripeExtractionStatus::kOk);
   const cv::Mat narrower = frame.colRange(0, 700);
   ASSERT_EQ(extractor.extract(narrower, {}, peaks), StripeExtractionStatus::kOk);
   EXPECT_EQ(peaks.width(), 700);

@@ -55,8 +55,9 @@ bool surface_point_at_column(const TriangulationGeometry& g, double u_px, Eigen:
 
 TEST(TriangulationGeometry, DesignedCameraSeesTheBeltLineAcrossTheSensor) {
   const TriangulationGeometry g = make_triangulation_geometry();
-  EXPECT_NEAR((g.R_scanner_camera.transpose() * g.R_scanner_camera - Eigen::Matrix3d::Identity()).norm(), 0.0,
-              1e-12);
+  EXPECT_NEAR(
+      (g.R_scanner_camera.transpose() * g.R_scanner_camera - Eigen::Matrix3d::Identity()).norm(),
+      0.0, 1e-12);
   EXPECT_NEAR(g.R_scanner_camera.determinant(), 1.0, 1e-12);
   EXPECT_NEAR(g.t_scanner_camera_mm.z(), 300.0, 1e-9);
   // The optical axis is 30° from the vertical laser sheet.
@@ -111,7 +112,8 @@ TEST_P(Distortion, LookupTableTriangulatesExactPeaksWithinAMicrometre) {
   const LaserTriangulator triangulator(g);
   StripePeaks peaks;
   peaks.column_offset_px = 0;
-  peaks.row_px.assign(static_cast<std::size_t>(g.camera.width_px), std::numeric_limits<float>::quiet_NaN());
+  peaks.row_px.assign(static_cast<std::size_t>(g.camera.width_px),
+                      std::numeric_limits<float>::quiet_NaN());
   std::vector<Eigen::Vector3d> truth(peaks.row_px.size());
   for (int u = 0; u < g.camera.width_px; ++u) {
     Eigen::Vector3d p;
@@ -128,8 +130,8 @@ TEST_P(Distortion, LookupTableTriangulatesExactPeaksWithinAMicrometre) {
   for (std::size_t u = 0; u < peaks.row_px.size(); ++u) {
     if (std::isnan(peaks.row_px[u])) continue;
     ASSERT_FALSE(std::isnan(stripe.x_mm[u])) << u;
-    worst_mm = std::max(
-        {worst_mm, std::abs(stripe.x_mm[u] - truth[u].x()), std::abs(stripe.z_mm[u] - truth[u].z())});
+    worst_mm = std::max({worst_mm, std::abs(stripe.x_mm[u] - truth[u].x()),
+                         std::abs(stripe.z_mm[u] - truth[u].z())});
     ++compared;
   }
   std::printf("[ accuracy ] lookup table, %s: max error %.2e mm over %d columns\n",
@@ -153,7 +155,8 @@ TEST_P(Distortion, FrameRoundTripWithinAHundredthOfAMillimetre) {
     centre_rows[static_cast<std::size_t>(u)] = uv.y() - g.roi_row_offset_px;  // ROI rows
     truth[static_cast<std::size_t>(u)] = p;
   }
-  const cv::Mat frame = test::render_stripe<std::uint16_t>(centre_rows, g.roi_height_px, {2.0, 50000.0});
+  const cv::Mat frame =
+      test::render_stripe<std::uint16_t>(centre_rows, g.roi_height_px, {2.0, 50000.0});
   StripeExtractionParameters parameters;
   parameters.method = StripePeakMethod::kGaussianThreePoint;
   parameters.threshold = 5000;

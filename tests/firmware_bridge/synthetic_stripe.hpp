@@ -45,7 +45,8 @@ cv::Mat render_stripe(const std::vector<double>& centre_row_px, int rows, const 
         const double d = r - centre;
         value = shape.amplitude * std::exp(-d * d * inverse_two_sigma2);
       }
-      if (noise.speckle_sigma > 0.0) value *= std::max(0.0, 1.0 + noise.speckle_sigma * unit_normal(rng));
+      if (noise.speckle_sigma > 0.0)
+        value *= std::max(0.0, 1.0 + noise.speckle_sigma * unit_normal(rng));
       if (noise.electrons_per_grey > 0.0 && value > 0.0) {
         std::poisson_distribution<long> electrons(value * noise.electrons_per_grey);
         value = static_cast<double>(electrons(rng)) / noise.electrons_per_grey;

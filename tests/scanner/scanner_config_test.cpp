@@ -1,5 +1,7 @@
 // The `scanner:` section of the cell config: defaults, overrides, and a one-line
 // `file:LINE: scanner.key: reason` for every bad key, type and range.
+#include "scanner/scanner_config.hpp"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -10,7 +12,6 @@
 
 #include "core/input_error.hpp"
 #include "tests/common/config_file_test.hpp"
-#include "scanner/scanner_config.hpp"
 
 namespace cosmos {
 namespace {
@@ -25,7 +26,8 @@ class ScannerConfig : public testing::ConfigFileTest {
 };
 
 TEST_F(ScannerConfig, ShippedConfigHoldsTheDefaults) {
-  const ScannerParameters read = read_scanner_config(fs::path(COSMOS_SOURCE_DIR) / "config" / "cell.yaml");
+  const ScannerParameters read =
+      read_scanner_config(fs::path(COSMOS_SOURCE_DIR) / "config" / "cell.yaml");
   const ScannerParameters defaults;
   EXPECT_EQ(read.points_per_profile, defaults.points_per_profile);
   EXPECT_EQ(read.profile_step_mm(), defaults.profile_step_mm());
@@ -39,16 +41,16 @@ TEST_F(ScannerConfig, ShippedConfigHoldsTheDefaults) {
 }
 
 TEST_F(ScannerConfig, OverridesAndLeavesOtherSectionsAlone) {
-  const ScannerParameters p = read_scanner_config(write(
-      "realtime: {anything: [1, 2]}\n"
-      "scanner:\n"
-      "  points_per_profile: 1280\n"
-      "  z_noise_mm: 0.05\n"
-      "  laser_model: parallel\n"
-      "  seed: 18446744073709551615\n"
-      "  camera:\n"
-      "    bit_depth: 12\n"
-      "    stripe_sigma_px: 2.5\n"));
+  const ScannerParameters p =
+      read_scanner_config(write("realtime: {anything: [1, 2]}\n"
+                                "scanner:\n"
+                                "  points_per_profile: 1280\n"
+                                "  z_noise_mm: 0.05\n"
+                                "  laser_model: parallel\n"
+                                "  seed: 18446744073709551615\n"
+                                "  camera:\n"
+                                "    bit_depth: 12\n"
+                                "    stripe_sigma_px: 2.5\n"));
   EXPECT_EQ(p.points_per_profile, 1280);
   EXPECT_EQ(p.z_noise_mm, 0.05);
   EXPECT_EQ(p.laser_model, LaserModel::kParallel);
@@ -62,22 +64,37 @@ TEST_F(ScannerConfig, OverridesAndLeavesOtherSectionsAlone) {
 
 TEST_F(ScannerConfig, BadKeysTypesAndRangesNameFileLineAndKey) {
   const std::string file = (dir_ / "cell.yaml").string();
-  EXPECT_EQ(error_of("scanner:\n  points_per_profile: 640\n  beam_width: 3\n").rfind(file + ":3: scanner.beam_width: unknown key", 0), 0u);
-  EXPECT_EQ(error_of("scanner:\n  points_per_profile: abc\n"), file + ":2: scanner.points_per_profile: expected an integer, got 'abc'");
-  EXPECT_EQ(error_of("scanner:\n  z_noise_mm: [1]\n"), file + ":2: scanner.z_noise_mm: expected a number, got a list");
+  EXPECT_EQ(error_of("scanner:\n  points_per_profile: 640\n  beam_width: 3\n")
+                .rfind(file + ":3: scanner.beam_width: unknown key", 0),
+            0u);
+  EXPECT_EQ(error_of("scanner:\n  points_per_profile: abc\n"),
+            file + ":2: scanner.points_per_profile: expected an integer, got 'abc'");
+  EXPECT_EQ(error_of("scanner:\n  z_noise_mm: [1]\n"),
+            file + ":2: scanner.z_noise_mm: expected a number, got a list");
   EXPECT_EQ(error_of("scanner:\n\n  triangulation_angle_deg: 90\n"),
             file + ":3: scanner.triangulation_angle_deg: must be in [5, 75], got 90");
-  EXPECT_EQ(error_of("scanner:\n  points_per_profile: 0\n"), file + ":2: scanner.points_per_profile: must be in [16, 8192], got 0");
-  EXPECT_EQ(error_of("scanner:\n  z_noise_mm: .nan\n").rfind(file + ":2: scanner.z_noise_mm: must be in", 0), 0u);
-  EXPECT_EQ(error_of("scanner:\n  laser_model: beam\n"), file + ":2: scanner.laser_model: expected fan or parallel, got 'beam'");
-  EXPECT_EQ(error_of("scanner:\n  seed: -1\n"), file + ":2: scanner.seed: expected a non-negative integer, got '-1'");
-  EXPECT_EQ(error_of("scanner:\n  camera:\n    bit_depth: 9\n"), file + ":3: scanner.camera.bit_depth: must be 8, 10, 12 or 16, got 9");
-  EXPECT_EQ(error_of("scanner:\n  camera:\n    gain: 2\n").rfind(file + ":3: scanner.camera.gain: unknown key", 0), 0u);
-  EXPECT_EQ(error_of("scanner:\n  camera: 3\n"), file + ":2: scanner.camera: expected a map, got '3'");
+  EXPECT_EQ(error_of("scanner:\n  points_per_profile: 0\n"),
+            file + ":2: scanner.points_per_profile: must be in [16, 8192], got 0");
+  EXPECT_EQ(error_of("scanner:\n  z_noise_mm: .nan\n")
+                .rfind(file + ":2: scanner.z_noise_mm: must be in", 0),
+            0u);
+  EXPECT_EQ(error_of("scanner:\n  laser_model: beam\n"),
+            file + ":2: scanner.laser_model: expected fan or parallel, got 'beam'");
+  EXPECT_EQ(error_of("scanner:\n  seed: -1\n"),
+            file + ":2: scanner.seed: expected a non-negative integer, got '-1'");
+  EXPECT_EQ(error_of("scanner:\n  camera:\n    bit_depth: 9\n"),
+            file + ":3: scanner.camera.bit_depth: must be 8, 10, 12 or 16, got 9");
+  EXPECT_EQ(error_of("scanner:\n  camera:\n    gain: 2\n")
+                .rfind(file + ":3: scanner.camera.gain: unknown key", 0),
+            0u);
+  EXPECT_EQ(error_of("scanner:\n  camera: 3\n"),
+            file + ":2: scanner.camera: expected a map, got '3'");
   EXPECT_EQ(error_of("scanner:\n  roi_height_px: 2000\n"),
             file + ":2: scanner.roi_height_px: must not exceed sensor_height_px (1024), got 2000");
-  EXPECT_EQ(error_of("scanner:\n  z_noise_mm: 1\n  z_noise_mm: 2\n"), file + ":3: scanner.z_noise_mm: key given twice");
-  EXPECT_EQ(error_of("scanner: [1, 2]\n"), file + ":1: scanner: expected a map of settings, got a list");
+  EXPECT_EQ(error_of("scanner:\n  z_noise_mm: 1\n  z_noise_mm: 2\n"),
+            file + ":3: scanner.z_noise_mm: key given twice");
+  EXPECT_EQ(error_of("scanner: [1, 2]\n"),
+            file + ":1: scanner: expected a map of settings, got a list");
   EXPECT_EQ(error_of("scanner:\n  z_noise_mm: [1\n").rfind(file + ":", 0), 0u);
   EXPECT_EQ(error_of("scanner: {}\n"), "");
 }
@@ -87,7 +104,8 @@ TEST_F(ScannerConfig, MissingFileIsOneLine) {
     read_scanner_config(dir_ / "absent.yaml");
     FAIL() << "no error";
   } catch (const InputError& error) {
-    EXPECT_EQ(std::string(error.what()), (dir_ / "absent.yaml").string() + ": config file not found");
+    EXPECT_EQ(std::string(error.what()),
+              (dir_ / "absent.yaml").string() + ": config file not found");
   }
 }
 

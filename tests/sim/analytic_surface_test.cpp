@@ -1,6 +1,8 @@
 // Analytic test surfaces (sim/analytic_surface.hpp): sampled heights, normals, curvatures and
 // areas against closed-form formulas written independently here, grid layout, rotation, and
 // the seeded noise.
+#include "sim/analytic_surface.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,14 +12,13 @@
 #include <string>
 
 #include "core/input_error.hpp"
-#include "sim/analytic_surface.hpp"
 
 namespace cosmos {
 namespace {
 
 constexpr AnalyticShape kAllShapes[] = {
-    AnalyticShape::sphere, AnalyticShape::cup,       AnalyticShape::cylinder,
-    AnalyticShape::saddle, AnalyticShape::plane,     AnalyticShape::torus,
+    AnalyticShape::sphere,    AnalyticShape::cup,     AnalyticShape::cylinder,
+    AnalyticShape::saddle,    AnalyticShape::plane,   AnalyticShape::torus,
     AnalyticShape::ellipsoid, AnalyticShape::capsule, AnalyticShape::box_corner};
 
 AnalyticSurface make(AnalyticShape shape, double rotate_deg = 0.0, double noise_mm = 0.0,
@@ -36,11 +37,13 @@ void for_each_valid(const AnalyticSurface& s, Visit&& visit) {
   for (int row = 0; row < s.range.height(); ++row)
     for (int column = 0; column < s.range.width(); ++column)
       if (s.truth(column, row).valid)
-        visit(s.range.x_mm(column), s.range.y_mm(row), s.truth(column, row), s.range.z_mm(column, row));
+        visit(s.range.x_mm(column), s.range.y_mm(row), s.truth(column, row),
+              s.range.z_mm(column, row));
 }
 
 TEST(AnalyticSurface, ShapeNamesParseAndListTheValidOnes) {
-  for (AnalyticShape shape : kAllShapes) EXPECT_EQ(parse_analytic_shape(analytic_shape_name(shape)), shape);
+  for (AnalyticShape shape : kAllShapes)
+    EXPECT_EQ(parse_analytic_shape(analytic_shape_name(shape)), shape);
   EXPECT_EQ(parse_analytic_shape("box-corner"), AnalyticShape::box_corner);
   EXPECT_EQ(parse_analytic_shape("box_corner"), AnalyticShape::box_corner);
   try {
@@ -225,7 +228,8 @@ TEST(AnalyticSurface, CapsuleRegionsAndAreas) {
   EXPECT_NEAR(cap_ratio, 0.92, 0.03);
   AnalyticSurfaceSpec fine = s.spec;
   fine.pixel_size_mm = 0.125;
-  const double fine_ratio = analytic_region_area_mm2(make_analytic_surface(fine), 1) / (std::numbers::pi * 15 * 40);
+  const double fine_ratio =
+      analytic_region_area_mm2(make_analytic_surface(fine), 1) / (std::numbers::pi * 15 * 40);
   EXPECT_GT(fine_ratio, ridge_ratio);
   EXPECT_NEAR(fine_ratio, 0.94, 0.03);
 }
@@ -262,7 +266,8 @@ TEST(AnalyticSurface, EveryShapeHasUnitNormalsOrderedCurvaturesAndANaNMargin) {
       EXPECT_GT(s.range.count_valid(), 1000u);
       for (int row = 0; row < s.range.height(); ++row) {
         for (int column = 0; column < s.range.width(); ++column) {
-          const bool border = std::min({row, column, s.range.width() - 1 - column, s.range.height() - 1 - row}) < 4;
+          const bool border =
+              std::min({row, column, s.range.width() - 1 - column, s.range.height() - 1 - row}) < 4;
           const auto& t = s.truth(column, row);
           if (border) {
             ASSERT_FALSE(t.valid) << column << "," << row;

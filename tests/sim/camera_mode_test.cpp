@@ -29,10 +29,10 @@ struct ModeComparison {
 
 // Pixel by pixel on the common grid (the two crops may differ).
 ModeComparison compare(const RangeImage& profile_mode, const RangeImage& camera_mode) {
-  const auto offset_x = static_cast<int>(
-      std::lround((profile_mode.origin_x_mm - camera_mode.origin_x_mm) / profile_mode.pixel_size_x_mm));
-  const auto offset_y = static_cast<int>(
-      std::lround((profile_mode.origin_y_mm - camera_mode.origin_y_mm) / profile_mode.pixel_size_y_mm));
+  const auto offset_x = static_cast<int>(std::lround(
+      (profile_mode.origin_x_mm - camera_mode.origin_x_mm) / profile_mode.pixel_size_x_mm));
+  const auto offset_y = static_cast<int>(std::lround(
+      (profile_mode.origin_y_mm - camera_mode.origin_y_mm) / profile_mode.pixel_size_y_mm));
   ModeComparison result;
   double sum_squares = 0.0;
   for (int j = 0; j < camera_mode.height(); ++j) {
@@ -50,20 +50,22 @@ ModeComparison compare(const RangeImage& profile_mode, const RangeImage& camera_
       sum_squares += d * d;
     }
   }
-  result.rms_mm = std::sqrt(sum_squares / static_cast<double>(std::max<std::size_t>(result.both_valid, 1)));
+  result.rms_mm =
+      std::sqrt(sum_squares / static_cast<double>(std::max<std::size_t>(result.both_valid, 1)));
   return result;
 }
 
-void expect_modes_agree(const ConveyorScene& scene, const ScannerParameters& parameters, const std::string& what) {
+void expect_modes_agree(const ConveyorScene& scene, const ScannerParameters& parameters,
+                        const std::string& what) {
   const RangeImage profile_mode = scan(scene, parameters, ScanMode::kProfile);
   const RangeImage camera_mode = scan(scene, parameters, ScanMode::kCamera);
   ASSERT_GT(profile_mode.width(), 0);
   ASSERT_GT(camera_mode.width(), 0);
   const ModeComparison c = compare(profile_mode, camera_mode);
   const double kept = static_cast<double>(c.both_valid) / static_cast<double>(c.profile_valid);
-  std::cout << "[ camera vs profile, " << what << " ] profile-mode valid " << c.profile_valid << ", camera-mode valid "
-            << c.camera_valid << ", both " << c.both_valid << " (" << 100.0 * kept << " % of profile-mode), rms "
-            << c.rms_mm << " mm\n";
+  std::cout << "[ camera vs profile, " << what << " ] profile-mode valid " << c.profile_valid
+            << ", camera-mode valid " << c.camera_valid << ", both " << c.both_valid << " ("
+            << 100.0 * kept << " % of profile-mode), rms " << c.rms_mm << " mm\n";
   EXPECT_LE(c.rms_mm, 2.0 * parameters.z_noise_mm + 0.02) << what;
   EXPECT_GE(kept, 0.95) << what;
 }
@@ -74,10 +76,12 @@ TEST(CameraMode, AgreesWithProfileModeOnASphere) {
 }
 
 TEST(CameraMode, AgreesWithProfileModeOnACatalogPart) {
-  const std::filesystem::path catalog_path = std::filesystem::path(COSMOS_SOURCE_DIR) / "config" / "parts.yaml";
+  const std::filesystem::path catalog_path =
+      std::filesystem::path(COSMOS_SOURCE_DIR) / "config" / "parts.yaml";
   const PartCatalog catalog = read_part_catalog(catalog_path);
   const PartEntry& part = catalog.at("fandisk");
-  ASSERT_TRUE(std::filesystem::exists(part.mesh_path)) << part.mesh_path << " missing: run scripts/fetch_catalog.sh";
+  ASSERT_TRUE(std::filesystem::exists(part.mesh_path))
+      << part.mesh_path << " missing: run scripts/fetch_catalog.sh";
   const TriangleMesh mesh = load_mesh(part.mesh_path, part.size_mm);
   const auto scene = single_part_scene(mesh, resting_rotation(mesh, 7), 0.0, 0.0, part.name);
   expect_modes_agree(*scene, ScannerParameters{}, part.name);

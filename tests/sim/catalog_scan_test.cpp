@@ -26,10 +26,12 @@ std::string read_bytes(const fs::path& path) {
 }
 
 // One seeded random-pose scan of a part, written to `path` with its ground truth.
-RangeImage scan_part(const PartEntry& part, const TriangleMesh& mesh, std::uint64_t seed, const fs::path& path) {
+RangeImage scan_part(const PartEntry& part, const TriangleMesh& mesh, std::uint64_t seed,
+                     const fs::path& path) {
   ScannerParameters parameters;
   parameters.seed = seed;
-  const auto scene = testing::single_part_scene(mesh, random_rotation(mix_seed(seed, 0x9053)), 0.0, 0.0, part.name);
+  const auto scene = testing::single_part_scene(mesh, random_rotation(mix_seed(seed, 0x9053)), 0.0,
+                                                0.0, part.name);
   RangeImage image = testing::scan(*scene, parameters);
   if (image.width() == 0) return image;
   const Eigen::Isometry3d& T = scene->parts().front().T_belt_part;
@@ -39,12 +41,15 @@ RangeImage scan_part(const PartEntry& part, const TriangleMesh& mesh, std::uint6
 }
 
 TEST(CatalogScan, EveryDefaultPartScansAndRepeatsByteForByte) {
-  const PartCatalog catalog = read_part_catalog(fs::path(COSMOS_SOURCE_DIR) / "config" / "parts.yaml");
+  const PartCatalog catalog =
+      read_part_catalog(fs::path(COSMOS_SOURCE_DIR) / "config" / "parts.yaml");
   ASSERT_EQ(catalog.parts.size(), 25u);
   for (const PartEntry& part : catalog.parts) {
-    ASSERT_TRUE(fs::exists(part.mesh_path)) << part.mesh_path << " missing: run scripts/fetch_catalog.sh";
+    ASSERT_TRUE(fs::exists(part.mesh_path))
+        << part.mesh_path << " missing: run scripts/fetch_catalog.sh";
   }
-  const fs::path dir = fs::temp_directory_path() / ("cosmos_catalog_scan_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("cosmos_catalog_scan_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   std::uint64_t seed = 100;
   for (const PartEntry& part : catalog.parts) {

@@ -38,7 +38,8 @@ inline void write_handmade_tiff(const std::filesystem::path& path, int width, in
   bytes.insert(bytes.end(), {'I', 'I', 42, 0});
   put32(kIfdOffset);
   put16(kEntries);
-  auto entry = [&](std::uint16_t tag, std::uint16_t type, std::uint32_t count, std::uint32_t value) {
+  auto entry = [&](std::uint16_t tag, std::uint16_t type, std::uint32_t count,
+                   std::uint32_t value) {
     put16(tag);
     put16(type);
     put32(count);
@@ -56,13 +57,13 @@ inline void write_handmade_tiff(const std::filesystem::path& path, int width, in
   entry(256, kLong, 1, static_cast<std::uint32_t>(width));
   entry(257, kLong, 1, static_cast<std::uint32_t>(height));
   entry(258, kShort, samples, samples == 1 ? bits : kArraysOffset);
-  entry(259, kShort, 1, 1);                      // no compression
-  entry(262, kShort, 1, samples == 3 ? 2 : 1);   // RGB or min-is-black
+  entry(259, kShort, 1, 1);                     // no compression
+  entry(262, kShort, 1, samples == 3 ? 2 : 1);  // RGB or min-is-black
   entry(273, kLong, 1, data_offset);
   entry(277, kShort, 1, samples);
   entry(278, kLong, 1, static_cast<std::uint32_t>(height));
   entry(279, kLong, 1, data_bytes);
-  entry(284, kShort, 1, 1);                      // interleaved
+  entry(284, kShort, 1, 1);  // interleaved
   entry(339, kShort, samples, samples == 1 ? format : kArraysOffset + 2 * samples);
   put32(0);  // no further IFD
   for (std::uint32_t i = 0; i < samples; ++i) put16(bits);
@@ -70,12 +71,13 @@ inline void write_handmade_tiff(const std::filesystem::path& path, int width, in
   bytes.resize(bytes.size() + data_bytes, fill_byte);
 
   std::ofstream file(path, std::ios::binary);
-  file.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  file.write(reinterpret_cast<const char*>(bytes.data()),
+             static_cast<std::streamsize>(bytes.size()));
 }
 
 // A PFM ("PF" = 3 channels, "Pf" = 1), little-endian (negative scale), all values `value`.
-inline void write_handmade_pfm(const std::filesystem::path& path, int width, int height, int channels,
-                               float value) {
+inline void write_handmade_pfm(const std::filesystem::path& path, int width, int height,
+                               int channels, float value) {
   std::ofstream file(path, std::ios::binary);
   file << (channels == 3 ? "PF" : "Pf") << "\n" << width << " " << height << "\n-1.0\n";
   for (int i = 0; i < width * height * channels; ++i) {

@@ -1,10 +1,11 @@
 // The coarse height bounds' belt-sight marking: every belt point whose line of sight the exact
 // cell walk (clears) cannot clear is marked, and the marking leaves most of the line unmarked.
+#include "sim/height_bound_grid.hpp"
+
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "sim/height_bound_grid.hpp"
 #include "sim/procedural_meshes.hpp"
 
 namespace cosmos {
@@ -29,7 +30,8 @@ MarkCounts check_line(const HeightBoundGrid& grid, double y_mm, const Eigen::Vec
   for (int i = 0; i < kSamples; ++i) {
     running += difference[static_cast<std::size_t>(i)];
     const Eigen::Vector3d belt_point(kX0Mm + i * kDxMm, y_mm, 0.0);
-    const bool blocked = grid.may_block(sight, belt_point.x()) && !grid.clears(belt_point, camera_mm);
+    const bool blocked =
+        grid.may_block(sight, belt_point.x()) && !grid.clears(belt_point, camera_mm);
     counts.blocked += blocked;
     counts.marked += running > 0;
     counts.blocked_unmarked += blocked && running == 0;
@@ -52,11 +54,13 @@ TEST(HeightBoundGrid, BeltSightMarksCoverEveryLineOfSightTheWalkCannotClear) {
     int blocked = 0;
     int marked = 0;
     // Cameras upstream and downstream, left, right and over the centre, at several heights.
-    for (const Eigen::Vector3d& offset : {Eigen::Vector3d(0.0, 150.0, 260.0), Eigen::Vector3d(-80.0, -120.0, 200.0),
-                                         Eigen::Vector3d(90.0, 60.0, 400.0)}) {
+    for (const Eigen::Vector3d& offset :
+         {Eigen::Vector3d(0.0, 150.0, 260.0), Eigen::Vector3d(-80.0, -120.0, 200.0),
+          Eigen::Vector3d(90.0, 60.0, 400.0)}) {
       for (double y_mm = -60.0; y_mm <= 60.0; y_mm += 0.4) {
         const MarkCounts counts = check_line(grid, y_mm, offset + Eigen::Vector3d(0.0, y_mm, 0.0));
-        EXPECT_EQ(counts.blocked_unmarked, 0) << "y " << y_mm << " camera offset " << offset.transpose();
+        EXPECT_EQ(counts.blocked_unmarked, 0)
+            << "y " << y_mm << " camera offset " << offset.transpose();
         blocked += counts.blocked;
         marked += counts.marked;
       }

@@ -1,6 +1,8 @@
 // The simulated scanner's geometry against analytic truth: a sphere's heights, a tilted
 // plane's slope, the camera-occlusion band behind a step and the laser shadow beside it, as
 // the triangulation geometry predicts them.
+#include "sim/laser_line_scanner.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -9,7 +11,6 @@
 #include <iostream>
 #include <numbers>
 
-#include "sim/laser_line_scanner.hpp"
 #include "sim/procedural_meshes.hpp"
 #include "tests/sim/scanner_test_scenes.hpp"
 
@@ -68,9 +69,10 @@ TEST_P(SphereScan, HeightsMatchTheAnalyticSphere) {
   const double tolerance_mm =
       3.0 * parameters.z_noise_mm + sag_mm / std::cos(parameters.max_incidence_deg * kDegree);
   const SphereErrors errors = sphere_errors(image, radius_mm, tolerance_mm);
-  std::cout << "[ sphere W=" << GetParam() << " ] valid " << errors.valid << ", within " << tolerance_mm
-            << " mm: " << 100.0 * errors.within / errors.valid << " %, mean " << errors.mean_mm << " mm, rms "
-            << errors.rms_mm << " mm (sigma " << parameters.z_noise_mm << ", sag " << sag_mm << ")\n";
+  std::cout << "[ sphere W=" << GetParam() << " ] valid " << errors.valid << ", within "
+            << tolerance_mm << " mm: " << 100.0 * errors.within / errors.valid << " %, mean "
+            << errors.mean_mm << " mm, rms " << errors.rms_mm << " mm (sigma "
+            << parameters.z_noise_mm << ", sag " << sag_mm << ")\n";
   // The visible cap above the background threshold spans ~ pi (R sin 80°)^2 / dx dy pixels.
   const double dx = parameters.sample_spacing_mm(parameters.points_per_profile);
   EXPECT_GT(errors.valid, static_cast<std::size_t>(0.6 * std::numbers::pi * 90.0 / (dx * 0.4)));
@@ -88,7 +90,8 @@ Eigen::Vector3d fit_plane(const RangeImage& image, double x_mm, double y_mm, dou
   for (int j = 0; j < image.height(); ++j) {
     for (int i = 0; i < image.width(); ++i) {
       if (!image.has_data(i, j)) continue;
-      if (std::abs(image.x_mm(i) - x_mm) > half_mm || std::abs(image.y_mm(j) - y_mm) > half_mm) continue;
+      if (std::abs(image.x_mm(i) - x_mm) > half_mm || std::abs(image.y_mm(j) - y_mm) > half_mm)
+        continue;
       const Eigen::Vector3d row(image.x_mm(i), image.y_mm(j), 1.0);
       normal_matrix += row * row.transpose();
       rhs += row * image.z_mm(i, j);
@@ -117,7 +120,8 @@ TEST(TiltedPlaneScan, SlopeIsFifteenDegrees) {
 // camera centre clears the box's top edge only when d >= h · tan(angle).
 TEST(StepScan, OcclusionBandBehindTheStepMatchesTheGeometry) {
   const double height_mm = 10.0;
-  const auto scene = single_part_scene(make_box(40.0, 40.0, height_mm), Eigen::Matrix3d::Identity());
+  const auto scene =
+      single_part_scene(make_box(40.0, 40.0, height_mm), Eigen::Matrix3d::Identity());
   ScannerParameters parameters;
   const testing::ProfileScan profiles = scan_profiles(*scene, parameters, 15.0);
   const double predicted_mm = height_mm * std::tan(parameters.triangulation_angle_deg * kDegree);
@@ -138,7 +142,8 @@ TEST(StepScan, OcclusionBandBehindTheStepMatchesTheGeometry) {
     std::cout << "[ step x=" << x_mm << " ] occlusion band " << band_mm << " mm (" << nan_downstream
               << " profiles), predicted " << predicted_mm << " mm\n";
     EXPECT_NEAR(band_mm, predicted_mm, parameters.profile_step_mm());
-    EXPECT_NEAR(nan_downstream * parameters.profile_step_mm(), predicted_mm, parameters.profile_step_mm());
+    EXPECT_NEAR(nan_downstream * parameters.profile_step_mm(), predicted_mm,
+                parameters.profile_step_mm());
     // Upstream the camera sees the belt right up to the box.
     EXPECT_GE(last_seen_upstream_mm, -20.0 - parameters.profile_step_mm() - 1e-9);
   }
@@ -152,7 +157,8 @@ TEST(StepScan, OcclusionBandBehindTheStepMatchesTheGeometry) {
 TEST(StepScan, LaserShadowAndCameraBandBesideTheStep) {
   const double height_mm = 20.0;
   const double edge_mm = 80.0;
-  const auto scene = single_part_scene(make_box(40.0, 40.0, height_mm), Eigen::Matrix3d::Identity(), 60.0);
+  const auto scene =
+      single_part_scene(make_box(40.0, 40.0, height_mm), Eigen::Matrix3d::Identity(), 60.0);
   for (const LaserModel model : {LaserModel::kFan, LaserModel::kParallel}) {
     ScannerParameters parameters;
     parameters.laser_model = model;
@@ -160,18 +166,20 @@ TEST(StepScan, LaserShadowAndCameraBandBesideTheStep) {
     LaserLineScanner laser(*scene, parameters, parameters.points_per_profile);
     LaserLine line;
     laser.trace(0.0, line);
-    const LaserSampleState expected_state =
-        model == LaserModel::kFan ? LaserSampleState::kLaserShadow : LaserSampleState::kCameraOccluded;
-    const double predicted_mm = model == LaserModel::kFan
-                                    ? edge_mm * height_mm / (parameters.laser_height_mm - height_mm)
-                                    : edge_mm * height_mm / (parameters.camera_height_mm - height_mm);
+    const LaserSampleState expected_state = model == LaserModel::kFan
+                                                ? LaserSampleState::kLaserShadow
+                                                : LaserSampleState::kCameraOccluded;
+    const double predicted_mm =
+        model == LaserModel::kFan ? edge_mm * height_mm / (parameters.laser_height_mm - height_mm)
+                                  : edge_mm * height_mm / (parameters.camera_height_mm - height_mm);
     int band_samples = 0;
     double first_measured_mm = 1e9;
     for (int i = 0; i < line.width(); ++i) {
       if (line.x_mm(i) <= edge_mm) continue;
       const LaserSampleState state = line.state[static_cast<std::size_t>(i)];
       if (state == expected_state) ++band_samples;
-      if (state == LaserSampleState::kMeasured) first_measured_mm = std::min(first_measured_mm, line.x_mm(i));
+      if (state == LaserSampleState::kMeasured)
+        first_measured_mm = std::min(first_measured_mm, line.x_mm(i));
     }
     std::cout << "[ beside step, " << (model == LaserModel::kFan ? "fan" : "parallel") << " ] band "
               << band_samples * line.dx_mm << " mm, first measured " << first_measured_mm - edge_mm
@@ -197,7 +205,8 @@ TEST(SimulatedScanner, SameSeedSameBytesOtherSeedOtherNoise) {
 TEST(SimulatedScanner, RangeImageFrameHoldsTheGroundTruth) {
   // A box off-centre: its measured top must sit where T_belt_part puts it, and rows must run
   // in increasing y (not mirrored).
-  const auto scene = single_part_scene(make_box(30.0, 20.0, 8.0), rotation_from_xyz_deg(0, 0, 30), 25.0, -40.0);
+  const auto scene =
+      single_part_scene(make_box(30.0, 20.0, 8.0), rotation_from_xyz_deg(0, 0, 30), 25.0, -40.0);
   const RangeImage image = scan(*scene, ScannerParameters{});
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   std::size_t count = 0;

@@ -53,29 +53,33 @@ constexpr const char* kBoxOff =
 
 constexpr const char* kBoxObj =
     "# box\n"
-    "v 10 20 30\nv 12 20 30\nv 12 23 30\nv 10 23 30\nv 10 20 34\nv 12 20 34\nv 12 23 34\nv 10 23 34\n"
+    "v 10 20 30\nv 12 20 30\nv 12 23 30\nv 10 23 30\nv 10 20 34\nv 12 20 34\nv 12 23 34\nv 10 23 "
+    "34\n"
     "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
 
 // The tetrahedron (0,0,0) (1,0,0) (0,2,0) (0,0,4): extents 1 x 2 x 4.
 constexpr const char* kTetraPly =
-    "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+    "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float "
+    "z\n"
     "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
     "0 0 0\n1 0 0\n0 2 0\n0 0 4\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
 
 std::string stl_facet(const char* a, const char* b, const char* c) {
-  return std::string("facet normal 0 0 0\nouter loop\nvertex ") + a + "\nvertex " + b + "\nvertex " + c +
-         "\nendloop\nendfacet\n";
+  return std::string("facet normal 0 0 0\nouter loop\nvertex ") + a + "\nvertex " + b +
+         "\nvertex " + c + "\nendloop\nendfacet\n";
 }
 
 std::string tetra_stl() {
-  return "solid tetra\n" + stl_facet("0 0 0", "0 2 0", "1 0 0") + stl_facet("0 0 0", "1 0 0", "0 0 4") +
-         stl_facet("1 0 0", "0 2 0", "0 0 4") + stl_facet("0 0 0", "0 0 4", "0 2 0") + "endsolid tetra\n";
+  return "solid tetra\n" + stl_facet("0 0 0", "0 2 0", "1 0 0") +
+         stl_facet("0 0 0", "1 0 0", "0 0 4") + stl_facet("1 0 0", "0 2 0", "0 0 4") +
+         stl_facet("0 0 0", "0 0 4", "0 2 0") + "endsolid tetra\n";
 }
 
 void expect_centred_at_size(const TriangleMesh& mesh, const Eigen::Vector3d& expected_sizes_mm) {
   const Eigen::AlignedBox3f box = bounding_box(mesh);
   for (int axis = 0; axis < 3; ++axis) {
-    EXPECT_NEAR(box.sizes()[axis], expected_sizes_mm[axis], 1e-3 * expected_sizes_mm.maxCoeff()) << "axis " << axis;
+    EXPECT_NEAR(box.sizes()[axis], expected_sizes_mm[axis], 1e-3 * expected_sizes_mm.maxCoeff())
+        << "axis " << axis;
     EXPECT_NEAR(box.center()[axis], 0.0, 1e-4 * expected_sizes_mm.maxCoeff()) << "axis " << axis;
   }
 }
@@ -124,7 +128,8 @@ TEST_F(MeshFiles, TrianglesIndexExistingVertices) {
   }
 }
 
-void expect_one_line_naming(const std::string& message, const fs::path& path, const std::string& reason) {
+void expect_one_line_naming(const std::string& message, const fs::path& path,
+                            const std::string& reason) {
   ASSERT_FALSE(message.empty()) << "no InputError for " << path;
   EXPECT_EQ(message.rfind(path.string() + ": ", 0), 0u) << message;
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
@@ -154,8 +159,10 @@ TEST_F(MeshFiles, EmptyMeshIsRefused) {
 }
 
 TEST_F(MeshFiles, NanVertexIsRefused) {
-  const fs::path path = write("nan.obj", "v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n");
-  expect_one_line_naming(load_error(path), path, "vertex (0, nan, 0) has a NaN or infinite coordinate");
+  const fs::path path =
+      write("nan.obj", "v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n");
+  expect_one_line_naming(load_error(path), path,
+                         "vertex (0, nan, 0) has a NaN or infinite coordinate");
 }
 
 TEST_F(MeshFiles, InfiniteVertexIsRefused) {

@@ -1,12 +1,13 @@
 // Model views: each view-sphere direction turned to face the scanner, scanned like a live part,
 // and its ideal orthographic reference on the same grid.
+#include "sim/model_views.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
 #include <iostream>
 
-#include "sim/model_views.hpp"
 #include "sim/procedural_meshes.hpp"
 
 namespace cosmos {
@@ -44,8 +45,8 @@ TEST(ModelViews, ViewsFaceTheScannerAndMatchTheIdealRender) {
     }
     const double rms_mm = std::sqrt(sum_squares / static_cast<double>(both));
     const double measured = static_cast<double>(both) / static_cast<double>(ideal_part);
-    std::cout << "[ box view " << index << " ] " << both << " of " << ideal_part << " ideal pixels measured, rms "
-              << rms_mm << " mm\n";
+    std::cout << "[ box view " << index << " ] " << both << " of " << ideal_part
+              << " ideal pixels measured, rms " << rms_mm << " mm\n";
     // Where both see the part they agree within the noise; the scan misses only what the
     // sensor cannot see (occlusion, grazing faces).
     EXPECT_LT(rms_mm, 1.5 * parameters.z_noise_mm);
@@ -59,7 +60,9 @@ TEST(ModelViews, ViewsRepeatByteForByte) {
   const ModelView a = renderer.scan_view(3);
   const ModelView again = renderer.scan_view(3);
   ASSERT_EQ(a.image.z_mm.size(), again.image.z_mm.size());
-  EXPECT_EQ(std::memcmp(a.image.z_mm.data(), again.image.z_mm.data(), a.image.z_mm.size() * sizeof(float)), 0);
+  EXPECT_EQ(std::memcmp(a.image.z_mm.data(), again.image.z_mm.data(),
+                        a.image.z_mm.size() * sizeof(float)),
+            0);
 }
 
 }  // namespace

@@ -21,9 +21,11 @@ namespace fs = std::filesystem;
 TEST(DefaultCatalog, EveryPartLoadsAtItsSize) {
   const fs::path cache = default_mesh_cache_dir();
   // Never skipped: a missing cache is a broken setup, and the message says how to fix it.
-  ASSERT_TRUE(fs::is_directory(cache)) << "the mesh cache " << cache
-                                       << " is missing: run scripts/fetch_catalog.sh (or scripts/setup.sh)";
-  const PartCatalog catalog = read_part_catalog(fs::path(COSMOS_SOURCE_DIR) / "config" / "parts.yaml");
+  ASSERT_TRUE(fs::is_directory(cache))
+      << "the mesh cache " << cache
+      << " is missing: run scripts/fetch_catalog.sh (or scripts/setup.sh)";
+  const PartCatalog catalog =
+      read_part_catalog(fs::path(COSMOS_SOURCE_DIR) / "config" / "parts.yaml");
   EXPECT_GE(catalog.parts.size(), 20u);
   std::set<std::string> names;
   for (const PartEntry& part : catalog.parts) {
@@ -81,26 +83,32 @@ class CatalogFiles : public ::testing::Test {
     return "";
   }
 
-  std::string at_line(int line) const { return (dir_ / "config/parts.yaml").string() + ":" + std::to_string(line); }
+  std::string at_line(int line) const {
+    return (dir_ / "config/parts.yaml").string() + ":" + std::to_string(line);
+  }
 
   fs::path dir_;
 };
 
 TEST_F(CatalogFiles, UnknownKeyNamesItsLine) {
-  EXPECT_EQ(catalog_error("parts:\n  - name: cow\n    mesh: cow.off\n    size_mm: 100\n    colour: red\n"),
+  EXPECT_EQ(catalog_error(
+                "parts:\n  - name: cow\n    mesh: cow.off\n    size_mm: 100\n    colour: red\n"),
             at_line(5) + ": colour: unknown key (expected name, mesh, size_mm, symmetric)");
-  EXPECT_EQ(catalog_error("mesh_dir: here\nmeshes: []\nparts:\n  - {name: cow, mesh: cow.off, size_mm: 1}\n"),
+  EXPECT_EQ(catalog_error(
+                "mesh_dir: here\nmeshes: []\nparts:\n  - {name: cow, mesh: cow.off, size_mm: 1}\n"),
             at_line(2) + ": meshes: unknown key (expected mesh_dir, parts)");
 }
 
 TEST_F(CatalogFiles, WrongTypeNamesItsLine) {
   EXPECT_EQ(catalog_error("parts:\n  - name: cow\n    mesh: cow.off\n    size_mm: big\n"),
             at_line(4) + ": size_mm: expected a number (mm), got 'big'");
-  EXPECT_EQ(catalog_error("parts:\n  - {name: cow, mesh: cow.off, size_mm: 100, symmetric: maybe}\n"),
-            at_line(2) + ": symmetric: expected true or false, got 'maybe'");
+  EXPECT_EQ(
+      catalog_error("parts:\n  - {name: cow, mesh: cow.off, size_mm: 100, symmetric: maybe}\n"),
+      at_line(2) + ": symmetric: expected true or false, got 'maybe'");
   EXPECT_EQ(catalog_error("parts:\n  - name: cow\n    mesh: [a.off, b.off]\n    size_mm: 100\n"),
             at_line(3) + ": mesh: expected a non-empty text, got a list");
-  EXPECT_EQ(catalog_error("parts: cow\n"), at_line(1) + ": parts: expected a non-empty list of parts, got 'cow'");
+  EXPECT_EQ(catalog_error("parts: cow\n"),
+            at_line(1) + ": parts: expected a non-empty list of parts, got 'cow'");
 }
 
 TEST_F(CatalogFiles, NonPositiveSizeNamesItsLine) {
@@ -120,7 +128,8 @@ TEST_F(CatalogFiles, DuplicateNameNamesItsLine) {
 }
 
 TEST_F(CatalogFiles, MissingKeysAndBadNamesNameTheirLine) {
-  EXPECT_EQ(catalog_error("parts:\n  - name: cow\n    size_mm: 100\n"), at_line(2) + ": mesh: missing key");
+  EXPECT_EQ(catalog_error("parts:\n  - name: cow\n    size_mm: 100\n"),
+            at_line(2) + ": mesh: missing key");
   EXPECT_EQ(catalog_error("mesh_dir: x\n"), at_line(1) + ": parts: missing key");
   EXPECT_EQ(catalog_error("parts:\n  - {name: my cow, mesh: cow.off, size_mm: 100}\n"),
             at_line(2) + ": name: 'my cow' may only use letters, digits, '.', '_' or '-'");
@@ -153,16 +162,19 @@ TEST_F(CatalogFiles, MeshPathsResolveAsDocumented) {
   write("config/both.off", "OFF\n");
   write("cache/both.off", "OFF\n");
   const fs::path absolute = write("elsewhere.off", "OFF\n");
-  const PartCatalog catalog = read_part_catalog(
-      write("config/parts.yaml", "parts:\n"
-                                 "  - {name: a, mesh: in_cache.off, size_mm: 1}\n"
-                                 "  - {name: b, mesh: beside.off, size_mm: 2, symmetric: true}\n"
-                                 "  - {name: c, mesh: both.off, size_mm: 3}\n"
-                                 "  - {name: d, mesh: ./both.off, size_mm: 4}\n"
-                                 "  - {name: e, mesh: ../elsewhere.off, size_mm: 5}\n"
-                                 "  - {name: f, mesh: " + absolute.string() + ", size_mm: 6}\n"
-                                 "  - {name: g, mesh: not_fetched.off, size_mm: 7}\n"),
-      dir_ / "cache");
+  const PartCatalog catalog =
+      read_part_catalog(write("config/parts.yaml",
+                              "parts:\n"
+                              "  - {name: a, mesh: in_cache.off, size_mm: 1}\n"
+                              "  - {name: b, mesh: beside.off, size_mm: 2, symmetric: true}\n"
+                              "  - {name: c, mesh: both.off, size_mm: 3}\n"
+                              "  - {name: d, mesh: ./both.off, size_mm: 4}\n"
+                              "  - {name: e, mesh: ../elsewhere.off, size_mm: 5}\n"
+                              "  - {name: f, mesh: " +
+                                  absolute.string() +
+                                  ", size_mm: 6}\n"
+                                  "  - {name: g, mesh: not_fetched.off, size_mm: 7}\n"),
+                        dir_ / "cache");
   ASSERT_EQ(catalog.parts.size(), 7u);
   EXPECT_EQ(catalog.at("a").mesh_path, dir_ / "cache/in_cache.off");
   EXPECT_EQ(catalog.at("b").mesh_path, dir_ / "config/beside.off");
@@ -180,14 +192,16 @@ TEST_F(CatalogFiles, MeshDirKeyReplacesTheCache) {
   fs::create_directories(dir_ / "config/meshes");
   write("config/meshes/m.off", "OFF\n");
   const PartCatalog catalog = read_part_catalog(
-      write("config/parts.yaml", "mesh_dir: meshes\nparts:\n  - {name: m, mesh: m.off, size_mm: 10}\n"),
+      write("config/parts.yaml",
+            "mesh_dir: meshes\nparts:\n  - {name: m, mesh: m.off, size_mm: 10}\n"),
       dir_ / "cache");
   EXPECT_EQ(catalog.at("m").mesh_path, dir_ / "config/meshes/m.off");
 }
 
 TEST_F(CatalogFiles, LookupByName) {
   const PartCatalog catalog = read_part_catalog(
-      write("config/parts.yaml", "parts:\n  - {name: cow, mesh: cow.off, size_mm: 100}\n"), dir_ / "cache");
+      write("config/parts.yaml", "parts:\n  - {name: cow, mesh: cow.off, size_mm: 100}\n"),
+      dir_ / "cache");
   EXPECT_EQ(catalog.find("pig"), nullptr);
   ASSERT_NE(catalog.find("cow"), nullptr);
   EXPECT_EQ(catalog.find("cow")->name, "cow");

@@ -1,12 +1,13 @@
 // Part poses on the belt: the Euler convention, uniform random rotations, placement on the
 // belt, and resting poses on stable convex-hull faces drawn in proportion to solid angle.
+#include "sim/part_pose.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
 #include "sim/convex_hull.hpp"
-#include "sim/part_pose.hpp"
 #include "sim/procedural_meshes.hpp"
 #include "sim/seeded_random.hpp"
 
@@ -23,10 +24,11 @@ TEST(PartPose, EulerAnglesApplyXThenYThenZ) {
   const Eigen::Vector3d turned = rotation_from_xyz_deg(90, 90, 0) * Eigen::Vector3d::UnitY();
   EXPECT_LT((turned - Eigen::Vector3d::UnitX()).norm(), 1e-12);
   const Eigen::Matrix3d R = rotation_from_xyz_deg(10, -20, 30);
-  const Eigen::Matrix3d expected = (Eigen::AngleAxisd(30 * std::numbers::pi / 180, Eigen::Vector3d::UnitZ()) *
-                                    Eigen::AngleAxisd(-20 * std::numbers::pi / 180, Eigen::Vector3d::UnitY()) *
-                                    Eigen::AngleAxisd(10 * std::numbers::pi / 180, Eigen::Vector3d::UnitX()))
-                                       .toRotationMatrix();
+  const Eigen::Matrix3d expected =
+      (Eigen::AngleAxisd(30 * std::numbers::pi / 180, Eigen::Vector3d::UnitZ()) *
+       Eigen::AngleAxisd(-20 * std::numbers::pi / 180, Eigen::Vector3d::UnitY()) *
+       Eigen::AngleAxisd(10 * std::numbers::pi / 180, Eigen::Vector3d::UnitX()))
+          .toRotationMatrix();
   EXPECT_LT((R - expected).cwiseAbs().maxCoeff(), 1e-12);
 }
 
@@ -114,7 +116,9 @@ TEST(PartPose, RestingNeverUsesAnUnstableFace) {
     const Eigen::Matrix3d R = resting_rotation(tetrahedron, static_cast<std::uint64_t>(seed));
     const Eigen::Isometry3d T = place_on_belt(tetrahedron, R);
     int base_on_belt = 0;
-    for (int v = 0; v < 3; ++v) base_on_belt += (T * tetrahedron.vertices[static_cast<std::size_t>(v)].cast<double>()).z() < 1e-6;
+    for (int v = 0; v < 3; ++v)
+      base_on_belt +=
+          (T * tetrahedron.vertices[static_cast<std::size_t>(v)].cast<double>()).z() < 1e-6;
     EXPECT_LT(base_on_belt, 3) << "seed " << seed;
   }
 }

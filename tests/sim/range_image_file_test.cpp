@@ -1,5 +1,7 @@
 // Range image files (core/io/range_image_file.hpp): bit-exact round trips through TIFF and
 // PFM with their sidecar, and one-line InputErrors naming the file for every bad input.
+#include "core/io/range_image_file.hpp"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -11,9 +13,8 @@
 #include <string>
 
 #include "core/input_error.hpp"
-#include "core/io/range_image_file.hpp"
-#include "tests/sim/handmade_image_files.hpp"
 #include "sim/analytic_surface.hpp"
+#include "tests/sim/handmade_image_files.hpp"
 
 namespace cosmos {
 namespace {
@@ -25,8 +26,8 @@ class RangeImageFile : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("cosmos_range_image_file_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    dir_ = fs::temp_directory_path() / ("cosmos_range_image_file_" + std::string(info->name()) +
+                                        "_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -41,7 +42,8 @@ class RangeImageFile : public ::testing::Test {
     image.origin_y_mm = 3.0 / 7.0;
     for (int row = 0; row < image.height(); ++row) {
       for (int column = 0; column < image.width(); ++column) {
-        image.z_mm(column, row) = static_cast<float>(std::sin(column * 1.3 + row * 0.7) * 123.456 / 7.0);
+        image.z_mm(column, row) =
+            static_cast<float>(std::sin(column * 1.3 + row * 0.7) * 123.456 / 7.0);
       }
     }
     image.z_mm(0, 0) = std::numeric_limits<float>::quiet_NaN();
@@ -65,7 +67,8 @@ class RangeImageFile : public ::testing::Test {
       const std::string message = error.what();
       EXPECT_EQ(message.find('\n'), std::string::npos) << message;
       for (const std::string& needle : needles) {
-        EXPECT_NE(message.find(needle), std::string::npos) << "'" << needle << "' not in: " << message;
+        EXPECT_NE(message.find(needle), std::string::npos)
+            << "'" << needle << "' not in: " << message;
       }
     }
   }
@@ -77,7 +80,8 @@ void expect_bit_identical(const RangeImage& a, const RangeImage& b) {
   ASSERT_EQ(a.width(), b.width());
   ASSERT_EQ(a.height(), b.height());
   EXPECT_EQ(std::memcmp(a.z_mm.data(), b.z_mm.data(), a.z_mm.size() * sizeof(float)), 0);
-  for (std::size_t i = 0; i < a.z_mm.size(); ++i) EXPECT_EQ(std::isnan(a.z_mm[i]), std::isnan(b.z_mm[i])) << i;
+  for (std::size_t i = 0; i < a.z_mm.size(); ++i)
+    EXPECT_EQ(std::isnan(a.z_mm[i]), std::isnan(b.z_mm[i])) << i;
   EXPECT_EQ(a.pixel_size_x_mm, b.pixel_size_x_mm);
   EXPECT_EQ(a.pixel_size_y_mm, b.pixel_size_y_mm);
   EXPECT_EQ(a.origin_x_mm, b.origin_x_mm);
@@ -110,7 +114,8 @@ TEST_F(RangeImageFile, GroundTruthRoundTripsExactly) {
   RangeImage image = sample_image();
   GroundTruthPose pose;
   pose.part = "bracket-7";
-  pose.rotation = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
+  pose.rotation =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
   pose.translation_mm = Eigen::Vector3d(1.0 / 3.0, -250.125, 1e-7);
   image.ground_truth = pose;
   write_range_image(image, file("posed.tiff"));
@@ -244,11 +249,13 @@ TEST_F(RangeImageFile, BadPixelSizesNameTheKeyAndLine) {
 TEST_F(RangeImageFile, BadGroundTruthIsRejected) {
   write_range_image(sample_image(), file("pose.tiff"));
   write_sidecar(file("pose.tiff"),
-                "pixel_size_mm: [1, 1]\nground_truth:\n  part: gear\n  rotation: [1, 0, 0, 0, 1, 0, 0, 0, -1]\n"
+                "pixel_size_mm: [1, 1]\nground_truth:\n  part: gear\n  rotation: [1, 0, 0, 0, 1, "
+                "0, 0, 0, -1]\n"
                 "  translation_mm: [0, 0, 0]\n");
   expect_rejected(file("pose.tiff"), {"pose.yaml:4: ground_truth.rotation:", "rotation"});
-  write_sidecar(file("pose.tiff"), "pixel_size_mm: [1, 1]\nground_truth:\n  part: gear\n"
-                                   "  rotation: [1, 0, 0, 0, 1, 0, 0, 0, 1]\n");
+  write_sidecar(file("pose.tiff"),
+                "pixel_size_mm: [1, 1]\nground_truth:\n  part: gear\n"
+                "  rotation: [1, 0, 0, 0, 1, 0, 0, 0, 1]\n");
   expect_rejected(file("pose.tiff"), {"pose.yaml", "ground_truth.translation_mm", "missing"});
   write_sidecar(file("pose.tiff"), "pixel_size_mm: [1, 1]\nground_truth: 3\n");
   expect_rejected(file("pose.tiff"), {"pose.yaml:2: ground_truth:", "mapping"});

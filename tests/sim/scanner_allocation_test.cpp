@@ -31,7 +31,8 @@ TEST_P(ScannerAllocation, ProfileLoopAllocatesNothingAfterWarmUp) {
   });
   // The counting operator new must be the one in force, or the test below proves nothing.
   ASSERT_GT(probe, 0) << "operator new is replaced elsewhere in this binary";
-  const auto scene = testing::single_part_scene(make_icosphere(20.0, 4), Eigen::Matrix3d::Identity());
+  const auto scene =
+      testing::single_part_scene(make_icosphere(20.0, 4), Eigen::Matrix3d::Identity());
   SimulatedScanner scanner(*scene, ScannerParameters{}, GetParam());
   Profile profile;
   scanner.reserve(profile);
@@ -44,7 +45,8 @@ TEST_P(ScannerAllocation, ProfileLoopAllocatesNothingAfterWarmUp) {
   EXPECT_GT(range.count(), 90);
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, ScannerAllocation, ::testing::Values(ScanMode::kProfile, ScanMode::kCamera));
+INSTANTIATE_TEST_SUITE_P(Modes, ScannerAllocation,
+                         ::testing::Values(ScanMode::kProfile, ScanMode::kCamera));
 
 }  // namespace
 }  // namespace cosmos

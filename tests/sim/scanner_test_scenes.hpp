@@ -15,8 +15,9 @@
 namespace cosmos::testing {
 
 // One part at rotation R, centred at (x_mm, y_mm), lowest point on the belt.
-inline std::unique_ptr<ConveyorScene> single_part_scene(const TriangleMesh& mesh, const Eigen::Matrix3d& R,
-                                                        double x_mm = 0.0, double y_mm = 0.0,
+inline std::unique_ptr<ConveyorScene> single_part_scene(const TriangleMesh& mesh,
+                                                        const Eigen::Matrix3d& R, double x_mm = 0.0,
+                                                        double y_mm = 0.0,
                                                         const std::string& name = "part") {
   auto scene = std::make_unique<ConveyorScene>();
   const int mesh_index = scene->add_mesh(mesh);
@@ -38,8 +39,8 @@ struct ProfileScan {
   std::vector<double> y_mm;
 };
 
-inline ProfileScan scan_profiles(const ConveyorScene& scene, const ScannerParameters& parameters, double margin_mm,
-                                 ScanMode mode = ScanMode::kProfile) {
+inline ProfileScan scan_profiles(const ConveyorScene& scene, const ScannerParameters& parameters,
+                                 double margin_mm, ScanMode mode = ScanMode::kProfile) {
   SimulatedScanner scanner(scene, parameters, mode);
   const ProfileRange range = profiles_covering(scene, parameters, margin_mm);
   ProfileScan result;

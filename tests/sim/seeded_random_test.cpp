@@ -1,12 +1,12 @@
 // The simulator's normals (ziggurat) against the standard normal: moments, tail masses,
 // the Kolmogorov-Smirnov distance, and the same stream for the same seed.
+#include "sim/seeded_random.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
-
-#include "sim/seeded_random.hpp"
 
 namespace cosmos {
 namespace {
@@ -46,7 +46,8 @@ TEST(SeededRandom, NormalsFollowTheNormalDistributionIncludingItsTails) {
   // The 1 % critical value of the KS distance is 1.63 / sqrt(n) = 0.0026.
   EXPECT_LT(ks_distance, 0.0026);
   // Beyond the ziggurat's base layer (r = 3.654): expected 2 (1 - Phi(r)) n = 103 draws.
-  const auto beyond = std::count_if(values.begin(), values.end(), [](double v) { return std::abs(v) > 3.6541528853610088; });
+  const auto beyond = std::count_if(values.begin(), values.end(),
+                                    [](double v) { return std::abs(v) > 3.6541528853610088; });
   const double expected = 2.0 * (1.0 - standard_normal_cdf(3.6541528853610088)) * kDraws;
   EXPECT_NEAR(static_cast<double>(beyond), expected, 4.0 * std::sqrt(expected));
   EXPECT_GT(values.back(), 4.0);

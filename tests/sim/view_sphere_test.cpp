@@ -36,7 +36,8 @@ TEST(ViewSphere, DirectionsAreDistinctAndBalanced) {
       min_separation_deg = std::min(min_separation_deg, angle_deg(directions[i], directions[j]));
     }
   }
-  std::cout << "[ measured ] smallest angle between two view directions: " << min_separation_deg << " deg\n";
+  std::cout << "[ measured ] smallest angle between two view directions: " << min_separation_deg
+            << " deg\n";
   // A quasi-regular tessellation of 4π into 320 cells spaces neighbours about 11° apart.
   EXPECT_GT(min_separation_deg, 7.0);
   // The icosahedron is centrally symmetric, so the directions sum to zero.
@@ -55,11 +56,12 @@ TEST(ViewSphere, EveryDirectionIsWithin12DegreesOfAView) {
     const Eigen::Vector3d random =
         Eigen::Vector3d(gaussian(generator), gaussian(generator), gaussian(generator)).normalized();
     double nearest_deg = 180.0;
-    for (const auto& direction : directions) nearest_deg = std::min(nearest_deg, angle_deg(random, direction));
+    for (const auto& direction : directions)
+      nearest_deg = std::min(nearest_deg, angle_deg(random, direction));
     max_angle_deg = std::max(max_angle_deg, nearest_deg);
   }
-  std::cout << "[ measured ] max angle from 10000 random directions to the nearest view: " << max_angle_deg
-            << " deg\n";
+  std::cout << "[ measured ] max angle from 10000 random directions to the nearest view: "
+            << max_angle_deg << " deg\n";
   RecordProperty("max_angle_deg", std::to_string(max_angle_deg));
   EXPECT_LT(max_angle_deg, 12.0);
 }
@@ -80,7 +82,8 @@ TEST(ViewSphere, RotationLooksAlongEveryViewDirection) {
   for (const auto& direction : view_directions()) {
     const Eigen::Matrix3d R_scanner_part = rotation_looking_along(direction);
     EXPECT_LT((R_scanner_part * direction - z).norm(), 1e-12);
-    EXPECT_LT((R_scanner_part.transpose() * R_scanner_part - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+    EXPECT_LT((R_scanner_part.transpose() * R_scanner_part - Eigen::Matrix3d::Identity()).norm(),
+              1e-12);
     EXPECT_NEAR(R_scanner_part.determinant(), 1.0, 1e-12);
     // Shortest arc: the axis perpendicular to both the direction and +z stays where it is.
     const Eigen::Vector3d axis = direction.cross(z);
@@ -94,7 +97,9 @@ TEST(ViewSphere, RotationHandlesPolesAndUnnormalisedDirections) {
   const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
   EXPECT_LT((rotation_looking_along(z) - Eigen::Matrix3d::Identity()).norm(), 1e-15);
   EXPECT_LT((rotation_looking_along(-z) * -z - z).norm(), 1e-12);
-  EXPECT_LT((rotation_looking_along(Eigen::Vector3d(0, 1e-14, -1)) * Eigen::Vector3d(0, 0, -1) - z).norm(), 1e-9);
+  EXPECT_LT((rotation_looking_along(Eigen::Vector3d(0, 1e-14, -1)) * Eigen::Vector3d(0, 0, -1) - z)
+                .norm(),
+            1e-9);
   const Eigen::Vector3d long_direction(3.0, -4.0, 12.0);  // length 13
   EXPECT_LT((rotation_looking_along(long_direction) * long_direction - 13.0 * z).norm(), 1e-12);
   EXPECT_THROW(rotation_looking_along(Eigen::Vector3d::Zero()), std::invalid_argument);

@@ -1,6 +1,8 @@
 // The model-base file (core/io/model_base_file.hpp): a hand-made base of 2 parts survives
 // write -> read field for field, and every kind of damage is refused with one line naming the
 // file and the reason.
+#include "core/io/model_base_file.hpp"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -12,7 +14,6 @@
 #include <string>
 
 #include "core/input_error.hpp"
-#include "core/io/model_base_file.hpp"
 #include "core/io/parameters_text.hpp"
 #include "core/io/xxh64.hpp"
 #include "tests/core/hand_made_view.hpp"
@@ -33,9 +34,10 @@ RangeImage relief(double tilt) {
     for (int column = 0; column < image.width(); ++column) {
       const double x = image.x_mm(column), y = image.y_mm(row);
       const bool hole = std::hypot(column - 25, row - 12) < 5;
-      image.z_mm(column, row) = hole ? std::nanf("")
-                                     : static_cast<float>(50 + tilt * x + 0.01 * x * x - 0.02 * x * y + 0.005 * y * y) +
-                                           noise(generator);
+      image.z_mm(column, row) =
+          hole ? std::nanf("")
+               : static_cast<float>(50 + tilt * x + 0.01 * x * x - 0.02 * x * y + 0.005 * y * y) +
+                     noise(generator);
     }
   return image;
 }
@@ -64,7 +66,8 @@ ModelBase hand_made_base() {
     view.T_scanner_part.translation_mm = {1.5 * k, -2.0, 33.0};
     view.cosmos = cosmos;
     view.cosmos.patches[1].area_mm2 += k;
-    for (int m = 0; m < kSpectrumMoments + 1; ++m) view.moments[static_cast<std::size_t>(m)] = 0.3 + 0.01 * k - 1e-3 * m;
+    for (int m = 0; m < kSpectrumMoments + 1; ++m)
+      view.moments[static_cast<std::size_t>(m)] = 0.3 + 0.01 * k - 1e-3 * m;
     RegistrationPointParameters registration;
     registration.stride_px = 2;
     view.registration = build_registration_points(relief(0.05 * k), registration).points;
@@ -100,7 +103,8 @@ class ModelBaseFile : public ::testing::Test {
     }
     return "";
   }
-  void expect_refusal(const std::string& needle, const std::optional<std::string>& expected = std::nullopt) const {
+  void expect_refusal(const std::string& needle,
+                      const std::optional<std::string>& expected = std::nullopt) const {
     const std::string message = refusal(expected);
     EXPECT_EQ(message.rfind(path_.string() + ": ", 0), 0u) << message;
     EXPECT_NE(message.find(needle), std::string::npos) << "'" << needle << "' not in: " << message;
@@ -234,7 +238,8 @@ TEST_F(ModelBaseFile, TruncatedFileIsRefused) {
   write_model_base(hand_made_base(), path_);
   const std::string content = bytes();
   put_bytes(content.substr(0, content.size() - 100));
-  expect_refusal("truncated: " + std::to_string(content.size() - 100) + " of " + std::to_string(content.size()));
+  expect_refusal("truncated: " + std::to_string(content.size() - 100) + " of " +
+                 std::to_string(content.size()));
   put_bytes(content.substr(0, 20));
   expect_refusal("truncated: 20 bytes");
   put_bytes("");
@@ -256,12 +261,15 @@ TEST_F(ModelBaseFile, DamageBehindAValidChecksumIsCaughtByTheVerifier) {
   write_model_base(hand_made_base(), path_);
   const std::string original = bytes();
   const auto with_checksum = [](std::string content) {
-    const std::uint64_t checksum = xxh64(content.data() + kModelBaseHeaderBytes, content.size() - kModelBaseHeaderBytes);
-    for (int k = 0; k < 8; ++k) content[24 + static_cast<std::size_t>(k)] = static_cast<char>(checksum >> (8 * k));
+    const std::uint64_t checksum =
+        xxh64(content.data() + kModelBaseHeaderBytes, content.size() - kModelBaseHeaderBytes);
+    for (int k = 0; k < 8; ++k)
+      content[24 + static_cast<std::size_t>(k)] = static_cast<char>(checksum >> (8 * k));
     return content;
   };
   std::string garbage = original;
-  for (std::size_t k = kModelBaseHeaderBytes; k < garbage.size(); ++k) garbage[k] = static_cast<char>(k * 31);
+  for (std::size_t k = kModelBaseHeaderBytes; k < garbage.size(); ++k)
+    garbage[k] = static_cast<char>(k * 31);
   put_bytes(with_checksum(garbage));
   expect_refusal("corrupted: no CSMB payload identifier");
 
@@ -270,7 +278,8 @@ TEST_F(ModelBaseFile, DamageBehindAValidChecksumIsCaughtByTheVerifier) {
   int refused = 0;
   for (int trial = 0; trial < 120; ++trial) {
     std::string damaged = original;
-    for (int flip = 0; flip < 4; ++flip) damaged[position(generator)] ^= static_cast<char>(1 + trial % 255);
+    for (int flip = 0; flip < 4; ++flip)
+      damaged[position(generator)] ^= static_cast<char>(1 + trial % 255);
     put_bytes(with_checksum(damaged));
     const std::string message = refusal();
     if (message.empty()) continue;  // flipped payload values, e.g. an area: still a valid base
@@ -285,8 +294,8 @@ TEST_F(ModelBaseFile, OtherFormatVersionIsRefused) {
   std::string content = bytes();
   content[8] = static_cast<char>(ModelBase::kFormatVersion + 1);
   put_bytes(content);
-  expect_refusal("format version " + std::to_string(ModelBase::kFormatVersion + 1) + ", this build reads version " +
-                 std::to_string(ModelBase::kFormatVersion));
+  expect_refusal("format version " + std::to_string(ModelBase::kFormatVersion + 1) +
+                 ", this build reads version " + std::to_string(ModelBase::kFormatVersion));
 }
 
 TEST_F(ModelBaseFile, NotAModelBaseIsRefused) {
@@ -297,7 +306,9 @@ TEST_F(ModelBaseFile, NotAModelBaseIsRefused) {
 TEST_F(ModelBaseFile, OtherParametersAreRefusedNamingTheKey) {
   write_model_base(hand_made_base(), path_);
   EXPECT_EQ(refusal(parameters(0.02)), "");
-  expect_refusal("built with other parameters: scanner.z_noise_mm is 0.02 in the file, 0.05 expected", parameters(0.05));
+  expect_refusal(
+      "built with other parameters: scanner.z_noise_mm is 0.02 in the file, 0.05 expected",
+      parameters(0.05));
 }
 
 TEST_F(ModelBaseFile, MissingFileIsRefused) {

@@ -1,8 +1,8 @@
 // The canonical parameters text (core/io/parameters_text.hpp) a model base records: nested by
 // the keys' dots, sorted, and compared key by key so a refusal names the differing key.
-#include <gtest/gtest.h>
-
 #include "core/io/parameters_text.hpp"
+
+#include <gtest/gtest.h>
 
 namespace cosmos {
 namespace {
@@ -13,7 +13,8 @@ TEST(ParameterText, IsNestedSortedAndNamesTheFirstDifferingKey) {
   text.set_integer("cosmos.fit.window_size", 5);
   text.set_flag("cosmos.fit.bicubic", true);
   EXPECT_EQ(text.text(),
-            "{\n  \"cosmos\": {\n    \"fit\": {\n      \"bicubic\": true,\n      \"window_size\": 5\n    }\n  },\n"
+            "{\n  \"cosmos\": {\n    \"fit\": {\n      \"bicubic\": true,\n      \"window_size\": "
+            "5\n    }\n  },\n"
             "  \"scanner\": {\n    \"z_noise_mm\": 0.02\n  }\n}\n");
   ParameterText other = text;
   EXPECT_FALSE(first_parameter_difference(text.text(), other.text()));

@@ -1,11 +1,11 @@
 // XXH64 (core/io/xxh64.hpp), the model-base file's payload checksum: the reference
 // implementation's published values, and the incremental form agreeing with the one-shot one.
+#include "core/io/xxh64.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
 #include <string_view>
-
-#include "core/io/xxh64.hpp"
 
 namespace cosmos {
 namespace {

@@ -38,7 +38,8 @@ Csmp hand_patch(int id, double area_mm2, double shape_index, std::vector<PatchNe
 CosmosView chain_view() {
   CosmosView view;
   view.patches = {hand_patch(0, 300, 0.95, {{1, 30}}), hand_patch(1, 500, 0.75, {{0, 30}, {2, 30}}),
-                  hand_patch(2, 200, 0.50, {{1, 30}, {3, 30}}), hand_patch(3, 400, 0.05, {{2, 30}})};
+                  hand_patch(2, 200, 0.50, {{1, 30}, {3, 30}}),
+                  hand_patch(3, 400, 0.05, {{2, 30}})};
   return view;
 }
 
@@ -89,7 +90,8 @@ std::vector<int> all_ids(const CosmosView& view) {
 }
 
 bool feasible(const CosmosView& scene, const CosmosView& model, const PatchGroupMatch& match) {
-  return is_feasible_correspondence(scene, model, match.pairs, PatchGroupMatchParameters{}.min_adjacency_strength);
+  return is_feasible_correspondence(scene, model, match.pairs,
+                                    PatchGroupMatchParameters{}.min_adjacency_strength);
 }
 
 TEST(PatchGroup, SplitGivesTheSelectedGroupThenTheComponentsOfTheRest) {
@@ -101,7 +103,8 @@ TEST(PatchGroup, SplitGivesTheSelectedGroupThenTheComponentsOfTheRest) {
   EXPECT_EQ(split.components[2], patch_bit(2) | patch_bit(3));
   // Connected strict subsets around patch 1 of at most 2 patches: {1}, {0,1}, {1,2}.
   const std::vector<PatchSet> subsets = connected_subsets(graph, graph.all, 1, 2);
-  EXPECT_EQ(subsets, (std::vector<PatchSet>{patch_bit(1), patch_bit(0) | patch_bit(1), patch_bit(1) | patch_bit(2)}));
+  EXPECT_EQ(subsets, (std::vector<PatchSet>{patch_bit(1), patch_bit(0) | patch_bit(1),
+                                            patch_bit(1) | patch_bit(2)}));
 }
 
 TEST(CorrespondenceGoodness, AreaGoodnessIsTheThesisRatioOfPercentageAreas) {
@@ -121,7 +124,8 @@ TEST(CorrespondenceGoodness, TheTrivialCorrespondenceOfIdenticalViewsScoresBelow
   const std::vector<GroupPair> trivial = {{graph.all, graph.all}};
   std::vector<GroupPair> fine;
   for (int i = 0; i < 4; ++i) fine.push_back({patch_bit(i), patch_bit(i)});
-  const double trivial_quality = correspondence_quality(graph, graph, trivial, GoodnessParameters{});
+  const double trivial_quality =
+      correspondence_quality(graph, graph, trivial, GoodnessParameters{});
   const double fine_quality = correspondence_quality(graph, graph, fine, GoodnessParameters{});
   EXPECT_NEAR(fine_quality, 1.0, 1e-12);
   // Equally good, but the trivial pair lumps four patches: fineness = largest share 500/1400.
@@ -186,7 +190,8 @@ TEST(PatchGroupMatching, FifteenPatchGridIsFollowedThroughShuffledIds) {
   for (const MappedPair& pair : match.pairs) {
     ASSERT_EQ(pair.scene_patches.size(), 1u);
     ASSERT_EQ(pair.model_patches.size(), 1u);
-    const int cell = static_cast<int>(std::find(kShuffled.begin(), kShuffled.end(), pair.scene_patches[0]) - kShuffled.begin());
+    const int cell = static_cast<int>(
+        std::find(kShuffled.begin(), kShuffled.end(), pair.scene_patches[0]) - kShuffled.begin());
     correct += pair.model_patches[0] == cell;
   }
   EXPECT_EQ(correct, 15);
@@ -197,19 +202,23 @@ TEST(PatchGroupMatching, FifteenPatchGridIsFollowedThroughShuffledIds) {
 TEST(PatchGroupMatching, PlanarPatchesPairOnlyWithPlanarOnes) {
   // Scene: a planar face between two caps; model: the same with the middle face curved.
   CosmosView scene;
-  scene.patches = {hand_patch(0, 300, 0.95, {{1, 30}}), hand_patch(1, 400, 0, {{0, 30}, {2, 30}}, true),
+  scene.patches = {hand_patch(0, 300, 0.95, {{1, 30}}),
+                   hand_patch(1, 400, 0, {{0, 30}, {2, 30}}, true),
                    hand_patch(2, 300, 0.95, {{1, 30}})};
   CosmosView model = scene;
   model.patches[1] = hand_patch(1, 400, 0.75, {{0, 30}, {2, 30}});
   const PatchGroupMatch match = match_patch_groups(scene, model);
   for (const MappedPair& pair : match.pairs) {
-    const bool scene_has_planar = std::find(pair.scene_patches.begin(), pair.scene_patches.end(), 1) != pair.scene_patches.end();
+    const bool scene_has_planar = std::find(pair.scene_patches.begin(), pair.scene_patches.end(),
+                                            1) != pair.scene_patches.end();
     EXPECT_TRUE(!scene_has_planar || pair.scene_patches.size() > 1 || pair.model_patches.size() > 1)
         << "the planar patch alone was paired with a curved one";
   }
   EXPECT_LT(match.score, 0.5);
-  EXPECT_TRUE(planar_compatible(GroupSummary{.planar_fraction = 1.0}, GroupSummary{.planar_fraction = 0.4}));
-  EXPECT_FALSE(planar_compatible(GroupSummary{.planar_fraction = 1.0}, GroupSummary{.planar_fraction = 0.0}));
+  EXPECT_TRUE(planar_compatible(GroupSummary{.planar_fraction = 1.0},
+                                GroupSummary{.planar_fraction = 0.4}));
+  EXPECT_FALSE(planar_compatible(GroupSummary{.planar_fraction = 1.0},
+                                 GroupSummary{.planar_fraction = 0.0}));
 }
 
 TEST(PatchGroupMatching, WeakAdjacenciesNeedNotMatchStrongOnesMust) {
@@ -293,21 +302,26 @@ TEST(PatchGroupMatching, DifferentPartsGiveCoarserLowerScoringCorrespondences) {
     EXPECT_LT(match.fineness, same_fineness - 0.1);
   }
   // Planar faces against curved patches: nothing refines, and nothing resembles.
-  const PatchGroupMatch box = match_patch_groups(capsule35.view, analytic_view(AnalyticShape::box_corner, 0).view);
+  const PatchGroupMatch box =
+      match_patch_groups(capsule35.view, analytic_view(AnalyticShape::box_corner, 0).view);
   EXPECT_EQ(box.pairs.size(), 1u);
   EXPECT_LT(box.score, 0.05);
 }
 
 TEST(PatchGroupMatching, TheTrivialCorrespondenceIsAlwaysFeasible) {
   const CosmosView& relief = relief_view(0).view;
-  for (AnalyticShape shape : {AnalyticShape::capsule, AnalyticShape::torus, AnalyticShape::box_corner}) {
+  for (AnalyticShape shape :
+       {AnalyticShape::capsule, AnalyticShape::torus, AnalyticShape::box_corner}) {
     const CosmosView& view = analytic_view(shape, 0).view;
-    EXPECT_TRUE(is_feasible_correspondence(view, relief, {{all_ids(view), all_ids(relief), {}}}, 0.0));
-    EXPECT_FALSE(is_feasible_correspondence(view, relief, {{all_ids(view), {}, {}}}, 0.0)) << "model not covered";
+    EXPECT_TRUE(
+        is_feasible_correspondence(view, relief, {{all_ids(view), all_ids(relief), {}}}, 0.0));
+    EXPECT_FALSE(is_feasible_correspondence(view, relief, {{all_ids(view), {}, {}}}, 0.0))
+        << "model not covered";
   }
   PatchGroupMatchParameters no_budget;
   no_budget.max_operations = 0;
-  const PatchGroupMatch match = match_patch_groups(relief_view(40).view, relief_view(0).view, no_budget);
+  const PatchGroupMatch match =
+      match_patch_groups(relief_view(40).view, relief_view(0).view, no_budget);
   EXPECT_EQ(match.pairs.size(), 1u);
   EXPECT_EQ(match.operations, 0);
   EXPECT_EQ(match.status, PatchGroupMatchStatus::budget_exhausted);
@@ -319,8 +333,8 @@ TEST(PatchGroupMatching, TheOperationBudgetIsRespected) {
   const PatchGroupMatch unlimited = match_patch_groups(scene, model);
   EXPECT_EQ(unlimited.status, PatchGroupMatchStatus::ok);
   ASSERT_GT(unlimited.operations, 50);
-  for (std::int64_t budget : {std::int64_t{1}, std::int64_t{10}, std::int64_t{50}, unlimited.operations / 2,
-                              unlimited.operations - 1}) {
+  for (std::int64_t budget : {std::int64_t{1}, std::int64_t{10}, std::int64_t{50},
+                              unlimited.operations / 2, unlimited.operations - 1}) {
     PatchGroupMatchParameters parameters;
     parameters.max_operations = budget;
     const PatchGroupMatch match = match_patch_groups(scene, model, parameters);
@@ -332,7 +346,8 @@ TEST(PatchGroupMatching, TheOperationBudgetIsRespected) {
   PatchGroupMatchParameters per_refine;
   per_refine.max_operations_per_refine = 5;
   const PatchGroupMatch small = match_patch_groups(scene, model, per_refine);
-  EXPECT_LE(small.operations, 5 * (small.refinements + static_cast<std::int64_t>(small.pairs.size())));
+  EXPECT_LE(small.operations,
+            5 * (small.refinements + static_cast<std::int64_t>(small.pairs.size())));
   EXPECT_TRUE(feasible(scene, model, small));
 }
 

@@ -26,8 +26,10 @@ Eigen::Matrix3d known_rotation() {
 }
 
 std::vector<Eigen::Vector3d> some_normals() {
-  return {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0.6, 0, 0.8), Eigen::Vector3d(-0.3, 0.5, 0.81).normalized(),
-          Eigen::Vector3d(0.1, -0.7, 0.7).normalized(), Eigen::Vector3d(-0.8, -0.2, 0.56).normalized()};
+  return {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0.6, 0, 0.8),
+          Eigen::Vector3d(-0.3, 0.5, 0.81).normalized(),
+          Eigen::Vector3d(0.1, -0.7, 0.7).normalized(),
+          Eigen::Vector3d(-0.8, -0.2, 0.56).normalized()};
 }
 
 double max_abs_difference(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
@@ -119,7 +121,8 @@ TEST(PoseFromPatches, HandMadeViewsGiveTheKnownPoseTo1e9) {
   const HandViews views = hand_views(T_model_scene.inverse());
   // Singles and one group of two patches (its normal and centroid are area-weighted means,
   // which rotate with the patches).
-  std::vector<MappedPair> pairs = {{{10}, {10}, {}}, {{11, 12}, {11, 12}, {}}, {{13}, {13}, {}}, {{14}, {14}, {}}};
+  std::vector<MappedPair> pairs = {
+      {{10}, {10}, {}}, {{11, 12}, {11, 12}, {}}, {{13}, {13}, {}}, {{14}, {14}, {}}};
   const PoseFromPatches pose = estimate_pose_from_patches(views.scene, views.model, pairs);
   EXPECT_EQ(pose.status, PatchPoseStatus::ok);
   EXPECT_EQ(pose.pairs_used, 4);
@@ -137,7 +140,8 @@ TEST(PoseFromPatches, GroupsWithoutAnOrientationAreLeftOut) {
     view->patches[4].mean_normal = Eigen::Vector3d(-1, 0, 0);
     view->patches[4].area_mm2 = view->patches[3].area_mm2;
   }
-  const std::vector<MappedPair> pairs = {{{10}, {10}, {}}, {{11}, {11}, {}}, {{13, 14}, {13, 14}, {}}};
+  const std::vector<MappedPair> pairs = {
+      {{10}, {10}, {}}, {{11}, {11}, {}}, {{13, 14}, {13, 14}, {}}};
   const PoseFromPatches pose = estimate_pose_from_patches(scene, model, pairs);
   EXPECT_EQ(pose.pairs_used, 2);
   EXPECT_EQ(pose.status, PatchPoseStatus::ok);
@@ -155,7 +159,8 @@ TEST(PoseFromPatches, CapsuleCorrespondenceGivesTheTurnAboutZ) {
   // apart: either pose is right.
   const double error_deg =
       std::min(rotation_angle_between_rad(pose.T_model_scene.rotation, R_true),
-               rotation_angle_between_rad(pose.T_model_scene.rotation, rotation_about_z_deg(180) * R_true)) /
+               rotation_angle_between_rad(pose.T_model_scene.rotation,
+                                          rotation_about_z_deg(180) * R_true)) /
       kDegToRad;
   EXPECT_LT(error_deg, 3.0);
   EXPECT_LT(pose.T_model_scene.translation_mm.norm(), 2.0);

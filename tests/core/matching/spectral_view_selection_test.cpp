@@ -1,7 +1,7 @@
 // Two-tier spectral model-view selection (§5.2) on a hand-made model base.
-#include <gtest/gtest.h>
-
 #include "core/matching/spectral_view_selection.hpp"
+
+#include <gtest/gtest.h>
 
 namespace cosmos {
 namespace {
@@ -30,7 +30,8 @@ ModelBase hand_made_base() {
     ViewCluster c;
     c.part_index = part;
     for (int v : views)
-      for (int k = 0; k <= kSpectrumMoments; ++k) c.centroid[k] += base.views[v].moments[k] / views.size();
+      for (int k = 0; k <= kSpectrumMoments; ++k)
+        c.centroid[k] += base.views[v].moments[k] / views.size();
     c.views = std::move(views);
     base.clusters.push_back(c);
   };
@@ -63,18 +64,21 @@ TEST(SpectralViewSelection, MoreClustersWidenTheSearch) {
   const auto candidates = SpectralViewSelector(base, parameters).select(moments(0.2, 0.0));
   ASSERT_EQ(candidates.size(), 7u);
   EXPECT_EQ(candidates.front().view, 0);
-  for (std::size_t k = 1; k < candidates.size(); ++k) EXPECT_LE(candidates[k - 1].distance, candidates[k].distance);
+  for (std::size_t k = 1; k < candidates.size(); ++k)
+    EXPECT_LE(candidates[k - 1].distance, candidates[k].distance);
 }
 
 TEST(SpectralViewSelection, MahalanobisWeighsMomentsByTheirSpread) {
   // Within each cluster m1 spreads by 0.02 while m2 barely moves (0.001), so under the
   // Mahalanobis distance the same step counts far more along m2 than along m1.
   ModelBase base = hand_made_base();
-  for (ModelBaseView& view : base.views) view.moments[1] = 0.1 * view.part_index + 0.001 * (view.view_index % 2);
+  for (ModelBaseView& view : base.views)
+    view.moments[1] = 0.1 * view.part_index + 0.001 * (view.view_index % 2);
   for (ViewCluster& cluster : base.clusters) {
     cluster.centroid = MomentVector{};
     for (int v : cluster.views)
-      for (int k = 0; k <= kSpectrumMoments; ++k) cluster.centroid[k] += base.views[v].moments[k] / cluster.views.size();
+      for (int k = 0; k <= kSpectrumMoments; ++k)
+        cluster.centroid[k] += base.views[v].moments[k] / cluster.views.size();
   }
   SpectralSelectionParameters parameters;
   parameters.distance = SpectralDistance::kMahalanobis;
@@ -84,7 +88,8 @@ TEST(SpectralViewSelection, MahalanobisWeighsMomentsByTheirSpread) {
   const double along_m1 = mahalanobis.distance(origin, moments(0.51, 0.0));
   const double along_m2 = mahalanobis.distance(origin, moments(0.5, 0.01));
   EXPECT_GT(along_m2, 10 * along_m1);
-  EXPECT_NEAR(euclidean.distance(origin, moments(0.51, 0.0)), euclidean.distance(origin, moments(0.5, 0.01)), 1e-15);
+  EXPECT_NEAR(euclidean.distance(origin, moments(0.51, 0.0)),
+              euclidean.distance(origin, moments(0.5, 0.01)), 1e-15);
   EXPECT_NEAR(mahalanobis.distance(origin, origin), 0.0, 1e-12);
 }
 

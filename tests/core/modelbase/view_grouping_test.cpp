@@ -1,10 +1,10 @@
 // View grouping of the model base (§4.4.2): per part, complete-link clusters of the moment
 // vectors cut at a level or to a count, with centroids (the first tier of Fig. 5.3).
+#include "core/modelbase/view_grouping.hpp"
+
 #include <gtest/gtest.h>
 
 #include <limits>
-
-#include "core/modelbase/view_grouping.hpp"
 
 namespace cosmos {
 namespace {
@@ -35,7 +35,8 @@ ModelBase grouped_base() {
 
 TEST(ViewGrouping, CutAtALevelSeparatesTheGroupsOfEachPart) {
   const ModelBase base = grouped_base();
-  const ViewGroupingResult result = group_model_views(base, {.cut_level = 0.01, .cluster_count = 0});
+  const ViewGroupingResult result =
+      group_model_views(base, {.cut_level = 0.01, .cluster_count = 0});
   ASSERT_EQ(result.status, ClusteringStatus::ok);
   ASSERT_EQ(result.clusters.size(), 5u);
   // Part 0, clusters in order of their lowest view.
@@ -54,13 +55,15 @@ TEST(ViewGrouping, CutAtALevelSeparatesTheGroupsOfEachPart) {
 }
 
 TEST(ViewGrouping, LevelBelowTheTightestPairKeepsEveryViewApart) {
-  const ViewGroupingResult result = group_model_views(grouped_base(), {.cut_level = 1e-6, .cluster_count = 0});
+  const ViewGroupingResult result =
+      group_model_views(grouped_base(), {.cut_level = 1e-6, .cluster_count = 0});
   ASSERT_EQ(result.status, ClusteringStatus::ok);
   EXPECT_EQ(result.clusters.size(), 10u);
 }
 
 TEST(ViewGrouping, RequestedCountOverridesTheLevel) {
-  const ViewGroupingResult result = group_model_views(grouped_base(), {.cut_level = 0.01, .cluster_count = 2});
+  const ViewGroupingResult result =
+      group_model_views(grouped_base(), {.cut_level = 0.01, .cluster_count = 2});
   ASSERT_EQ(result.status, ClusteringStatus::ok);
   ASSERT_EQ(result.clusters.size(), 4u);
   // Complete link: the 0.5 and 0.8 groups are at most 0.30 apart in m1 (Eq. 4.3: 0.09), the

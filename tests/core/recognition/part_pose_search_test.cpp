@@ -9,11 +9,11 @@
 #include <memory>
 #include <numbers>
 
-#include "core/representation/cosmos_pipeline.hpp"
 #include "core/io/model_base_file.hpp"
 #include "core/modelbase/model_surface.hpp"
 #include "core/recognition/pose_hypotheses.hpp"
 #include "core/recognition/recognizer.hpp"
+#include "core/representation/cosmos_pipeline.hpp"
 #include "sim/mesh.hpp"
 #include "sim/part_catalog.hpp"
 #include "sim/part_pose.hpp"
@@ -190,15 +190,16 @@ TEST_F(PartPoseSearch, AlignsTheStartsOfAViewFarFromTheTruthOntoTheNearestView) 
     const ModelBaseView& view = base_->views[static_cast<std::size_t>(best.view)];
     EXPECT_EQ(view.part_index, part);
     const RigidTransform T_scanner_part = best.T_model_scene.inverse() * view.T_scanner_part;
-    const Eigen::Vector3d seen_from = T_scanner_part.rotation.transpose() * Eigen::Vector3d::UnitZ();
+    const Eigen::Vector3d seen_from =
+        T_scanner_part.rotation.transpose() * Eigen::Vector3d::UnitZ();
     for (std::size_t v = 0; v < base_->views.size(); ++v) {
       if (base_->views[v].part_index != part) continue;
       EXPECT_GE(view.direction_part.dot(seen_from) + 1e-12,
                 base_->views[v].direction_part.dot(seen_from))
           << "seed " << seed << ": view " << best.view << " is not the nearest";
     }
-    const double error_deg =
-        rotation_angle_between_rad(T_scanner_part.rotation, truth.rotation) * 180 / std::numbers::pi;
+    const double error_deg = rotation_angle_between_rad(T_scanner_part.rotation, truth.rotation) *
+                             180 / std::numbers::pi;
     near_truth += error_deg < 8.0;  // well inside what registration (ch. 6) converges from
   }
   // The 4 aligned starts came from turns 30 degrees apart about an axis 30 degrees off; the

@@ -103,10 +103,10 @@ TEST(PartDistanceField, FractionWithinCountsThePointsNearTheSurface) {
   const RegistrationPoints scene = as_scene(points);
   const double within = field_fraction_within(scene, field, RigidTransform{}, 2.0);
   EXPECT_NEAR(within, 0.5, 0.5 / static_cast<double>(points.size()) + 1e-12);
-  EXPECT_TRUE((FieldGate{.distance_mm = 2.0, .min_fraction = within}.passes(
-      scene, field, RigidTransform{})));
-  EXPECT_FALSE((FieldGate{.distance_mm = 2.0, .min_fraction = 0.6}.passes(
-      scene, field, RigidTransform{})));
+  EXPECT_TRUE((FieldGate{.distance_mm = 2.0, .min_fraction = within}.passes(scene, field,
+                                                                            RigidTransform{})));
+  EXPECT_FALSE(
+      (FieldGate{.distance_mm = 2.0, .min_fraction = 0.6}.passes(scene, field, RigidTransform{})));
   const RigidTransform off{Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, 6)};
   EXPECT_DOUBLE_EQ(field_fraction_within(scene, field, off, 2.0), 0.0);
   EXPECT_DOUBLE_EQ(field_fraction_within(RegistrationPoints{}, field, RigidTransform{}, 2.0), 0.0);

@@ -14,11 +14,11 @@
 #include <utility>
 #include <vector>
 
-#include "core/surface/local_surface_fit.hpp"
 #include "core/registration/principal_axes_estimate.hpp"
 #include "core/registration/registration_points.hpp"
-#include "core/rigid_transform.hpp"
 #include "core/registration/tangent_plane_correspondence.hpp"
+#include "core/rigid_transform.hpp"
+#include "core/surface/local_surface_fit.hpp"
 #include "sim/free_form_view_pair.hpp"
 
 namespace cosmos::testing {

@@ -1,10 +1,11 @@
 // Shape spectrum, its moments (Eqs. 4.1-4.2) and the dissimilarity (Eq. 4.3).
+#include "core/representation/shape_spectrum.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "tests/core/analytic_fixture.hpp"
-#include "core/representation/shape_spectrum.hpp"
 
 namespace cosmos::testing {
 namespace {

@@ -1,4 +1,6 @@
 // CSMPs by constrained region growing (§3.5.2) on analytic surfaces and hand-made fields.
+#include "core/segmentation/csmp_segmentation.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -6,7 +8,6 @@
 #include <numbers>
 
 #include "tests/core/analytic_fixture.hpp"
-#include "core/segmentation/csmp_segmentation.hpp"
 
 namespace cosmos::testing {
 namespace {
@@ -94,7 +95,8 @@ TEST(CsmpSegmentation, CapsuleGivesTwoCapsAndARidge) {
   for (int k = 0; k < 3; ++k) {
     int votes[3] = {0, 0, 0};
     for (std::size_t i = 0; i < analysis.segmentation.patch_of_pixel.size(); ++i)
-      if (analysis.segmentation.patch_of_pixel[i] == patches[k].id) ++votes[surface.truth[i].region];
+      if (analysis.segmentation.patch_of_pixel[i] == patches[k].id)
+        ++votes[surface.truth[i].region];
     region_of_patch.push_back(static_cast<int>(std::max_element(votes, votes + 3) - votes));
   }
   std::vector<int> sorted_regions = region_of_patch;
@@ -128,7 +130,8 @@ TEST(CsmpSegmentation, BoxCornerGivesThreeAdjacentPlanes) {
     double best_deg = 180;
     int best = -1;
     for (int f = 0; f < 3; ++f) {
-      const double deg = std::acos(std::clamp(patch->mean_normal.dot(truth_normals[f].cast<double>()), -1.0, 1.0)) *
+      const double deg = std::acos(std::clamp(
+                             patch->mean_normal.dot(truth_normals[f].cast<double>()), -1.0, 1.0)) *
                          180.0 / std::numbers::pi;
       if (deg < best_deg) best_deg = deg, best = f;
     }
@@ -136,8 +139,9 @@ TEST(CsmpSegmentation, BoxCornerGivesThreeAdjacentPlanes) {
     matched[best] = true;
     for (const Csmp* other : planar) {
       if (other == patch) continue;
-      const bool adjacent = std::any_of(patch->neighbors.begin(), patch->neighbors.end(),
-                                        [&](const PatchNeighbor& n) { return n.patch == other->id; });
+      const bool adjacent =
+          std::any_of(patch->neighbors.begin(), patch->neighbors.end(),
+                      [&](const PatchNeighbor& n) { return n.patch == other->id; });
       EXPECT_TRUE(adjacent) << patch->id << " and " << other->id;
     }
   }

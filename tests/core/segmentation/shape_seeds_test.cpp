@@ -110,8 +110,8 @@ TEST(ShapeSeeds, APixelJoinsTheNeighbourSeedOfLeastJoinedRangeFirst) {
   EXPECT_NE(seed(0, 0), seed(1, 0));
   EXPECT_EQ(seed(0, 1), seed(1, 0));
   EXPECT_EQ(seeds.seed_count(), 3);
-  EXPECT_TRUE(unique_pairs(seeds).count({std::min(seed(0, 0), seed(1, 0)),
-                                         std::max(seed(0, 0), seed(1, 0))}));
+  EXPECT_TRUE(unique_pairs(seeds).count(
+      {std::min(seed(0, 0), seed(1, 0)), std::max(seed(0, 0), seed(1, 0))}));
 }
 
 TEST(ShapeSeeds, CreasesDepthJumpsAndLabelsSeparateSeeds) {

@@ -1,11 +1,11 @@
 // The local bicubic fit reproduces polynomials exactly, with or without missing samples, and
 // never fits across a depth jump.
+#include "core/surface/local_surface_fit.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
-
-#include "core/surface/local_surface_fit.hpp"
 
 namespace cosmos {
 namespace {
@@ -25,7 +25,8 @@ RangeImage cubic_image() {
   return image;
 }
 
-void expect_frame_of_cubic_at(const DarbouxFrameField& field, int column, int row, double x, double y) {
+void expect_frame_of_cubic_at(const DarbouxFrameField& field, int column, int row, double x,
+                              double y) {
   SurfaceDerivatives d;
   d.zx = 0.3 + 0.04 * x - 0.01 * y + 0.003 * x * x;
   d.zy = 0.1 - 0.01 * x + 0.06 * y;

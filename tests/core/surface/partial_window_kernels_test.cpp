@@ -1,12 +1,12 @@
 // Partial-window kernels against a direct least-squares solve, on random validity patterns of
 // a 5x5 window; degenerate patterns; and results that do not depend on the cache's contents.
+#include "core/surface/partial_window_kernels.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 #include <bit>
 #include <random>
-
-#include "core/surface/partial_window_kernels.hpp"
 
 namespace cosmos {
 namespace {

@@ -11,15 +11,16 @@ namespace cosmos::testing {
 namespace {
 
 TEST(ShapeIndexFormula, CategoriesOfTheScale) {
-  EXPECT_NEAR(shape_index(0.04f, 0.04f), 1.0f, 1e-6);     // spherical cap
-  EXPECT_NEAR(shape_index(-0.04f, -0.04f), 0.0f, 1e-6);   // spherical cup
-  EXPECT_NEAR(shape_index(0.05f, 0.0f), 0.75f, 1e-6);     // ridge
-  EXPECT_NEAR(shape_index(0.0f, -0.05f), 0.25f, 1e-6);    // rut
-  EXPECT_NEAR(shape_index(0.03f, -0.03f), 0.5f, 1e-6);    // symmetric saddle
+  EXPECT_NEAR(shape_index(0.04f, 0.04f), 1.0f, 1e-6);    // spherical cap
+  EXPECT_NEAR(shape_index(-0.04f, -0.04f), 0.0f, 1e-6);  // spherical cup
+  EXPECT_NEAR(shape_index(0.05f, 0.0f), 0.75f, 1e-6);    // ridge
+  EXPECT_NEAR(shape_index(0.0f, -0.05f), 0.25f, 1e-6);   // rut
+  EXPECT_NEAR(shape_index(0.03f, -0.03f), 0.5f, 1e-6);   // symmetric saddle
   // Against Eq. 3.2 evaluated with libm over the whole (k1 >= k2) plane.
   for (float k1 = -1.0f; k1 <= 1.0f; k1 += 0.01f)
     for (float k2 = -1.0f; k2 <= k1; k2 += 0.01f)
-      EXPECT_NEAR(shape_index(k1, k2), 0.5 + std::atan2(double{k1} + k2, double{k1} - k2) / std::numbers::pi, 2e-6);
+      EXPECT_NEAR(shape_index(k1, k2),
+                  0.5 + std::atan2(double{k1} + k2, double{k1} - k2) / std::numbers::pi, 2e-6);
   EXPECT_NEAR(curvedness(1.0f, 0.0f), 1.0 / std::sqrt(2.0), 1e-6);
   EXPECT_NEAR(curvedness(1.0f, -1.0f), 1.0, 1e-6);
   // Eqs. 3.21-3.22: the sensitivity grows without bound as the curvatures vanish.
@@ -112,7 +113,8 @@ TEST(ShapeIndex, NoisySphereSmoothingHelps) {
   const auto raw = analyze(surface, 0);
   std::vector<double> smoothed_values, raw_values;
   for_each_interior(surface, [&](std::size_t i, const AnalyticTruth&) {
-    if (smoothed.field.label[i] == SurfaceLabel::kCurved) smoothed_values.push_back(smoothed.field.shape_index[i]);
+    if (smoothed.field.label[i] == SurfaceLabel::kCurved)
+      smoothed_values.push_back(smoothed.field.shape_index[i]);
     if (raw.field.label[i] == SurfaceLabel::kCurved) raw_values.push_back(raw.field.shape_index[i]);
   });
   ASSERT_GT(smoothed_values.size(), 4000u);

@@ -13,7 +13,6 @@
 #include <memory>
 #include <sstream>
 
-#include "sim/evaluation/add_s_distance.hpp"
 #include "core/io/model_base_file.hpp"
 #include "core/recognition/recognizer.hpp"
 #include "realtime/cell/cell_runner.hpp"
@@ -24,9 +23,10 @@
 #include "realtime/lcm/pose_publisher.hpp"
 #include "realtime/lcm/profile_log_writer.hpp"
 #include "realtime/sources/replay_source.hpp"
-#include "sim/source/simulated_source.hpp"
+#include "sim/evaluation/add_s_distance.hpp"
 #include "sim/mesh.hpp"
 #include "sim/part_catalog.hpp"
+#include "sim/source/simulated_source.hpp"
 #include "tests/common/allocation_counter.hpp"
 #include "tests/regression_model_base.hpp"
 
