@@ -12,13 +12,18 @@ ViewAnalysis analyze_view(const RangeImage& image, const CosmosParameters& param
                     parameters.smoothing);
   analysis.field = classify_surface(analysis.frames, image.pixel_size_x_mm, image.pixel_size_y_mm,
                                     parameters.shape_index);
+  finish_view_analysis(analysis, parameters);
+  return analysis;
+}
+
+void finish_view_analysis(ViewAnalysis& analysis, const CosmosParameters& parameters) {
   analysis.segmentation = segment_csmps(analysis.frames, analysis.field, parameters.segmentation);
   analysis.view = build_cosmos_view(analysis.frames, analysis.field, analysis.segmentation);
   analysis.spectrum = compute_shape_spectrum(analysis.field, parameters.spectrum);
   analysis.moments = spectrum_moments(analysis.spectrum);
+  analysis.valid_pixels = 0;
   for (SurfaceLabel label : analysis.field.label.values())
     analysis.valid_pixels += label != SurfaceLabel::kInvalid ? 1 : 0;
-  return analysis;
 }
 
 }  // namespace cosmos

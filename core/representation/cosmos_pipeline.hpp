@@ -24,4 +24,10 @@ struct ViewAnalysis {
 
 ViewAnalysis analyze_view(const RangeImage& image, const CosmosParameters& parameters);
 
+// The stages after the per-pixel fields (Fig. 3.22 from CSMPs on): CSMP segmentation, the
+// COSMOS, the shape spectrum and its moments, and the valid-pixel count, from the analysis's
+// frames and field. Whole-image analysis and the real-time part builder both end here, so a
+// live part and a model view are finished by the same code.
+void finish_view_analysis(ViewAnalysis& analysis, const CosmosParameters& parameters);
+
 }  // namespace cosmos

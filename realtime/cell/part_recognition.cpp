@@ -5,9 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/representation/cosmos_view.hpp"
-#include "core/representation/shape_spectrum.hpp"
-#include "core/segmentation/csmp_segmentation.hpp"
+#include "core/representation/cosmos_pipeline.hpp"
 
 namespace cosmos {
 namespace {
@@ -78,13 +76,7 @@ PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& c
       field.same_side[to] = same_side;
     }
   }
-  ViewAnalysis& analysis = part.analysis;
-  analysis.segmentation = segment_csmps(frames, field, context.cosmos.segmentation);
-  analysis.view = build_cosmos_view(frames, field, analysis.segmentation);
-  analysis.spectrum = compute_shape_spectrum(field, context.cosmos.spectrum);
-  analysis.moments = spectrum_moments(analysis.spectrum);
-  for (SurfaceLabel label : field.label.values())
-    analysis.valid_pixels += label != SurfaceLabel::kInvalid ? 1 : 0;
+  finish_view_analysis(part.analysis, context.cosmos);
   return part;
 }
 

@@ -2,8 +2,8 @@
 // The recognizer worker's step for one completed part: the part's view cut out of its
 // builder (rows of the part, columns of its tracked extent plus a margin, pixels of other
 // parts masked out), the rest of the chapter-3 pipeline on the builder's finished fields
-// (CSMP segmentation, COSMOS, spectrum and moments — analyze_view's last stages on the same
-// fields, so the features equal whole-image processing of the part's rows), recognition
+// (finish_view_analysis, the very code that ends analyze_view, so the features equal
+// whole-image processing of the part's rows), recognition
 // (core/recognition/recognizer.hpp), and the pose turned from the loop frame into the cell frame:
 //   T_belt_part  = R_belt_loop T_loop_part        (R_belt_loop = Rz(180°), scan_loop.hpp)
 //   T_cell_part  = T_cell_scanner T_scanner_belt(e) T_belt_part

@@ -15,7 +15,6 @@ IncrementalCosmos::IncrementalCosmos(const CosmosParameters& parameters, int wid
       fitted_(width, max_rows),
       frames_(width, max_rows),
       field_(make_shape_index_field(width, max_rows)),
-      spectrum_(parameters.spectrum),
       smoothed_rows_(std::max(parameters.smoothing.iterations, 0), 0),
       smoothed_columns_(static_cast<std::size_t>(max_rows), {0, 0}) {
   for (int level = 1; level < parameters.smoothing.iterations; ++level)
@@ -29,7 +28,6 @@ void IncrementalCosmos::begin_part(double origin_x_mm, double origin_y_mm) {
   std::fill(smoothed_rows_.begin(), smoothed_rows_.end(), 0);
   finished_ = false;
   fitter_.reset();
-  spectrum_.clear();
 }
 
 bool IncrementalCosmos::add_row(const float* z_mm) {
@@ -148,7 +146,6 @@ bool IncrementalCosmos::classify_next() {
   if (row >= done) return false;
   classify_row(smoothing ? frames_ : fitted_, row, image_.pixel_size_x_mm, image_.pixel_size_y_mm,
                parameters_.shape_index, field_);
-  spectrum_.add_row(field_, row);
   ++classified_rows_;
   return true;
 }

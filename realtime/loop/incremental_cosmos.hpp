@@ -2,10 +2,11 @@
 // The chapter-3 pipeline of one part, advanced one row at a time as its profiles arrive: the
 // local surface fit of row r once rows up to r + h exist, its same-side links, then the 15
 // curvature-consistency iterations pipelined row by row (iteration k of row r needs
-// iteration k-1 of rows r-1..r+1 only, kept in three-row rings), shape index, curvedness,
-// planar label and the spectrum accumulation. The same row kernels as whole-image processing
-// (core/), applied in the same arithmetic order, so the result equals analyze_view() of the
-// part's rows bit for bit; segmentation and COSMOS run on the completed fields.
+// iteration k-1 of rows r-1..r+1 only, kept in three-row rings), shape index, curvedness and
+// planar label. The same row kernels as whole-image processing (core/), applied in the same
+// arithmetic order, so the fields equal analyze_view()'s of the part's rows bit for bit; the
+// recognizer worker ends the pipeline with finish_view_analysis() on the part's own pixels
+// (the spectrum is not accumulated here: a builder's rows also hold other parts' pixels).
 //
 // Every buffer is sized at construction from the maxima (width, rows): adding a row never
 // allocates.
@@ -14,7 +15,6 @@
 
 #include "core/cosmos_parameters.hpp"
 #include "core/range_image.hpp"
-#include "core/representation/shape_spectrum.hpp"
 #include "core/surface/curvature_consistency.hpp"
 #include "core/surface/darboux_frame_field.hpp"
 #include "core/surface/local_surface_fit.hpp"
@@ -38,7 +38,6 @@ class IncrementalCosmos {
   const RangeImage& image() const { return image_; }           // max_rows tall
   const DarbouxFrameField& frames() const { return frames_; }  // smoothed frames
   const ShapeIndexField& field() const { return field_; }
-  const ShapeSpectrumAccumulator& spectrum() const { return spectrum_; }
 
  private:
   // Rows below a pixel that its fit may read: a whole window, since a crease window is
@@ -64,7 +63,6 @@ class IncrementalCosmos {
   DarbouxFrameField frames_;  // the last level
   std::vector<std::vector<float>> rings_;  // levels 1 .. iterations-1: 3 rows x components
   ShapeIndexField field_;
-  ShapeSpectrumAccumulator spectrum_;
 
   int rows_ = 0;
   bool finished_ = false;

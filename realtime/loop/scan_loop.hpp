@@ -115,7 +115,6 @@ class ScanLoop {
   SpscRing<int> returned_;
   std::vector<float> row_belt_;  // conditioned, belt column order
   std::vector<float> row_loop_;  // mirrored into the loop frame
-  std::vector<float> row_part_;
   std::int64_t row_index_ = 0;
   ScanLoopCounters counters_;
 };

@@ -40,8 +40,12 @@ void expect_same_as_whole_image(IncrementalCosmos& builder, const RangeImage& pa
   for (int row = 0; row < part.height(); ++row) ASSERT_TRUE(builder.add_row(part.z_mm.row(row)));
   builder.finish();
   const ViewAnalysis whole = analyze_view(part, parameters);
-  const CsmpSegmentation segmentation =
-      segment_csmps(builder.frames(), builder.field(), parameters.segmentation);
+  // The builder's fields, finished by the same code as whole-image analysis.
+  ViewAnalysis incremental;
+  incremental.frames = builder.frames();
+  incremental.field = builder.field();
+  finish_view_analysis(incremental, parameters);
+  const CsmpSegmentation& segmentation = incremental.segmentation;
 
   double max_shape_index_difference = 0;
   int label_mismatches = 0, patch_mismatches = 0;
@@ -61,11 +65,13 @@ void expect_same_as_whole_image(IncrementalCosmos& builder, const RangeImage& pa
   EXPECT_LE(max_shape_index_difference, 1e-5);
   EXPECT_EQ(segmentation.patch_count, whole.segmentation.patch_count);
   EXPECT_EQ(patch_mismatches, 0);
-  const ShapeSpectrum spectrum = builder.spectrum().finish();
+  const ShapeSpectrum& spectrum = incremental.spectrum;
   ASSERT_EQ(spectrum.bins.size(), whole.spectrum.bins.size());
   for (std::size_t k = 0; k < spectrum.bins.size(); ++k)
     EXPECT_NEAR(spectrum.bins[k], whole.spectrum.bins[k], 1e-12);
   EXPECT_NEAR(spectrum.planar_fraction, whole.spectrum.planar_fraction, 1e-12);
+  EXPECT_EQ(incremental.valid_pixels, whole.valid_pixels);
+  EXPECT_EQ(incremental.view.patches.size(), whole.view.patches.size());
   EXPECT_GT(whole.segmentation.patch_count, 1);
 }
 

@@ -1,8 +1,8 @@
 // Absolute-deadline pacing: deadlines stay on the start + k * period grid, periods never start
 // early, overruns are counted (and the missed grid points skipped) when the work outlasts the
-// period, and the unpaced mode never sleeps. No assertion depends on how fast the machine is:
-// sleeps never end early, so forced overruns are certain, and the no-overrun case allows a few
-// for a loaded machine.
+// period, and the unpaced mode never sleeps. No assertion depends on how fast or how loaded
+// the machine is: sleeps never end early, so forced overruns are certain, and where overruns
+// may or may not happen (tiny work) only their bookkeeping is checked, never their number.
 #include "realtime/rt/deadline_pacer.hpp"
 
 #include <gtest/gtest.h>
@@ -21,9 +21,15 @@ TEST(DeadlinePacer, TinyWorkKeepsThePeriodOnTheGrid) {
   const std::int64_t start_ns = monotonic_now_ns();
   pacer.start(start_ns);
   std::int64_t previous_index = -1;
+  std::int64_t overrun_ticks = 0, skipped_on_overruns = 0;
   volatile std::int64_t work = 0;
   for (int k = 0; k < 50; ++k) {
     const PacerTick tick = pacer.wait_next();
+    overrun_ticks += tick.overrun ? 1 : 0;
+    skipped_on_overruns += tick.skipped_periods;
+    if (!tick.overrun) {
+      EXPECT_EQ(tick.skipped_periods, 0);
+    }
     EXPECT_GT(tick.period_index, previous_index);
     previous_index = tick.period_index;
     EXPECT_EQ(tick.deadline_ns, start_ns + tick.period_index * kMillisecondNs);
@@ -31,7 +37,9 @@ TEST(DeadlinePacer, TinyWorkKeepsThePeriodOnTheGrid) {
     EXPECT_EQ(tick.lateness_ns, tick.start_ns - tick.deadline_ns);
     for (int i = 0; i < 1000; ++i) work = work + i;
   }
-  EXPECT_LE(pacer.overruns(), 5);  // 0 on an idle machine
+  // However many overruns a loaded machine causes, each is counted once, with its skips.
+  EXPECT_EQ(pacer.overruns(), overrun_ticks);
+  EXPECT_EQ(pacer.skipped_periods(), skipped_on_overruns);
   EXPECT_EQ(previous_index, 49 + pacer.skipped_periods());
   EXPECT_EQ(pacer.lateness().count(), 50);
   EXPECT_GE(pacer.lateness().min_ns(), 0);
