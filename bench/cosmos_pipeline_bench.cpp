@@ -1,14 +1,18 @@
 // The chapter-3 pipeline, stage by stage, on a 640x480 range image of a free-form surface
-// (issue targets on one core: curvature + S_I <= 10 ms, 15 smoothing iterations <= 100 ms,
+// (the targets on one core: curvature + S_I <= 10 ms, 15 smoothing iterations <= 100 ms,
 // segmentation <= 10 ms). Run: build/bench/cosmos_pipeline_bench --benchmark_repetitions=5
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <map>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "core/representation/cosmos_pipeline.hpp"
+#include "core/segmentation/shape_seeds.hpp"
 #include "core/surface/curvature_consistency.hpp"
 #include "core/surface/local_surface_fit.hpp"
 
@@ -100,6 +104,9 @@ const Classified& classified() {
   return result;
 }
 
+// Counters: the patches found, and what the growing queue starts from (shape_seeds.hpp):
+// region_pixels, the seeds the raster pass leaves, the seed pairs it lists and how many of
+// them are different.
 void segment(benchmark::State& state, const Classified& c) {
   const CosmosParameters parameters;
   int patches = 0;
@@ -108,6 +115,16 @@ void segment(benchmark::State& state, const Classified& c) {
     patches = segmentation.patch_count;
   }
   state.counters["patches"] = patches;
+  const ShapeSeeds seeds = find_shape_seeds(c.frames, c.field, parameters.segmentation);
+  std::vector<std::pair<std::int32_t, std::int32_t>> different = seeds.adjacent;
+  std::sort(different.begin(), different.end());
+  different.erase(std::unique(different.begin(), different.end()), different.end());
+  state.counters["region_pixels"] = static_cast<double>(
+      std::count_if(c.field.label.values().begin(), c.field.label.values().end(),
+                    [](SurfaceLabel label) { return label != SurfaceLabel::kInvalid; }));
+  state.counters["seeds"] = seeds.seed_count();
+  state.counters["seed_pairs"] = static_cast<double>(seeds.adjacent.size());
+  state.counters["different_seed_pairs"] = static_cast<double>(different.size());
 }
 
 void BM_Segmentation(benchmark::State& state) { segment(state, classified()); }

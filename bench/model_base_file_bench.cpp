@@ -2,7 +2,7 @@
 // views (§4.5), sized like real model views (the 25-part catalog built with the defaults:
 // ~12 patches and on average 1,820 control points per view at the model surface's stride 3,
 // here uniform in 820..2,820), and the same with stride-2 sizes (~4,100 points per view).
-// Budget of the issue: load <= 2 s, <= 512 MB. Counters: file_MB, load_peak_MB (growth of the
+// The budget: load <= 2 s, <= 512 MB. Counters: file_MB, load_peak_MB (growth of the
 // peak resident set while reading) and resident_MB (what the loaded base keeps). Also the
 // on-demand unpacking of one view's registration points (the recognizer does it for the few
 // candidate views of §5.2).

@@ -6,7 +6,7 @@
 // scan (median_ms / min_ms / max_ms over the scans of each scan's median: one scan that falls
 // back to the pose search costs several times the others). Counters are in ms; the console
 // prints small ones with SI prefixes (1.5m ms = 1.5 us).
-// Run: build/bench/recognition_bench (under a minute on 2 cores, setup included).
+// Run: build/bench/recognition_bench (the set-up recognizes every scan once, stage by stage).
 #include <benchmark/benchmark.h>
 
 #include <vector>

@@ -1,4 +1,4 @@
-// Speed of the real-time cell (issue 5) on streams of the simulated source, regression catalog
+// Speed of the real-time cell on streams of the simulated source, regression catalog
 // (config/parts-regression.yaml), profiles across the default 256 mm field of view:
 //   ScanLoopProcess/points:W/smoothing:I
 //                     the acquisition thread's per-profile work, ScanLoop::process alone

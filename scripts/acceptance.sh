@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 4's acceptance run on the full catalog: a model base of the 20 parts of
+# The acceptance run on the full catalog: a model base of the 20 parts of
 # config/parts-acceptance.yaml (320 views each), then `cosmos eval` with 1,000 seeded scans
 # of them plus scans of the 5 catalog parts outside the base, which must be rejected.
 # Writes metrics.json and report.html under $COSMOS_ACCEPTANCE_DIR (default

@@ -34,8 +34,8 @@ struct PlacedPart {
 class ConveyorScene {
  public:
   // movable_parts: parts are placed as Embree instances, so move_part() is cheap (model
-  // views); otherwise their triangles are built into the scene at their pose, for rays a
-  // quarter faster (embree_scene.hpp).
+  // views); otherwise their triangles are built into the scene at their pose, for faster
+  // rays (embree_scene.hpp).
   explicit ConveyorScene(bool movable_parts = false);
   ~ConveyorScene();
   ConveyorScene(const ConveyorScene&) = delete;

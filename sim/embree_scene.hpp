@@ -2,8 +2,8 @@
 // RAII over Embree 3 for the simulated scanner: one device, one scene, and two ways to place a
 // mesh in it (T_world_mesh):
 //   kBaked      the mesh's vertices are transformed and its triangles built straight into the
-//               scene: the fastest rays (a quarter faster than through an instance), but
-//               moving it rebuilds the hierarchy (~30 ms for 75k triangles).
+//               scene: the fastest rays (no instance transform per ray), but moving it
+//               rebuilds the whole hierarchy.
 //   kInstanced  the mesh is built once, in its own frame, as a bottom-level scene, and placed
 //               by an Embree instance: moving it only recommits the top level, so a part turned
 //               through the 320 model-view poses is never rebuilt.

@@ -1,6 +1,8 @@
 #pragma once
-// The model-base file (DESIGN.md: "one versioned, checksummed, memory-loadable file"): a fixed
-// 32-byte header, then the FlatBuffers payload of core/io/model_base.fbs.
+// The model-base file: one versioned, checksummed file, read into memory once and used in
+// place without parsing, so that a cell loads its base quickly and tells a stale or damaged
+// base from a good one before using it: a fixed 32-byte header, then the FlatBuffers payload
+// of core/io/model_base.fbs.
 //
 //   offset  size  field (little-endian)
 //        0     8  magic "COSMOSMB"

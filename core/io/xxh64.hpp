@@ -1,8 +1,9 @@
 #pragma once
 // XXH64 (Yann Collet's xxHash, 64-bit variant), written out here because only Debian's
-// registry is reachable and the model-base file needs just this one function: a fast
-// (several GB/s) 64-bit checksum of the payload, so a 400 MB model base is verified in a
-// fraction of its load-time budget. Same results as the reference implementation
+// registry is reachable and the model-base file needs just this one function: a 64-bit
+// checksum of the payload that runs near memory speed, so verifying a base of hundreds of
+// megabytes costs a fraction of its load-time budget (bench/model_base_file_bench.cpp times
+// the whole load). Same results as the reference implementation
 // (XXH64("", 0) = 0xEF46DB3751D8E999).
 #include <cstddef>
 #include <cstdint>

@@ -36,9 +36,9 @@ class SpectralViewSelector {
   std::vector<int> rank_clusters(const MomentVector& moments) const;
   // Part indices, the part with the closest single view first (ties by part index). Closest
   // views pick out the part better than closest centroids: on the 20-part catalog at 320
-  // views the true part ranks in the first 5 for 95 % of 60 scans (of 1,000 scans, 80 % have
-  // a view cluster of the true part among the 5 closest centroids), although its closest
-  // view is rarely near the scene's viewing direction.
+  // views the true part ranks among the first few more often by its closest view than by a
+  // cluster among the closest centroids, although its closest view is rarely near the
+  // scene's viewing direction.
   std::vector<int> rank_parts(const MomentVector& moments) const;
   double distance(const MomentVector& a, const MomentVector& b) const;
 

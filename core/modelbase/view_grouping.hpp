@@ -8,19 +8,14 @@
 // The default level. The thesis cuts at 0.1 or less and gets 9-16 clusters per object, 11 on
 // average (Table 4.1). Our moments (shape index on [0, 1], spectra of simulated scans with
 // 0.02 mm noise) differ far less between the views of one part: the largest Eq. 4.3
-// dissimilarity among a part's 320 views is ~0.002-0.05, so a cut at 0.1 would leave one
-// cluster per part. Measured on the 25 catalog parts x 320 views (config/parts.yaml):
-//
-//   cut level                       2e-4  3e-4  5e-4  8e-4  1e-3
-//   clusters per part, mean           24    19    14    11    10
-//   median                            23    17    14    10    10
-//   parts with 9-16 clusters           9     8     6    14    13
-//
-// 8e-4 puts the most parts in the thesis' range with its mean. The views of the smooth
-// free-form parts (cow, dino, camel, ...) vary least and get 4-6 clusters; detailed or
-// mechanical parts (nefertiti, mannequin-devil, spool) up to 23. The counts move when the
-// chapter-3 pipeline changes; cluster_count = K (`cosmos modelbase build --clusters K`) gives
-// every part K clusters instead.
+// dissimilarity among a part's 320 views is a small fraction of 0.1, so a cut at 0.1 would
+// leave one cluster per part. The default is instead the level, among those tried on the 25
+// catalog parts x 320 views (config/parts.yaml), that puts the most parts in the thesis'
+// range of 9-16 clusters with a mean near its 11. The views of the smooth free-form parts
+// (cow, dino, camel, ...) vary least and get the fewest clusters; detailed or mechanical
+// parts (nefertiti, mannequin-devil, spool) the most. The counts move when the chapter-3
+// pipeline changes (`cosmos modelbase info FILE` lists each part's); cluster_count = K
+// (`cosmos modelbase build --clusters K`) gives every part K clusters instead.
 #include <vector>
 
 #include "core/modelbase/model_base.hpp"

@@ -301,7 +301,7 @@ void Recognizer::register_candidate(const ScenePoints& scene_points,
   if (!candidate.registered) return;
   candidate.view = best_view;
   // Most candidates of the pose search are wrong parts: the spread subset tells them apart at
-  // a fifth of the cost, and only the plausible ones are measured on every point.
+  // a fraction of the cost, and only the plausible ones are measured on every point.
   PartSupport support =
       measure_part_support(scene_points.coarse, model_base_, candidate.view, best.T_model_scene,
                            parameters_.registration, parameters_.support, surfaces);

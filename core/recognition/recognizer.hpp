@@ -49,7 +49,8 @@ struct RecognitionParameters {
   int in_plane_hypotheses = 12;      // turns about the viewing axis tried per candidate view
   // Verification's initial poses are ranked and aligned against the part's distance field
   // (part_pose_search.hpp), and at most this many distinct ones registered per selected view
-  // (1 lost a scan of the hardest 29 and gained nothing in the median).
+  // (a single one lost hard scans whose best-ranked start was not the true pose, and saved
+  // little time).
   FieldAlignedStartParameters field_starts;
   int registered_hypotheses = 2;
   FieldGate registration_gate;  // a start that fails it is not registered
@@ -58,8 +59,8 @@ struct RecognitionParameters {
   // all the points.
   int coarse_points = 300;
   // The coarse passes stop at convergence or after this many: from the starts the search
-  // and the hypotheses give, further passes on the subset moved no decision of the 1,000-scan
-  // acceptance run's hardest 27 scans and a 60-scan sample, and cost 10 % of the time.
+  // and the hypotheses give, further passes on the subset changed no decision on the
+  // acceptance run's hardest scans, and only cost time.
   int coarse_registration_iterations = 20;
   int fine_registration_iterations = 10;
   // Verification stops at the first selected view whose part support reaches this: the
@@ -70,11 +71,12 @@ struct RecognitionParameters {
   PartSupportParameters support;  // what counts as explained scene surface
   // When no selected view reaches sufficient_support: the pose search over every view of
   // up to `searched_parts` parts (SpectralViewSelector::rank_parts, closest single view
-  // first), until one reaches it. On the 1,000-scan acceptance run, searching all 20 parts
-  // instead of 8 identified 1.1 % more (0.972 against 0.961).
+  // first), until one reaches it. Searching every part of the acceptance base rather than
+  // the spectrally closest few identifies more of the acceptance run's scans
+  // (scripts/acceptance.sh reports the rate).
   int searched_parts = 20;
   // The spectral order is a poor guide for the scans that need the search (in the cell, the
-  // scene's part often ranked tenth), the search's field stages a sharp one: a part whose best
+  // scene's part often ranks far down), the search's field stages a sharp one: a part whose best
   // field pose fits this well (mean square distance of the scene to the part,
   // part_pose_search.hpp) is registered at once; the others after every part's field stages,
   // best fit first, and not at all when they fit worse than search.kept_score_factor x the

@@ -3,7 +3,8 @@
 // the model-base file stores and what a loaded base keeps in memory. 20 parts x 320 views
 // (§4.5) of RegistrationPoints in doubles would take several GB; the recognizer needs the
 // full form only for the few candidate views that survive spectral selection (§5.2), so the
-// base keeps this form and unpacks a view on demand (~10 microseconds).
+// base keeps this form and unpacks a view on demand (BM_UnpackOneView of
+// bench/model_base_file_bench.cpp times it).
 //
 // What is dropped is what the grid already implies: a point's x, y are its cell's centre and
 // its height is the fit's height coefficient; n_z of the unit normal (always towards the

@@ -2,10 +2,10 @@
 // The first merges of constrained region growing (§3.5.2), done in one raster pass: each pixel
 // joins the seeds of its already visited neighbours, the one giving the least joined S_I range
 // first, while a seed's range stays within seed_shape_index_quantum. The priority-queue growth
-// then continues from the seeds over their adjacency: on the 640x480 free-form bench view at
-// the cell's noise, 15 thousand seeds and 54 thousand listed pairs instead of 307 thousand
-// pixels and 1.2 million pairs. Growing from single pixels merged such near-equal pairs first
-// anyway, through the queue (the whole segmentation took 90 ms then, 18 ms now).
+// then continues from the seeds over their adjacency: a view has far fewer seeds than pixels
+// and seed pairs than pixel pairs (bench/cosmos_pipeline_bench.cpp reports both counts), so
+// the queue holds a fraction of the work. Growing from single pixels merged such near-equal
+// pairs first anyway, through the queue; the raster pass spares the queue that work.
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -24,8 +24,8 @@ struct ShapeSeeds {
   std::vector<double> shape_area;  // sum of S_I * area, for mean shape indices
   // Seed pairs joined by at least one growing edge, in raster order of their last such edge
   // (the growing queue pops the last filed edge of a bucket first). A pair repeats only when
-  // the table of recently listed pairs lost it, which on real views is rare (the bench view:
-  // 53.7 thousand listed, 49.1 thousand different).
+  // the table of recently listed pairs lost it, which on real views is rare (the segmentation
+  // bench reports the listed and the different pairs).
   std::vector<std::pair<std::int32_t, std::int32_t>> adjacent;
 
   int seed_count() const { return static_cast<int>(area_mm2.size()); }

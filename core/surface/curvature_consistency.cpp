@@ -209,8 +209,9 @@ namespace {
 // The planes one smoothing pass reads and writes (two frame buffers and the positions) in one
 // allocation, each offset by a few more cache lines than the last. Separately allocated planes
 // of a size that is a multiple of 4 KB all start at the same offset in a page, so the same
-// pixel of the 21 planes falls into one 8-way L1 set, and the pass evicts its own rows
-// (measured: 121 ms for 15 iterations at 640 x 480; 109-113 ms staggered by 1 to 13 lines).
+// pixel of the 21 planes falls into one 8-way L1 set, and the pass evicts its own rows;
+// staggered, the planes spread over the sets (BM_Smoothing15Iterations of
+// bench/cosmos_pipeline_bench.cpp times the pass).
 class StaggeredPlanes {
  public:
   static constexpr int kFramePlanes = 2 * kFrameComponents;

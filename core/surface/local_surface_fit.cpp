@@ -158,7 +158,7 @@ double LocalSurfaceFitter::residual_sum_of_squares(const WindowSamples& samples)
   double total = 0;
   for (int k = 0; k < n; ++k) total += samples[k] * samples[k];
   // Sample-major over the column-major basis: the inner loop runs down a contiguous column
-  // and vectorizes (basis-major strided through it, 4 times slower).
+  // and vectorizes (basis-major order strides through it, several times slower).
   double projection[kBicubicTerms] = {};
   const double* column = residual_basis_.data();
   for (int k = 0; k < n; ++k, column += basis_size_)

@@ -1,5 +1,6 @@
 #pragma once
-// The running cell: three threads around the ScanLoop (DESIGN.md "Real-time discipline").
+// The running cell: three threads around the ScanLoop, so that the acquisition thread, which
+// must keep the line rate, never waits on recognition or on the network.
 //   acquisition  (the calling thread, with the real-time settings applied): source.next() →
 //                ScanLoop::process, paced on absolute deadlines at the line rate or unpaced;
 //                records per-profile processing time (from the profile in hand to

@@ -41,7 +41,8 @@ struct PartView {
 };
 // Finishes the builder's COSMOS first: the pipeline's last rows (up to the smoothing depth)
 // are drained here, on the recognizer's thread, rather than in the acquisition thread's
-// profile that completed the part (2.3 ms of a 400 us period, measured).
+// profile that completed the part: draining them is the work of many rows at once, far more
+// than one line period allows.
 PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& context);
 
 struct PartRecognition {

@@ -59,7 +59,7 @@ struct LcmSettings {
 
 struct RealtimeQueueSettings {
   RealtimeSettings thread;        // the acquisition thread: SCHED_FIFO, cpu, mlockall
-  int profile_ring_slots = 4096;  // source -> loop profiles (1.6 s at 2,500 profiles/s)
+  int profile_ring_slots = 4096;  // loop -> publisher recorded profiles (1.6 s at 2,500/s)
   int part_builders = 8;          // parts in flight (ScanLoopSettings::builders)
   int part_queue_slots = 8;       // loop -> recognizer completed parts
   int pose_queue_slots = 32;      // recognizer -> publisher poses

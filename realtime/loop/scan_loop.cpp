@@ -120,7 +120,8 @@ void ScanLoop::start_parts(std::int64_t profile_index, const Profile& profile) {
     builder.cosmos.begin_part(x0_loop_mm(),
                               static_cast<double>(profile_index) * settings_.conditioning.grid_mm);
     // No clearing of labels: every row the part gets is written whole (process), and only
-    // those are read; a 3.8 MB fill here was the loop's slowest profile.
+    // those are read; filling the whole width x max_rows buffer here would make a part's
+    // first profile the loop's slowest.
     builder.part_id = part.id;
     builder.merged_count = 0;
     builder.first_profile = profile_index;

@@ -1,7 +1,8 @@
 #pragma once
-// The acquisition thread's per-profile work (DESIGN.md "Real-time discipline"): condition the
-// profile onto the COSMOS grid, track the parts on the belt, and advance the incremental
-// COSMOS (thesis ch. 3, Fig. 3.22) of every open part by one row. When the tracker completes
+// The acquisition thread's per-profile work, bounded and non-blocking so that every profile
+// is done before the next one is exposed: condition the profile onto the COSMOS grid, track
+// the parts on the belt, and advance the incremental COSMOS (thesis ch. 3, Fig. 3.22) of
+// every open part by one row. When the tracker completes
 // a part, its builder is finished and handed to the recognizer through a bounded
 // single-producer/single-consumer ring; the recognizer gives builders back through another.
 // Nothing here blocks, allocates or throws once constructed.
@@ -60,8 +61,9 @@ struct ScanLoopSettings {
   CosmosParameters cosmos;
   int max_part_rows = 750;  // 300 mm at 0.4 mm
   // Parts in flight (open, queued and being recognized). A part that starts while every
-  // builder is taken is dropped: at the default cell's 126 ms between parts, four left 7 % of
-  // the parts of a 200-part run behind the slowest recognitions (p99 0.5 s); eight none.
+  // builder is taken is dropped, so there must be enough for the parts that arrive during
+  // the slowest recognitions, not just the typical ones (PacedReplayLatency in
+  // bench/scan_loop_bench.cpp counts parts_dropped at the default cell's pace).
   int builders = 8;
   int part_queue_slots = 8;
   // false (paced and hardware sources): a part that finds no free builder or queue slot is

@@ -10,8 +10,8 @@
 // skipped_periods) and the next deadline is the first one of the original grid after now.
 // Skipping keeps the phase (deadlines stay on the grid) and never bursts to catch up, which
 // would feed an overload with more work; a source that must account for every period (e.g. an
-// encoder position) reads PacerTick::skipped_periods. This is DESIGN.md's "drop and count,
-// never stall".
+// encoder position) reads PacerTick::skipped_periods. An overloaded cell drops and counts
+// work rather than stall: a late profile is worth less than the next one on time.
 //
 // Lateness (start time minus deadline) of every paced period, overruns included, goes into a
 // LatencyHistogram: the jitter of the loop's start times. Period 0 is the unpaced mode for

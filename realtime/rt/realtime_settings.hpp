@@ -1,8 +1,9 @@
 #pragma once
-// Best-effort real-time setup of the calling thread (DESIGN.md, "Real-time discipline"):
-// SCHED_FIFO priority, CPU affinity and locked memory when the process is permitted. A
-// development machine or an unprivileged container usually is not; then each setting that
-// could not be applied becomes a one-line warning and the cell runs without it.
+// Best-effort real-time setup of the calling thread, so that other processes and page faults
+// cannot delay a profile: SCHED_FIFO priority, CPU affinity and locked memory when the
+// process is permitted. A development machine or an unprivileged container usually is not;
+// then each setting that could not be applied becomes a one-line warning and the cell runs
+// without it.
 #include <string>
 #include <vector>
 

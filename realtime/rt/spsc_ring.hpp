@@ -1,10 +1,10 @@
 #pragma once
 // A single-producer/single-consumer lock-free ring of fixed capacity: the one way the
-// real-time loop hands work to other threads without blocking (DESIGN.md, "Real-time
-// discipline"). Every slot is constructed once, up front; the producer writes a slot in place
-// (try_begin_push, fill, commit_push) and the consumer reads it in place (try_front, use,
-// pop), so passing a Profile never copies or allocates as long as the owner reserved each
-// slot's buffers beforehand (the init callback or for_each_slot).
+// real-time loop hands work to other threads without blocking, locking or allocating. Every
+// slot is constructed once, up front; the producer writes a slot in place (try_begin_push,
+// fill, commit_push) and the consumer reads it in place (try_front, use, pop), so passing a
+// Profile never copies or allocates as long as the owner reserved each slot's buffers
+// beforehand (the init callback or for_each_slot).
 //
 // Exactly one thread may call the producer functions and exactly one the consumer functions;
 // construction and for_each_slot happen before either starts. Any capacity >= 1 works: each

@@ -20,14 +20,14 @@
 namespace cosmos {
 
 // The model surface's control points (ch. 6): every 3rd pixel of the 0.4 mm scans, i.e.
-// 1.2 mm apart, each with its own quadric over a 5 x 5 (1.6 mm) window. Measured on views of
-// cow, fandisk, mannequin-devil and pinion, the RMS distance from the noise-free surface to
-// the blended model surface is 0.0055-0.0074 mm at stride 2, 0.0059-0.0080 mm at stride 3,
-// 0.0076-0.0151 mm at stride 4 (all below the 0.02 mm sensor noise, but stride 4 doubles it
-// on the curved parts and loses more surface near holes and borders). Memory decides between
-// 2 and 3: over the 25 catalog parts a view has 1,820 control points on average at stride 3
-// (44 KB packed, ~280 MB for 20 parts x 320 views) and ~4,100 at stride 2 (~630 MB, over
-// the 512 MB a loaded base may take).
+// 1.2 mm apart, each with its own quadric over a 5 x 5 (1.6 mm) window. The blended model
+// surface stays well below the 0.02 mm sensor noise from the noise-free surface at strides 2
+// and 3, and hardly closer at 2; at stride 4 its error grows markedly on the curved parts
+// and it loses more surface near holes and borders. Memory decides between 2 and 3: stride 2
+// has about twice the points of stride 3, which would take a full base of 20 parts x 320
+// views over the 512 MB a loaded base may take (BM_LoadModelBase of
+// bench/model_base_file_bench.cpp reports the file and resident sizes at both strides'
+// point counts).
 RegistrationPointParameters model_surface_registration_parameters();
 
 struct ModelBaseBuildSettings {

@@ -1,6 +1,7 @@
-// The acquisition-thread calls of the hardware adapters allocate nothing once started
-// (DESIGN.md, "Real-time discipline"): camera frame dequeue/requeue, including timeouts,
-// drops and corrupted frames, and the GPIO edge decoding chain.
+// The acquisition-thread calls of the hardware adapters allocate nothing once started (the
+// real-time discipline: no allocation per profile, so no page fault or allocator lock can
+// delay a line): camera frame dequeue/requeue, including timeouts, drops and corrupted
+// frames, and the GPIO edge decoding chain.
 #include <gtest/gtest.h>
 
 #include <cstdint>

@@ -1,5 +1,5 @@
 // Shape index and curvedness on analytic surfaces at 0.5 mm pixels, noise-free unless a test
-// names its noise (issue: core).
+// names its noise.
 #include <gtest/gtest.h>
 
 #include <cmath>

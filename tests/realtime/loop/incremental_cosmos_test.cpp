@@ -1,5 +1,5 @@
-// Row-by-row COSMOS of a part equals whole-image processing of the same rows (issue:
-// real-time cell, "one code path, tested").
+// Row-by-row COSMOS of a part equals whole-image processing of the same rows: the real-time
+// cell and the model base run one code path, so the live features match the model views'.
 #include "realtime/loop/incremental_cosmos.hpp"
 
 #include <gtest/gtest.h>
