@@ -13,7 +13,7 @@ enum class CellState : std::int8_t { kIdle = 0, kScanning = 1, kFault = 2 };
 const char* to_string(CellState state);
 
 struct CellStatus {
-  std::int64_t utime_us = 0;  // publish time, microseconds since the Unix epoch
+  std::int64_t utime_us = 0;  // utime_us of the last published pose (source clock)
   CellState state = CellState::kIdle;
   std::string state_text;  // one line for people: the fault's reason, or what the cell does
 

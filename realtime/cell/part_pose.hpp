@@ -16,7 +16,7 @@ enum class PoseStatus : std::int8_t { kOk = 0, kRejected = 1, kError = 2 };
 const char* to_string(PoseStatus status);
 
 struct PartPose {
-  std::int64_t utime_us = 0;       // publish time, microseconds since the Unix epoch
+  std::int64_t utime_us = 0;       // the part's last profile's t_us (source clock)
   std::int64_t part_seq = 0;       // running number of parts seen by the cell
   std::int64_t encoder_ticks = 0;  // encoder count at which T_cell_part holds (conveyor tracking)
   std::string part_name;           // catalog name, empty when rejected
@@ -31,7 +31,7 @@ struct PartPose {
 
   double score = 0.0;                // match score in [0, 1]
   double registration_rms_mm = 0.0;  // RMS residual of the final registration
-  double latency_ms = 0.0;           // part's last profile exposed -> pose published
+  double latency_ms = 0.0;           // tracker closed the part -> pose published
 };
 
 }  // namespace cosmos
