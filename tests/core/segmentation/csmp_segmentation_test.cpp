@@ -56,31 +56,6 @@ TEST(CsmpSegmentation, AdaptiveLimitCapsThePatchCount) {
   EXPECT_GT(adaptive.shape_diameter_limit, 0.05);
 }
 
-TEST(CsmpSegmentation, TinyPatchesFoldIntoTheMostSimilarNeighbour) {
-  const auto field = row_field({0.2f, 0.2f, 0.2f, 0.2f, 0.6f, 0.9f, 0.9f, 0.9f, 0.9f, 0.9f});
-  SegmentationParameters parameters;
-  parameters.shape_diameter_limit = 0.1;
-  parameters.max_patches = 0;
-  parameters.min_patch_area_fraction = 0.15;  // the single 0.6 pixel is 10 % of the area
-  const auto segmentation = segment_csmps(DarbouxFrameField(field.width(), 1), field, parameters);
-  EXPECT_EQ(segmentation.patch_count, 2);
-  EXPECT_EQ(segmentation.patch_of_pixel[4], segmentation.patch_of_pixel[5]);  // 0.6 is nearer 0.9
-}
-
-TEST(CsmpSegmentation, TinyIslandsFoldAmongThemselvesUntilSignificant) {
-  // Three pairs, each a third of the area, none of the half that makes a patch significant:
-  // the first (smallest index on equal area) folds into its only neighbour, which makes that
-  // cluster significant, and the last pair then folds into it.
-  const auto field = row_field({0.10f, 0.12f, 0.50f, 0.52f, 0.90f, 0.92f});
-  SegmentationParameters parameters;
-  parameters.shape_diameter_limit = 0.05;
-  parameters.max_patches = 0;
-  parameters.min_patch_area_fraction = 0.5;
-  const auto segmentation = segment_csmps(DarbouxFrameField(field.width(), 1), field, parameters);
-  EXPECT_EQ(segmentation.patch_count, 1);
-  for (int i = 0; i < field.width(); ++i) EXPECT_EQ(segmentation.patch_of_pixel[i], 0);
-}
-
 TEST(CsmpSegmentation, CapsuleGivesTwoCapsAndARidge) {
   const auto surface = analytic(AnalyticShape::capsule);
   const auto analysis = analyze(surface);

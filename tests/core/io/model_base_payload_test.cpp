@@ -1,0 +1,174 @@
+// The model base's FlatBuffers payload (core/io/model_base_payload.hpp), without the file
+// around it: deterministic bytes within the size estimate, registration arrays decoded in
+// place, and each invariant the decoder checks named in its refusal.
+#include "core/io/model_base_payload.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "tests/core/hand_made_view.hpp"
+
+namespace cosmos {
+namespace {
+
+// A tilted quadric patch with seeded noise: some dozens of registration points.
+RegistrationPoints registration_points(double tilt) {
+  RangeImage image(24, 20, 0.4, 0.4);
+  std::mt19937 generator(5);
+  std::normal_distribution<float> noise(0.0f, 0.02f);
+  for (int row = 0; row < image.height(); ++row)
+    for (int column = 0; column < image.width(); ++column) {
+      const double x = image.x_mm(column), y = image.y_mm(row);
+      image.z_mm(column, row) =
+          static_cast<float>(30 + tilt * x + 0.01 * x * x + 0.004 * y * y) + noise(generator);
+    }
+  RegistrationPointParameters parameters;
+  parameters.stride_px = 2;
+  return build_registration_points(image, parameters).points;
+}
+
+// Parts "cow" (views 0, 1) and "spool" (view 2), a cluster per part.
+ModelBase small_base() {
+  ModelBase base;
+  base.catalog_hash = "feedc0ffee";
+  base.parameters_text = "{\"cosmos\":{\"fit\":{\"window_size\":5}}}";
+  base.parts = {{"cow", "cow.off", 120, 131.5, false}, {"spool", "spool.off", 70, 74.25, true}};
+  for (int k = 0; k < 3; ++k) {
+    ModelBaseView view;
+    view.part_index = k < 2 ? 0 : 1;
+    view.view_index = 4 * k + 3;
+    view.direction_part = Eigen::Vector3d(0.2 * k, 0.1, 1.0).normalized();
+    view.T_scanner_part.rotation = rotation_from_xyz_angles_deg(5.0 * k, 10.0, -20.0);
+    view.T_scanner_part.translation_mm = {k * 1.5, 2.0, 40.0};
+    view.cosmos = testing::hand_made_view_analysis().view;
+    for (std::size_t m = 0; m < view.moments.size(); ++m) view.moments[m] = 0.1 * k + 1e-3 * m;
+    view.registration = registration_points(0.1 * k);
+    base.views.push_back(std::move(view));
+  }
+  base.clusters = {{0, {0, 1}, {}}, {1, {2}, {}}};
+  base.clusters[0].centroid.fill(0.125);
+  base.clusters[1].centroid.fill(0.5);
+  return base;
+}
+
+std::vector<std::uint8_t> encode(const ModelBase& base) {
+  flatbuffers::FlatBufferBuilder builder(estimated_payload_bytes(base));
+  encode_model_base(base, builder);
+  return {builder.GetBufferPointer(), builder.GetBufferPointer() + builder.GetSize()};
+}
+
+// Decodes a copy in a block aligned like the file reader's (operator new: 16 bytes).
+struct Decoded {
+  std::shared_ptr<std::uint8_t[]> payload;
+  std::size_t bytes = 0;
+  ModelBase base;
+  std::optional<std::string> refusal;
+};
+Decoded decode(const std::vector<std::uint8_t>& bytes) {
+  Decoded out;
+  out.bytes = bytes.size();
+  out.payload =
+      std::shared_ptr<std::uint8_t[]>(new std::uint8_t[std::max<std::size_t>(1, bytes.size())]);
+  std::memcpy(out.payload.get(), bytes.data(), bytes.size());
+  out.refusal = decode_model_base(out.payload.get(), out.bytes, out.payload, out.base);
+  return out;
+}
+
+TEST(ModelBasePayload, EncodingIsDeterministicAndWithinTheEstimate) {
+  const ModelBase base = small_base();
+  const std::vector<std::uint8_t> bytes = encode(base);
+  EXPECT_EQ(encode(base), bytes);
+  EXPECT_EQ(std::string(reinterpret_cast<const char*>(bytes.data()) + 4, 4), "CSMB");
+  EXPECT_GE(estimated_payload_bytes(base), bytes.size());
+  // A decoded base holds the packed form only: its estimate still bounds its bytes.
+  const Decoded decoded = decode(bytes);
+  ASSERT_FALSE(decoded.refusal) << *decoded.refusal;
+  EXPECT_GE(estimated_payload_bytes(decoded.base), encode(decoded.base).size());
+}
+
+TEST(ModelBasePayload, DecodesWhatWasEncoded) {
+  const ModelBase base = small_base();
+  const Decoded decoded = decode(encode(base));
+  ASSERT_FALSE(decoded.refusal) << *decoded.refusal;
+  const ModelBase& read = decoded.base;
+  EXPECT_EQ(read.catalog_hash, base.catalog_hash);
+  EXPECT_EQ(read.parameters_text, base.parameters_text);
+  ASSERT_EQ(read.parts.size(), 2u);
+  EXPECT_EQ(read.parts[1].name, "spool");
+  EXPECT_EQ(read.parts[1].diameter_mm, 74.25);
+  EXPECT_TRUE(read.parts[1].symmetric);
+  ASSERT_EQ(read.views.size(), 3u);
+  const ModelBaseView &view = read.views[2], &written = base.views[2];
+  EXPECT_EQ(view.part_index, 1);
+  EXPECT_EQ(view.view_index, 11);
+  EXPECT_EQ(view.direction_part, written.direction_part);
+  EXPECT_EQ(view.T_scanner_part.rotation, written.T_scanner_part.rotation);
+  EXPECT_EQ(view.T_scanner_part.translation_mm, written.T_scanner_part.translation_mm);
+  EXPECT_EQ(view.moments, written.moments);
+  ASSERT_EQ(view.cosmos.patches.size(), 4u);
+  EXPECT_EQ(view.cosmos.patches[1].mean_normal, written.cosmos.patches[1].mean_normal);
+  ASSERT_EQ(view.cosmos.patches[1].neighbors.size(), 3u);
+  EXPECT_EQ(view.cosmos.patches[1].neighbors[2].patch, 3);
+  EXPECT_EQ(view.cosmos.gauss_map.size(), written.cosmos.gauss_map.size());
+  EXPECT_EQ(view.registration_packed.size(), written.registration.size());
+  ASSERT_EQ(read.clusters.size(), 2u);
+  EXPECT_EQ(read.clusters[0].views, (std::vector<int>{0, 1}));
+  EXPECT_EQ(read.clusters[1].centroid, base.clusters[1].centroid);
+}
+
+TEST(ModelBasePayload, RegistrationArraysAreReadInPlace) {
+  const Decoded decoded = decode(encode(small_base()));
+  ASSERT_FALSE(decoded.refusal) << *decoded.refusal;
+  const auto inside = [&](const void* p) {
+    const auto* byte = static_cast<const std::uint8_t*>(p);
+    return byte >= decoded.payload.get() && byte < decoded.payload.get() + decoded.bytes;
+  };
+  for (const ModelBaseView& view : decoded.base.views) {
+    const PackedRegistrationPoints& packed = view.registration_packed;
+    ASSERT_GT(packed.size(), 20);
+    EXPECT_TRUE(inside(packed.plane.data()));
+    EXPECT_TRUE(inside(packed.curvature.data()));
+    EXPECT_TRUE(inside(packed.normal_xy.data()));
+    EXPECT_TRUE(inside(packed.residual.data()));
+    EXPECT_TRUE(inside(packed.occupied_cells.data()));
+    EXPECT_EQ(packed.storage.get(), decoded.payload.get());  // keeps the payload alive
+    EXPECT_EQ(view.registration.size(), 0);                  // only the packed form
+  }
+}
+
+// The refusal of a base encoded after `damage`.
+std::string refusal_after(void (*damage)(ModelBase&)) {
+  ModelBase base = small_base();
+  damage(base);
+  const Decoded decoded = decode(encode(base));
+  return decoded.refusal.value_or("accepted");
+}
+
+TEST(ModelBasePayload, IndicesOutOfTheirRangeAreRefusedNamingWhere) {
+  EXPECT_EQ(refusal_after([](ModelBase& b) { b.views[1].part_index = 2; }),
+            "view 1: part index 2 out of range");
+  EXPECT_EQ(refusal_after([](ModelBase& b) { b.clusters[1].part_index = -1; }),
+            "cluster 1: part index -1 out of range");
+  EXPECT_EQ(refusal_after([](ModelBase& b) {
+              b.clusters[0].views = {0, 3};
+            }),
+            "cluster 0: view 3 out of range");
+  EXPECT_EQ(refusal_after([](ModelBase& b) {
+              b.clusters[1].views = {2, 0};
+            }),
+            "cluster 1: view 0 belongs to another part");
+}
+
+TEST(ModelBasePayload, BytesThatAreNotAPayloadAreRefused) {
+  EXPECT_EQ(decode(std::vector<std::uint8_t>(64, 0)).refusal, "no CSMB payload identifier");
+  std::vector<std::uint8_t> truncated = encode(small_base());
+  truncated.resize(truncated.size() / 2);  // the identifier survives, the tables do not
+  EXPECT_EQ(decode(truncated).refusal, "FlatBuffers verifier rejects the payload");
+}
+
+}  // namespace
+}  // namespace cosmos
