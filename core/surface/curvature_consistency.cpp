@@ -162,17 +162,22 @@ void smooth_columns(const SmoothingRowInput& in, const NeighborRows (&neighbors)
 void smooth_frame_row(const SmoothingRowInput& in, float* const* out_frame,
                       const SmoothingParameters& parameters) {
   const RobustScales scales = robust_scales(parameters);
-  // At the two end columns a neighbour outside the row is read at the pixel itself (its
-  // same-side bit is 0, so it gets no weight); inside, neighbour k of column c is at c + dc.
-  NeighborRows shifted[8], clamped[8];
+  // Neighbour k of column c is at c + dc. At an end column a neighbour that would lie
+  // outside the row is read at the pixel itself instead (its same-side bit is 0, so it gets
+  // no weight); the neighbours inside the row are read where they are, as for inner columns.
+  NeighborRows shifted[8], first_column[8], last_column[8], only_column[8];
   for (int k = 0; k < 8; ++k) {
     const int r = kNeighborOffsets[k].row + 1, dc = kNeighborOffsets[k].column;
+    NeighborRows in_place;
     for (int m = 0; m < kFrameComponents; ++m) {
       shifted[k].frame[m] = in.frame[r][m] + dc;
-      clamped[k].frame[m] = in.frame[r][m];
+      in_place.frame[m] = in.frame[r][m];
     }
     shifted[k].z_mm = in.z_mm[r] + dc;
-    clamped[k].z_mm = in.z_mm[r];
+    in_place.z_mm = in.z_mm[r];
+    first_column[k] = dc < 0 ? in_place : shifted[k];
+    last_column[k] = dc > 0 ? in_place : shifted[k];
+    only_column[k] = dc != 0 ? in_place : shifted[k];
   }
   const auto directions = std::make_integer_sequence<int, 8>{};
   const int begin = std::clamp(in.column_begin, 0, in.width);
@@ -185,16 +190,16 @@ void smooth_frame_row(const SmoothingRowInput& in, float* const* out_frame,
     }
   }
   if (begin >= end) return;
-  if (in.width <= 2) {
-    smooth_columns(in, clamped, out_frame, begin, end, scales, directions);
+  if (in.width == 1) {
+    smooth_columns(in, only_column, out_frame, 0, 1, scales, directions);
     return;
   }
-  if (begin == 0) smooth_columns(in, clamped, out_frame, 0, 1, scales, directions);
+  if (begin == 0) smooth_columns(in, first_column, out_frame, 0, 1, scales, directions);
   const int inner_begin = std::max(begin, 1), inner_end = std::min(end, in.width - 1);
   if (inner_begin < inner_end)
     smooth_columns(in, shifted, out_frame, inner_begin, inner_end, scales, directions);
   if (end == in.width)
-    smooth_columns(in, clamped, out_frame, in.width - 1, in.width, scales, directions);
+    smooth_columns(in, last_column, out_frame, in.width - 1, in.width, scales, directions);
 }
 
 std::array<int, 2> valid_column_extent(const std::uint8_t* valid, int width) {
