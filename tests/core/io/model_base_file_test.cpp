@@ -179,18 +179,6 @@ void expect_same_registration(const RegistrationPoints& read, const Registration
   }
 }
 
-TEST(PackedRegistrationPoints, UnpacksToTheSamePointsUpToFloatRounding) {
-  RegistrationPointParameters parameters;
-  parameters.stride_px = 3;
-  const RegistrationPoints points = build_registration_points(relief(0.1), parameters).points;
-  ASSERT_GT(points.size(), 50);
-  const PackedRegistrationPoints packed = pack_registration_points(points);
-  EXPECT_TRUE(packed_registration_points_consistent(packed));
-  EXPECT_EQ(packed.plane.size(), static_cast<std::size_t>(points.size()) * 3);
-  EXPECT_EQ(packed.curvature.size(), static_cast<std::size_t>(points.size()) * 3);
-  expect_same_registration(unpack_registration_points(packed), points);
-}
-
 TEST_F(ModelBaseFile, RoundTripKeepsEveryField) {
   const ModelBase written = hand_made_base();
   write_model_base(written, path_);
