@@ -39,8 +39,6 @@ class LaserTriangulator {
   void triangulate(const StripePeaks& peaks, TriangulatedStripe& stripe) const noexcept;
 
   const TriangulationGeometry& geometry() const { return geometry_; }
-  int first_row_px() const { return first_row_px_; }
-  int row_count() const { return row_count_; }
 
  private:
   // Undistorted normalized camera coordinates (x/z, y/z) of a pixel's ray.

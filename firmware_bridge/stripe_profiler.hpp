@@ -36,7 +36,6 @@ class StripeProfiler {
 
   // The last frame's stripe peaks and triangulated points (diagnostics, frame dumps).
   const StripePeaks& peaks() const noexcept { return peaks_; }
-  const TriangulatedStripe& stripe() const noexcept { return stripe_; }
 
  private:
   LaserStripeExtractor extractor_;

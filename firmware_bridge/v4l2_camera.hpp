@@ -54,9 +54,7 @@ class V4l2Camera final : public Camera {
   std::string_view last_error() const noexcept override { return error_.view(); }
 
   State state() const noexcept { return state_; }
-  const CameraConfig& config() const noexcept { return config_; }
   int buffer_count() const noexcept { return buffer_count_; }
-  int queued_buffers() const noexcept { return queued_; }
   // The exposure the driver was given, after rounding to its 100 µs unit.
   int applied_exposure_us() const noexcept { return applied_exposure_us_; }
 

@@ -41,7 +41,6 @@ class CameraFrameRenderer {
   // (threshold, minimum peak for min_reflected_intensity, window, saturation level).
   FrameRoi roi() const { return {geometry_.roi_row_offset_px, 0}; }
   StripeExtractionParameters extraction_parameters() const;
-  int full_scale() const { return full_scale_; }
 
  private:
   void draw_column(int column, double row_px, double intensity, cv::Mat& frame);

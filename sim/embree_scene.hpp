@@ -44,7 +44,6 @@ class EmbreeScene {
   void commit();
 
   RTCScene handle() const { return top_; }
-  int instance_count() const { return static_cast<int>(instances_.size()); }
   const Eigen::Isometry3d& instance_transform(int instance) const;
   // World bounding box of the instance's transformed vertices (tight, not a box of a box).
   const Eigen::AlignedBox3d& instance_bounds(int instance) const;

@@ -70,7 +70,6 @@ class LaserLineScanner {
   // (laser_y_belt_mm(parameters, k) for profile k).
   void trace(double laser_y_belt_mm, LaserLine& line);
 
-  int samples() const { return samples_; }
   const ScannerParameters& parameters() const { return parameters_; }
   const TriangulationGeometry& geometry() const { return geometry_; }
 

@@ -15,10 +15,7 @@ struct LcmPublisher::Messages {
 };
 
 LcmPublisher::LcmPublisher(const std::string& url, const LcmChannelNames& channels)
-    : url_(url),
-      channels_(channels),
-      lcm_(open_lcm(url)),
-      messages_(std::make_unique<Messages>()) {}
+    : channels_(channels), lcm_(open_lcm(url)), messages_(std::make_unique<Messages>()) {}
 
 LcmPublisher::~LcmPublisher() = default;
 

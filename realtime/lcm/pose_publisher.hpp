@@ -45,7 +45,6 @@ class LcmPublisher final : public Publisher {
   bool publish(const CellStatus& status) override;
   bool publish(const Profile& profile) override;
 
-  const std::string& url() const { return url_; }
   // The instance it publishes on, for subscribers in the same process (memq:// delivers
   // only to subscribers of the publishing instance).
   lcm::LCM& lcm() { return *lcm_; }
@@ -58,7 +57,6 @@ class LcmPublisher final : public Publisher {
   template <class Message>
   bool send(const std::string& channel, const Message& message);
 
-  std::string url_;
   LcmChannelNames channels_;
   std::unique_ptr<lcm::LCM> lcm_;
   std::unique_ptr<Messages> messages_;

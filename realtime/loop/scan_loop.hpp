@@ -95,7 +95,6 @@ class ScanLoop {
   SpscRing<int>& returned() { return returned_; }
   PartBuilder& builder(int index) { return *builders_[static_cast<std::size_t>(index)]; }
   const ScanLoopCounters& counters() const { return counters_; }
-  const ScanLoopSettings& settings() const { return settings_; }
   int width() const { return conditioner_.width(); }
   // The loop frame's x of column 0: x_L = x0 + column · grid (mirrored belt x).
   double x0_loop_mm() const;
