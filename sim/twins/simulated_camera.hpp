@@ -15,9 +15,10 @@
 //
 // Sequence and time: frame indices 0, 1, 2, … (nothing is dropped), t_us the frame's
 // exposure time on the shared SimulatedBeltClock (t_is_start_of_exposure), which the camera
-// moves to each frame it hands out. After the conveyor's last profile next_frame() says
-// kEndOfStream. A restarted camera goes on down the belt where it stopped (frame indices
-// continue, as the interface asks); rewind() puts the belt back at frame 0.
+// moves to each frame it hands out. A frame is always ready at once, so next_frame()'s
+// timeout never expires; after the conveyor's last profile it says kEndOfStream. A
+// restarted camera goes on down the belt where it stopped (frame indices continue, as the
+// interface asks); rewind() puts the belt back at frame 0.
 //
 // Lifecycle as V4l2Camera: start (closed → streaming; builds the scanner, the renderer and
 // buffer_count frame buffers) → next_frame / release_frame → stop (any state → closed).
