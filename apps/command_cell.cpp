@@ -10,15 +10,12 @@
 #include <vector>
 
 #include "apps/cell_model_base.hpp"
+#include "apps/cell_source.hpp"
 #include "apps/command_registry.hpp"
 #include "core/input_error.hpp"
 #include "core/recognition/recognizer.hpp"
 #include "realtime/cell/cell_runner.hpp"
 #include "realtime/config/cell_config.hpp"
-#include "realtime/config/hardware_config.hpp"
-#include "realtime/sources/hardware_source.hpp"
-#include "realtime/sources/replay_source.hpp"
-#include "sim/source/simulated_source.hpp"
 
 namespace cosmos::cli {
 namespace {
@@ -35,27 +32,8 @@ struct CellOptions {
 
 std::unique_ptr<ScannerSource> make_source(const CellOptions& options, const CellConfig& config,
                                            const PartCatalog& catalog) {
-  if (!options.replay.empty()) {
-    ReplaySourceSettings settings;
-    settings.max_profile_width = static_cast<std::size_t>(config.scanner.points_per_profile);
-    settings.mm_per_profile = config.scanner.profile_step_mm();
-    settings.channel = config.lcm.profile_channel;
-    return std::make_unique<ReplaySource>(options.replay, settings);
-  }
-  if (options.source == "hardware") {
-    if (options.hardware.empty())
-      throw InputError(
-          "cell: --source hardware needs --hardware FILE (see config/hardware-example.yaml)");
-    return std::make_unique<HardwareSource>(read_hardware_config(options.hardware), config.scanner);
-  }
-  SimulatedSourceSettings settings;
-  settings.parts = options.parts > 0 ? options.parts : config.sim_source.parts;
-  settings.seed = config.sim_source.seed;
-  settings.part_gap_mm = config.sim_source.part_gap_mm;
-  settings.pose =
-      config.sim_source.pose == SimPoseMode::kResting ? PoseMode::kResting : PoseMode::kRandom;
-  settings.part_names = config.sim_source.part_names;
-  return std::make_unique<SimulatedSource>(catalog, config.scanner, settings);
+  return make_cell_source({options.source, options.hardware, options.replay, options.parts}, config,
+                          catalog);
 }
 
 double percentile(std::vector<double> values, double q) {
@@ -112,7 +90,7 @@ void run(const CellOptions& options) {
   settings.publish_profiles = config.lcm.publish_profiles;
   settings.duration_s = options.duration_s;
 
-  const auto* simulated = dynamic_cast<const SimulatedSource*>(source.get());
+  const SimulatedConveyor* simulated = simulated_ground_truth(*source);
   std::vector<double> latencies_ms;
   int correct = 0;
   std::printf("%5s  %-18s %-9s %9s %9s %9s  %6s %8s %10s\n", "part", "name", "status", "x_mm",
@@ -121,6 +99,7 @@ void run(const CellOptions& options) {
       *source, loop, context, publisher, settings, [&](const PartRecognition& recognition) {
         const PartPose& pose = recognition.pose;
         latencies_ms.push_back(pose.latency_ms);
+        announce_pose_published(*source);
         std::string truth;
         const PlacedSimPart* placed = simulated
                                           ? simulated->placed_part_scanned_in(

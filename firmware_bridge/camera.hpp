@@ -1,7 +1,8 @@
 #pragma once
-// The camera of the laser-line scanner, as the acquisition loop sees it. One implementation
-// talks to a V4L2 device (v4l2_camera.hpp); a simulated one draws the stripe the ray caster
-// predicts, so the same stripe extraction and triangulation run with and without hardware.
+// The camera of the laser-line scanner, as the acquisition loop sees it. Two implementations:
+// V4l2Camera talks to a V4L2 device (v4l2_camera.hpp); SimulatedCamera (sim/twins/) hands
+// out the frames the simulator's camera mode draws for the simulated conveyor, so the same
+// stripe extraction and triangulation (HardwareSource) run with and without hardware.
 //
 // Frames are lent, not copied: next_frame() hands out a view into a driver buffer and the
 // caller gives it back with release_frame() once the stripe is extracted. A frame copy at
@@ -20,6 +21,9 @@ enum class CameraStatus : std::uint8_t {
   kNoFrame,     // woke up without a usable frame (signal, corrupted frame): just try again
   kWrongState,  // a lifecycle step was called out of order
   kError,       // the device refused: see last_error()
+  // No frame will ever come: a finite camera (the simulated one, once its conveyor's last
+  // part has passed) is exhausted. A real camera never says it.
+  kEndOfStream,
 };
 
 // One frame, valid until it is released. Rows are bytes_per_line apart (drivers pad rows);
@@ -37,7 +41,8 @@ struct FrameView {
   // continuing across stream restarts (the Profile's seq).
   std::uint64_t frame_index = 0;
   std::uint32_t dropped_before = 0;  // frames lost between the previous frame and this one
-  std::int64_t t_us = 0;             // CLOCK_MONOTONIC, µs
+  // CLOCK_MONOTONIC, µs; the simulated camera's belt clock instead (from 0 at its start).
+  std::int64_t t_us = 0;
   // Which instant t_us marks: start of exposure when the driver says so, else end of frame.
   bool t_is_start_of_exposure = false;
   int buffer_index = -1;  // the implementation's handle for release_frame()

@@ -1,8 +1,12 @@
 #pragma once
 // The work cell's digital I/O, as the acquisition loop sees it: the conveyor encoder count,
 // part-present transitions from the photo eye (each with the encoder count at the edge), and
-// the laser-enable, camera-trigger and result-ready outputs. One implementation drives real
-// lines through libgpiod (gpio_lines.hpp); a simulated one follows the simulated conveyor.
+// the outputs. Two implementations: LibgpiodLines drives real lines (gpio_lines.hpp);
+// SimulatedGpioLines (sim/twins/) emits the simulated conveyor's edges into the same decoder.
+//
+// The outputs as HardwareSource uses them: laser_enable is on while the source streams;
+// result_ready pulses once per result announced to it (a published pose); camera_trigger is
+// requested and held inactive but driven by nothing, since the camera runs free.
 #include <cstdint>
 #include <string_view>
 

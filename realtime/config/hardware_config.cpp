@@ -94,9 +94,22 @@ void read_camera(YamlSectionReader& section, HardwareConfig& config) {
   section.reject_unknown_keys();
 }
 
+constexpr const char* kLineKeys[] = {"encoder_a",    "encoder_b",      "photo_eye",
+                                     "laser_enable", "camera_trigger", "result_ready"};
+
 void read_gpio(const YamlInputErrors& errors, YamlSectionReader& section, GpioConfig& gpio) {
   section.read("chip", gpio.chip);
   section.read("consumer", gpio.consumer);
+  const bool simulated = gpio.chip == kSimulatedDevice;
+  if (simulated) {
+    for (const char* key : kLineKeys) {
+      if (section.has(key)) {
+        section.fail(key,
+                     "the simulated chip has every line (encoder A and B, photo eye, "
+                     "laser_enable, camera_trigger, result_ready): remove the key");
+      }
+    }
+  }
   read_line(errors, section, "encoder_a", gpio.encoder_a);
   read_line(errors, section, "encoder_b", gpio.encoder_b);
   read_line(errors, section, "photo_eye", gpio.photo_eye);
@@ -109,6 +122,7 @@ void read_gpio(const YamlInputErrors& errors, YamlSectionReader& section, GpioCo
   read_microseconds_as_ns(section, "photo_eye_min_on_us", gpio.photo_eye_min_on_ns);
   read_microseconds_as_ns(section, "photo_eye_min_off_us", gpio.photo_eye_min_off_ns);
   section.reject_unknown_keys();
+  if (simulated) return;
   if (!gpio.encoder_a.configured())
     section.fail("encoder_a", "missing: the conveyor encoder's line");
   if (gpio.encoder_mode == EncoderMode::kQuadrature && !gpio.encoder_b.configured()) {
@@ -170,6 +184,16 @@ HardwareConfig read_hardware_config(const fs::path& yaml_path) {
   read_gpio(errors, gpio, config.gpio);
   YamlSectionReader stripe(errors, root["stripe"], "stripe");
   read_stripe(stripe, config.camera.pixel_format, config.stripe);
+  if (config.camera_simulated() && !config.gpio_simulated()) {
+    gpio.fail("chip",
+              "camera.device is simulated, so gpio.chip must be too: the simulated camera's "
+              "conveyor moves no real encoder");
+  }
+  if (config.gpio_simulated() && !config.camera_simulated()) {
+    camera.fail("device",
+                "gpio.chip is simulated, so camera.device must be too: the simulated encoder "
+                "follows the simulated camera's conveyor, not a real one");
+  }
   return config;
 }
 

@@ -19,14 +19,25 @@
 // mode) is optional, with the defaults of firmware_bridge/camera_config.hpp, gpio_config.hpp
 // and laser_stripe_extraction.hpp. An unknown key, a wrong type or a value out of range
 // throws InputError `file:LINE: section.key: reason` (1-based line).
+//
+// The simulated twins (sim/twins/, config/hardware-sim.yaml): `camera.device: simulated`
+// and `gpio.chip: simulated` together. The simulated chip has every line, so it takes no
+// line keys; the rest (format, size, ROI, buffers, encoder mode, debouncing, stripe) means
+// what it means for real devices. One simulated without the other is refused: the twins'
+// encoder and photo eye follow the simulated camera's conveyor, which a real camera or a
+// real encoder knows nothing of.
 #include <cstdint>
 #include <filesystem>
+#include <string_view>
 
 #include "firmware_bridge/camera_config.hpp"
 #include "firmware_bridge/gpio_config.hpp"
 #include "firmware_bridge/laser_stripe_extraction.hpp"
 
 namespace cosmos {
+
+// camera.device and gpio.chip of the simulated twins.
+inline constexpr std::string_view kSimulatedDevice = "simulated";
 
 struct HardwareConfig {
   std::filesystem::path file;  // where it was read from, for error hints; empty if built in code
@@ -37,6 +48,10 @@ struct HardwareConfig {
   StripeExtractionParameters stripe;
   // The watchdog of one wait for a frame: a stalled camera shows as a timeout, not a hang.
   std::int64_t frame_timeout_us = 100'000;
+
+  // Both are, or neither is (read_hardware_config refuses a half-simulated file).
+  bool camera_simulated() const { return camera.device == kSimulatedDevice; }
+  bool gpio_simulated() const { return gpio.chip == kSimulatedDevice; }
 };
 
 HardwareConfig read_hardware_config(const std::filesystem::path& yaml_path);

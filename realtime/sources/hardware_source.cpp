@@ -57,6 +57,11 @@ SourceStatus HardwareSource::start() {
   stop();
   error_.clear();
   dropped_ = 0;
+  photo_eye_ = {};
+  result_pulses_ = 0;
+  // Results announced while stopped are not owed: their parts were seen by an earlier run.
+  results_signalled_ = results_announced_.load(std::memory_order_relaxed);
+  result_ready_high_ = false;
   if (check_camera_fits_sensor() != SourceStatus::kOk) return SourceStatus::kError;
   width_ = parameters_.points_per_profile;
   const CameraConfig& camera = config_.camera;
@@ -104,6 +109,7 @@ SourceStatus HardwareSource::next(Profile& out) noexcept {
   }
   FrameView frame;
   const CameraStatus waited = camera_->next_frame(config_.frame_timeout_us, frame);
+  if (waited == CameraStatus::kEndOfStream) return SourceStatus::kEndOfStream;
   if (waited != CameraStatus::kOk) {
     const std::string_view reason = camera_->last_error();
     error_.set("%.*s", view_length(reason), reason.data());
@@ -118,6 +124,7 @@ SourceStatus HardwareSource::next(Profile& out) noexcept {
     camera_->release_frame(frame);
     return SourceStatus::kError;
   }
+  drain_photo_eye();
   out.seq = frame.frame_index;
   out.encoder_ticks = gpio_->encoder().ticks;
   out.t_us = frame.t_us;
@@ -138,13 +145,43 @@ SourceStatus HardwareSource::next(Profile& out) noexcept {
     error_.set("%.*s", view_length(reason), reason.data());
     return SourceStatus::kError;
   }
-  return SourceStatus::kOk;
+  return drive_result_ready();
+}
+
+void HardwareSource::drain_photo_eye() noexcept {
+  PhotoEyeEvent event;
+  while (gpio_->next_photo_eye_event(event)) {
+    ++(event.present ? photo_eye_.arrivals : photo_eye_.departures);
+    photo_eye_.last = event;
+  }
+}
+
+SourceStatus HardwareSource::drive_result_ready() noexcept {
+  GpioStatus status = GpioStatus::kOk;
+  if (result_ready_high_) {
+    // High for one frame period, then low for at least one: results stay separate pulses.
+    result_ready_high_ = false;
+    status = gpio_->set_output(GpioOutput::kResultReady, false);
+  } else if (results_signalled_ != results_announced_.load(std::memory_order_relaxed)) {
+    ++results_signalled_;
+    status = gpio_->set_output(GpioOutput::kResultReady, true);
+    if (status == GpioStatus::kOk) {
+      result_ready_high_ = true;
+      ++result_pulses_;
+    }
+  }
+  if (status == GpioStatus::kOk || status == GpioStatus::kNotConfigured) return SourceStatus::kOk;
+  const std::string_view reason = gpio_->last_error();
+  error_.set("%.*s", view_length(reason), reason.data());
+  return SourceStatus::kError;
 }
 
 void HardwareSource::stop() noexcept {
   if (!started_) return;
   // The laser goes off first: a stopped cell must not leave it lit.
   gpio_->set_output(GpioOutput::kLaserEnable, false);
+  if (result_ready_high_) gpio_->set_output(GpioOutput::kResultReady, false);
+  result_ready_high_ = false;
   gpio_->stop();
   camera_->stop();
   started_ = false;

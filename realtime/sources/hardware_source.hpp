@@ -1,8 +1,10 @@
 #pragma once
-// The live scanner as a ScannerSource (`hardware`): the V4L2 camera that images the laser
-// line and the GPIO lines of the conveyor encoder and the laser, from the hardware YAML
-// (hardware_config.hpp), with the triangulation geometry and the profile grid of the cell's
-// `scanner:` section (ScannerParameters), exactly as the simulated cell uses them.
+// The live scanner as a ScannerSource (`hardware`): the camera that images the laser line
+// and the GPIO lines of the conveyor encoder, the photo eye and the cell's outputs, from the
+// hardware YAML (hardware_config.hpp), with the triangulation geometry and the profile grid
+// of the cell's `scanner:` section (ScannerParameters), exactly as the simulated cell uses
+// them. The devices are a V4L2 camera and libgpiod lines, or any Camera and GpioLines the
+// caller supplies: the simulated twins (sim/twins/) run this very path without hardware.
 //
 // start() opens the camera device and the GPIO chip, and fails with one line naming the
 // device and the config key that names it ("/dev/video0: open: No such file or directory
@@ -10,12 +12,25 @@
 // told to use hardware and has none must stop, not scan imaginary parts. Then it drives
 // laser-enable on (when configured) and streams.
 //
-// next() waits up to frame_timeout_us for a frame, drains the encoder's edges, turns the
-// frame into the profile with the simulator's camera-mode code (StripeProfiler) and gives
-// the frame back. seq is the camera's frame index, t_us the frame's time stamp
-// (CLOCK_MONOTONIC), encoder_ticks the count once the frame has arrived: the camera runs
-// free, so that count lags the exposure by the frame's readout and is, at constant belt
-// speed, a constant offset. Frames the camera lost add to dropped_profiles().
+// next() waits up to frame_timeout_us for a frame, drains the encoder's and the photo eye's
+// edges, turns the frame into the profile with the simulator's camera-mode code
+// (StripeProfiler) and gives the frame back. seq is the camera's frame index, t_us the
+// frame's time stamp (CLOCK_MONOTONIC), encoder_ticks the count once the frame has arrived:
+// a free-running camera's count lags the exposure by the frame's readout and is, at
+// constant belt speed, a constant offset. Frames the camera lost add to dropped_profiles().
+// A finite camera's end (CameraStatus::kEndOfStream) is the source's kEndOfStream.
+//
+// Photo eye: its transitions are counted (photo_eye(): arrivals, departures, and the latest
+// with the encoder count at its edge); nothing else depends on them yet, since the part
+// tracker finds parts in the profiles themselves.
+//
+// Result ready: announce_result() may be called from any thread (the publisher's, once a
+// pose went out); the acquisition thread, the only one that touches the GPIO lines, turns
+// each announcement into one pulse of result_ready: raised at the next frame, lowered at the
+// frame after, and low for at least a frame before the next pulse. Pulses still owed when
+// the stream ends are not sent.
+// camera_trigger is not driven: the camera runs free.
+#include <atomic>
 #include <cstdint>
 #include <memory>
 
@@ -28,6 +43,13 @@
 #include "scanner/scanner_model.hpp"
 
 namespace cosmos {
+
+// The photo eye's transitions seen by next() since start().
+struct PhotoEyeTally {
+  std::uint64_t arrivals = 0;    // part present
+  std::uint64_t departures = 0;  // part gone
+  PhotoEyeEvent last;            // the latest of either
+};
 
 class HardwareSource final : public ScannerSource {
  public:
@@ -51,11 +73,20 @@ class HardwareSource final : public ScannerSource {
 
   // The last frame's stripe (diagnostics); valid after the first profile.
   const StripeProfiler* profiler() const { return profiler_.get(); }
+  // Read on the acquisition thread, or once the source is stopped.
+  const PhotoEyeTally& photo_eye() const noexcept { return photo_eye_; }
+  // Any thread: a result (a published pose) for result_ready to signal.
+  void announce_result() noexcept { results_announced_.fetch_add(1, std::memory_order_relaxed); }
+  // result_ready pulses begun since start(); read as photo_eye().
+  std::uint64_t result_pulses() const noexcept { return result_pulses_; }
 
  private:
   // Fails start() with `reason` and the config key that names the failing device.
   SourceStatus fail_start(std::string_view reason, const char* key);
   SourceStatus check_camera_fits_sensor();
+  void drain_photo_eye() noexcept;
+  // kError with the GPIO's reason when the line refused.
+  SourceStatus drive_result_ready() noexcept;
 
   HardwareConfig config_;
   ScannerParameters parameters_;
@@ -67,6 +98,11 @@ class HardwareSource final : public ScannerSource {
   int width_ = 0;  // profile samples
   bool started_ = false;
   std::uint64_t dropped_ = 0;
+  PhotoEyeTally photo_eye_;
+  std::atomic<std::uint64_t> results_announced_{0};
+  std::uint64_t results_signalled_ = 0;  // announcements taken up (acquisition thread)
+  std::uint64_t result_pulses_ = 0;
+  bool result_ready_high_ = false;
   ErrorLine error_;
 };
 

@@ -1,166 +1,21 @@
 #include "sim/source/simulated_source.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <map>
-#include <stdexcept>
-
-#include "core/input_error.hpp"
-#include "sim/part_pose.hpp"
-#include "sim/seeded_random.hpp"
-
 namespace cosmos {
-namespace {
-
-// Independent random streams from the one settings seed.
-constexpr std::uint64_t kSequenceStream = 0x5E9;
-constexpr std::uint64_t kPoseStream = 0x9053;
-constexpr std::uint64_t kOffsetStream = 0x0FF5E7;
-
-void check_settings(const SimulatedSourceSettings& settings) {
-  if (settings.parts < 1) throw std::invalid_argument("simulated source: parts must be >= 1");
-  if (!std::isfinite(settings.part_gap_mm) || settings.part_gap_mm <= 0.0) {
-    throw std::invalid_argument("simulated source: part_gap_mm must be > 0");
-  }
-  if (!std::isfinite(settings.edge_margin_mm) || settings.edge_margin_mm < 0.0) {
-    throw std::invalid_argument("simulated source: edge_margin_mm must be >= 0");
-  }
-}
-
-std::string joined(const std::vector<std::string>& names) {
-  std::string text;
-  for (const std::string& name : names) text.append(text.empty() ? "" : ", ").append(name);
-  return text;
-}
-
-// Indices (into `names`) of the parts the stream may draw from, in `names` order.
-std::vector<std::size_t> allowed_parts(const std::vector<std::string>& names,
-                                       const std::vector<std::string>& wanted,
-                                       const std::string& source) {
-  if (names.empty()) throw InputError(source + ": no parts to simulate");
-  std::vector<std::size_t> allowed;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    if (wanted.empty() || std::find(wanted.begin(), wanted.end(), names[i]) != wanted.end()) {
-      allowed.push_back(i);
-    }
-  }
-  for (const std::string& name : wanted) {
-    if (std::find(names.begin(), names.end(), name) == names.end()) {
-      throw InputError("unknown part '" + name + "' in " + source + " (known: " + joined(names) +
-                       ")");
-    }
-  }
-  return allowed;
-}
-
-// The stream's parts, uniformly over the allowed ones: an entry of `allowed` per position.
-std::vector<std::size_t> draw_sequence(const std::vector<std::size_t>& allowed,
-                                       const SimulatedSourceSettings& settings) {
-  SeededRandom random(mix_seed(settings.seed, kSequenceStream));
-  const auto count = static_cast<double>(allowed.size());
-  std::vector<std::size_t> sequence;
-  for (int i = 0; i < settings.parts; ++i) {
-    const auto pick = static_cast<std::size_t>(std::floor(random.uniform() * count));
-    sequence.push_back(allowed[std::min(pick, allowed.size() - 1)]);
-  }
-  return sequence;
-}
-
-Eigen::AlignedBox3d rotated_box(const TriangleMesh& mesh, const Eigen::Matrix3d& R) {
-  Eigen::AlignedBox3d box;
-  for (const Eigen::Vector3f& v : mesh.vertices) box.extend(R * v.cast<double>());
-  return box;
-}
-
-}  // namespace
 
 SimulatedSource::SimulatedSource(const PartCatalog& catalog, const ScannerParameters& parameters,
                                  const SimulatedSourceSettings& settings)
-    : parameters_(parameters), settings_(settings) {
-  check_settings(settings);
-  std::vector<std::string> names;
-  for (const PartEntry& part : catalog.parts) names.push_back(part.name);
-  const std::vector<std::size_t> picks =
-      draw_sequence(allowed_parts(names, settings.part_names, catalog.file.string()), settings);
-  // Only the drawn meshes are loaded: a short stream need not read the whole catalog.
-  std::map<std::size_t, std::size_t> model_of_catalog_index;
-  std::vector<SimPartModel> models;
-  for (const std::size_t index : picks) {
-    if (model_of_catalog_index.count(index) != 0) continue;
-    const PartEntry& part = catalog.parts[index];
-    model_of_catalog_index[index] = models.size();
-    models.push_back({part.name, load_mesh(part.mesh_path, part.size_mm), static_cast<int>(index)});
-  }
-  std::vector<const SimPartModel*> model_pointers;
-  for (const SimPartModel& model : models) model_pointers.push_back(&model);
-  std::vector<std::size_t> model_picks;
-  for (const std::size_t index : picks) model_picks.push_back(model_of_catalog_index[index]);
-  build(model_pointers, model_picks);
-}
+    : parameters_(parameters),
+      conveyor_(catalog, parameters, settings),
+      scanner_(std::make_unique<SimulatedScanner>(conveyor_.scene(), parameters, settings.mode)) {}
 
 SimulatedSource::SimulatedSource(const std::vector<SimPartModel>& models,
                                  const ScannerParameters& parameters,
                                  const SimulatedSourceSettings& settings)
-    : parameters_(parameters), settings_(settings) {
-  check_settings(settings);
-  std::vector<std::string> names;
-  std::vector<const SimPartModel*> model_pointers;
-  for (const SimPartModel& model : models) {
-    names.push_back(model.name);
-    model_pointers.push_back(&model);
-  }
-  build(model_pointers,
-        draw_sequence(allowed_parts(names, settings.part_names, "the part list"), settings));
-}
+    : parameters_(parameters),
+      conveyor_(models, parameters, settings),
+      scanner_(std::make_unique<SimulatedScanner>(conveyor_.scene(), parameters, settings.mode)) {}
 
 SimulatedSource::~SimulatedSource() = default;
-
-void SimulatedSource::build(const std::vector<const SimPartModel*>& models,
-                            const std::vector<std::size_t>& picks) {
-  scene_ = std::make_unique<ConveyorScene>();
-  std::vector<int> scene_mesh(models.size(), -1);
-  const double step_mm = parameters_.profile_step_mm();
-  const double half_field_mm = 0.5 * parameters_.field_of_view_mm;
-  // The downstream (+y) end of the next part: part 0 after an empty lead-in.
-  double next_y_max_mm = -settings_.part_gap_mm;
-  for (std::size_t i = 0; i < picks.size(); ++i) {
-    const SimPartModel& model = *models[picks[i]];
-    if (scene_mesh[picks[i]] < 0) scene_mesh[picks[i]] = scene_->add_mesh(model.mesh);
-    const std::uint64_t pose_seed = mix_seed(mix_seed(settings_.seed, kPoseStream), i);
-    const Eigen::Matrix3d R_belt_part = settings_.pose == PoseMode::kResting
-                                            ? resting_rotation(model.mesh, pose_seed)
-                                            : random_rotation(pose_seed);
-    const Eigen::AlignedBox3d box = rotated_box(model.mesh, R_belt_part);
-    double x_mm = 0.0;
-    if (settings_.random_x_offset) {
-      const double reach_mm =
-          std::max(0.0, half_field_mm - 0.5 * box.sizes().x() - settings_.edge_margin_mm);
-      SeededRandom offset(mix_seed(mix_seed(settings_.seed, kOffsetStream), i));
-      x_mm = reach_mm * (2.0 * offset.uniform() - 1.0);
-    }
-    const double y_mm = next_y_max_mm - 0.5 * box.sizes().y();
-    const int part = scene_->add_part(model.name, scene_mesh[picks[i]],
-                                      place_on_belt(model.mesh, R_belt_part, x_mm, y_mm));
-    const PlacedPart& placed = scene_->parts()[static_cast<std::size_t>(part)];
-    PlacedSimPart truth;
-    truth.catalog_index = model.catalog_index;
-    truth.name = model.name;
-    truth.T_belt_part = placed.T_belt_part;
-    truth.bounds_mm = placed.bounds_mm;
-    // Profile k's sheet is at y = −k · Δy: inside the box for −y_max <= k · Δy <= −y_min.
-    truth.first_profile =
-        static_cast<std::int64_t>(std::ceil(-placed.bounds_mm.max().y() / step_mm));
-    truth.last_profile =
-        static_cast<std::int64_t>(std::floor(-placed.bounds_mm.min().y() / step_mm));
-    placed_.push_back(truth);
-    next_y_max_mm = placed.bounds_mm.min().y() - settings_.part_gap_mm;
-  }
-  scene_->commit();
-  // The tolerance keeps a gap of a whole number of steps from gaining one through rounding.
-  last_profile_ = placed_.back().last_profile +
-                  static_cast<std::int64_t>(std::ceil(settings_.part_gap_mm / step_mm - 1e-9));
-  scanner_ = std::make_unique<SimulatedScanner>(*scene_, parameters_, settings_.mode);
-}
 
 SourceStatus SimulatedSource::start() {
   next_profile_ = 0;
@@ -176,26 +31,11 @@ SourceStatus SimulatedSource::next(Profile& out) noexcept {
     error_.set("simulated source: next() before start()");
     return SourceStatus::kError;
   }
-  if (next_profile_ > last_profile_) return SourceStatus::kEndOfStream;
+  if (next_profile_ > conveyor_.last_profile()) return SourceStatus::kEndOfStream;
   scanner_->acquire(next_profile_, out);
   out.seq = static_cast<std::uint64_t>(next_profile_);
   ++next_profile_;
   return SourceStatus::kOk;
-}
-
-const PlacedSimPart* SimulatedSource::placed_part_scanned_in(std::int64_t first_profile,
-                                                             std::int64_t last_profile) const {
-  const PlacedSimPart* best = nullptr;
-  std::int64_t best_overlap = 0;
-  for (const PlacedSimPart& part : placed_) {
-    const std::int64_t overlap =
-        std::min(last_profile, part.last_profile) - std::max(first_profile, part.first_profile) + 1;
-    if (overlap > best_overlap) {
-      best = &part;
-      best_overlap = overlap;
-    }
-  }
-  return best;
 }
 
 }  // namespace cosmos

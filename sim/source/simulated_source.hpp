@@ -2,70 +2,29 @@
 // The simulated cell as a ScannerSource: a conveyor carrying a seeded sequence of catalog
 // parts, one after another, through the simulated laser-line scanner (sim/).
 //
-// Frames and ground truth (sim/conveyor_scene.hpp): every part is placed once, in the belt
-// frame (the scanner frame at encoder tick 0), and T_belt_part is its exact pose there. At
-// profile k the belt has moved by s = k · mm_per_profile() along +y, so the part's pose in
-// the scanner frame is then T_scanner_part = Translation(0, s, 0) · T_belt_part. The laser
-// sheet of profile k lies at y_belt = −k · Δy, so the parts are placed at decreasing y_belt
-// in sequence order: part 0 meets the sheet first. The stream is profiles k = 0, 1, …: an
-// empty lead-in of part_gap_mm, the parts each part_gap_mm apart (bounding box to bounding
-// box, along y), a trailing part_gap_mm of empty belt, then kEndOfStream.
+// The conveyor (its parts, their placement and ground truth) is simulated_conveyor.hpp, shared
+// with the hardware twins; this source scans it with the simulated scanner. The stream is
+// profiles k = 0 … last_profile(), then kEndOfStream.
 //
-// Determinism: the part sequence, each part's rotation and across-belt offset come from
-// settings.seed; the measurement noise from ScannerParameters::seed per profile. t_us is the
-// profile's nominal exposure time (k · 1e6 / line_rate_hz), never the wall clock, so the
-// same settings give a bit-identical stream however the loop is paced.
-#include <Eigen/Geometry>
+// Determinism: the conveyor from settings.seed, the measurement noise from
+// ScannerParameters::seed per profile. t_us is the profile's nominal exposure time
+// (k · 1e6 / line_rate_hz), never the wall clock, so the same settings give a bit-identical
+// stream however the loop is paced.
 #include <cstdint>
 #include <memory>
-#include <string>
 #include <vector>
 
 #include "firmware_bridge/error_line.hpp"
 #include "realtime/sources/scanner_source.hpp"
 #include "scanner/scanner_model.hpp"
-#include "sim/conveyor_scene.hpp"
-#include "sim/mesh.hpp"
 #include "sim/part_catalog.hpp"
 #include "sim/simulated_scanner.hpp"
+#include "sim/source/simulated_conveyor.hpp"
 
 namespace cosmos {
 
-enum class PoseMode : std::uint8_t {
-  kRandom,   // uniform over SO(3) (sim/part_pose.hpp random_rotation)
-  kResting,  // settled on a face of its convex hull (resting_rotation)
-};
-
-struct SimulatedSourceSettings {
-  int parts = 20;             // parts in the stream, >= 1
-  std::uint64_t seed = 7;     // part sequence, poses and offsets
-  double part_gap_mm = 40.0;  // empty belt between bounding boxes, and before and after
-  PoseMode pose = PoseMode::kRandom;
-  // false: every part centred across the belt (x = 0); true: a seeded x offset that keeps
-  // its bounding box at least edge_margin_mm inside the field of view at belt height.
-  bool random_x_offset = false;
-  double edge_margin_mm = 8.0;
+struct SimulatedSourceSettings : SimulatedConveyorSettings {
   ScanMode mode = ScanMode::kProfile;
-  std::vector<std::string> part_names;  // the parts to draw from, uniformly; empty = all
-};
-
-// A part the source may place: its mesh in its own frame (mm) and its index in the catalog.
-struct SimPartModel {
-  std::string name;
-  TriangleMesh mesh;
-  int catalog_index = -1;
-};
-
-// Ground truth of one part in the stream.
-struct PlacedSimPart {
-  int catalog_index = -1;
-  std::string name;
-  Eigen::Isometry3d T_belt_part = Eigen::Isometry3d::Identity();
-  Eigen::AlignedBox3d bounds_mm;  // belt frame
-  // The profiles whose laser sheet crosses the part's bounding box: every sample of the part
-  // lies in them, and no other part's does.
-  std::int64_t first_profile = 0;
-  std::int64_t last_profile = -1;
 };
 
 class SimulatedSource final : public ScannerSource {
@@ -92,26 +51,21 @@ class SimulatedSource final : public ScannerSource {
   std::string_view last_error() const noexcept override { return error_.view(); }
   std::uint64_t dropped_profiles() const noexcept override { return 0; }
 
-  const std::vector<PlacedSimPart>& placed_parts() const { return placed_; }
-  // The placed part that profiles first_profile … last_profile (a scanned part's rows) cover
-  // most, nullptr when they cover none. Parts the cell dropped take no part_seq, so this,
-  // not part_seq, pairs a pose with its truth.
+  const SimulatedConveyor& conveyor() const { return conveyor_; }
+  const std::vector<PlacedSimPart>& placed_parts() const { return conveyor_.placed_parts(); }
+  // The conveyor's ground-truth query (SimulatedConveyor::placed_part_scanned_in).
   const PlacedSimPart* placed_part_scanned_in(std::int64_t first_profile,
-                                              std::int64_t last_profile) const;
+                                              std::int64_t last_profile) const {
+    return conveyor_.placed_part_scanned_in(first_profile, last_profile);
+  }
   // The last profile index of the stream (next() gives 0 … last_profile(), then the end).
-  std::int64_t last_profile() const { return last_profile_; }
+  std::int64_t last_profile() const { return conveyor_.last_profile(); }
   const ScannerParameters& parameters() const { return parameters_; }
 
  private:
-  // picks: per stream position, an index into `models`.
-  void build(const std::vector<const SimPartModel*>& models, const std::vector<std::size_t>& picks);
-
   ScannerParameters parameters_;
-  SimulatedSourceSettings settings_;
-  std::unique_ptr<ConveyorScene> scene_;  // declared before the scanner that traces it
+  SimulatedConveyor conveyor_;  // declared before the scanner that traces it
   std::unique_ptr<SimulatedScanner> scanner_;
-  std::vector<PlacedSimPart> placed_;
-  std::int64_t last_profile_ = -1;
   std::int64_t next_profile_ = 0;
   bool started_ = false;
   ErrorLine error_;

@@ -82,6 +82,45 @@ TEST_F(HardwareConfigTest, LinesStripeAndDeepPixelFormats) {
   EXPECT_EQ(config.stripe.saturation_level, 4095);
 }
 
+TEST_F(HardwareConfigTest, TheSimulatedTwinsFileReadsAsItReads) {
+  const fs::path file = fs::path(COSMOS_SOURCE_DIR) / "config" / "hardware-sim.yaml";
+  const HardwareConfig config = read_hardware_config(file);
+  EXPECT_TRUE(config.camera_simulated());
+  EXPECT_TRUE(config.gpio_simulated());
+  EXPECT_EQ(config.camera.pixel_format, PixelFormat::kGrey8);
+  EXPECT_EQ(config.camera.width_px, 1280);
+  EXPECT_EQ(config.camera.height_px, 512);
+  EXPECT_EQ(config.camera.roi_top_px, 51);
+  EXPECT_EQ(config.camera.roi_left_px, 0);
+  EXPECT_EQ(config.gpio.encoder_mode, EncoderMode::kQuadrature);
+  EXPECT_FALSE(config.gpio.encoder_a.configured());  // the simulated chip names no lines
+  EXPECT_EQ(config.gpio.encoder_debounce_ns, 2000);
+  EXPECT_EQ(config.stripe.method, StripePeakMethod::kCentreOfGravity);
+  EXPECT_EQ(config.stripe.threshold, 20);
+  EXPECT_EQ(config.stripe.min_peak_intensity, 43);
+  EXPECT_EQ(config.stripe.window_half_width_px, 7);
+}
+
+TEST_F(HardwareConfigTest, HalfSimulatedFilesAndLinesOfTheSimulatedChipAreRefused) {
+  EXPECT_EQ(error_of("camera:\n  device: simulated\n" + std::string(kMinimalGpio)),
+            at(4) +
+                ": gpio.chip: camera.device is simulated, so gpio.chip must be too: the "
+                "simulated camera's conveyor moves no real encoder");
+  EXPECT_EQ(error_of("camera:\n  device: /dev/video0\ngpio:\n  chip: simulated\n"),
+            at(2) +
+                ": camera.device: gpio.chip is simulated, so camera.device must be too: the "
+                "simulated encoder follows the simulated camera's conveyor, not a real one");
+  EXPECT_EQ(error_of("camera:\n  device: simulated\ngpio:\n  chip: simulated\n"
+                     "  photo_eye: 17\n"),
+            at(5) +
+                ": gpio.photo_eye: the simulated chip has every line (encoder A and B, photo "
+                "eye, laser_enable, camera_trigger, result_ready): remove the key");
+  const HardwareConfig both = read_hardware_config(
+      write("camera:\n  device: simulated\ngpio:\n  chip: simulated\n  encoder_mode: step\n"));
+  EXPECT_TRUE(both.camera_simulated());
+  EXPECT_EQ(both.gpio.encoder_mode, EncoderMode::kStep);
+}
+
 TEST_F(HardwareConfigTest, BadKeysTypesAndRangesNameFileLineAndKey) {
   const std::string gpio = kMinimalGpio;
   EXPECT_EQ(error_of("camera:\n  widht: 640\n" + gpio),

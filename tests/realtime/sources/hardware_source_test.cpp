@@ -1,14 +1,17 @@
 // The live source without live hardware: a missing camera fails start() with one line naming
 // the device and its config key; a V4L2 camera played by the fake device (a synthetic stripe
 // over a 20 mm step) and fake GPIO lines give profiles with the step's heights, the frame
-// indices, time stamps and encoder counts, and the frames the camera lost.
+// indices, time stamps and encoder counts, and the frames the camera lost; the photo eye's
+// transitions are counted and each announced result is one result_ready pulse.
 #include "realtime/sources/hardware_source.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
+#include <deque>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "firmware_bridge/v4l2_camera.hpp"
@@ -39,9 +42,15 @@ class FakeGpioLines final : public GpioLines {
   }
   EncoderReading encoder() const noexcept override { return {ticks, 0, 0, 0, 0}; }
   bool part_present() const noexcept override { return false; }
-  bool next_photo_eye_event(PhotoEyeEvent&) noexcept override { return false; }
+  bool next_photo_eye_event(PhotoEyeEvent& event) noexcept override {
+    if (photo_eye_events.empty()) return false;
+    event = photo_eye_events.front();
+    photo_eye_events.pop_front();
+    return true;
+  }
   GpioStatus set_output(GpioOutput output, bool active) noexcept override {
     if (output == GpioOutput::kLaserEnable) laser_on = active;
+    if (output == GpioOutput::kResultReady) result_ready.emplace_back(ticks, active);
     return GpioStatus::kOk;
   }
   std::string_view last_error() const noexcept override { return error; }
@@ -51,6 +60,8 @@ class FakeGpioLines final : public GpioLines {
   bool started = false;
   bool laser_on = false;
   std::int64_t ticks = 1000;
+  std::deque<PhotoEyeEvent> photo_eye_events;
+  std::vector<std::pair<std::int64_t, bool>> result_ready;  // (ticks, level) per write
 };
 
 // Where the camera sees the laser line on a flat surface at z_mm in sensor column u: the
@@ -185,6 +196,37 @@ TEST_F(HardwareSourceTest, FramesBecomeProfilesOfTheStep) {
   EXPECT_FALSE(gpio_.laser_on);
   EXPECT_FALSE(gpio_.started);
   EXPECT_EQ(device_.open_fds, 0);
+}
+
+TEST_F(HardwareSourceTest, PhotoEyeTransitionsAreCountedAndResultsPulseResultReady) {
+  V4l2Camera camera(config_.camera, device_);
+  HardwareSource source(config_, parameters_, camera, gpio_);
+  source.announce_result();  // before start: its part belonged to an earlier run
+  ASSERT_EQ(source.start(), SourceStatus::kOk) << source.last_error();
+  for (int k = 0; k < 6; ++k) device_.deliver(static_cast<std::uint32_t>(k), 7'000'000 + 400 * k);
+  device_.time_out();
+  gpio_.photo_eye_events = {{true, 6'000'000, 1002}, {false, 6'100'000, 1010}};
+  source.announce_result();
+  source.announce_result();  // two results at once: two separate pulses
+  const testing::SourceStream stream = testing::read_stream(source);
+  ASSERT_EQ(stream.profiles.size(), 6u);
+  EXPECT_EQ(source.photo_eye().arrivals, 1u);
+  EXPECT_EQ(source.photo_eye().departures, 1u);
+  EXPECT_FALSE(source.photo_eye().last.present);
+  EXPECT_EQ(source.photo_eye().last.encoder_ticks, 1010);
+  EXPECT_EQ(source.result_pulses(), 2u);
+  // High at frames 0 and 2 (encoder 1004, 1012), low at frames 1 and 3.
+  const std::vector<std::pair<std::int64_t, bool>> expected = {
+      {1004, true}, {1008, false}, {1012, true}, {1016, false}};
+  EXPECT_EQ(gpio_.result_ready, expected);
+  source.announce_result();
+  Profile slot;
+  source.reserve(slot);
+  device_.deliver(6, 7'002'400);
+  ASSERT_EQ(source.next(slot), SourceStatus::kOk);
+  source.stop();  // a pulse in progress ends with the source
+  ASSERT_EQ(gpio_.result_ready.size(), 6u);
+  EXPECT_FALSE(gpio_.result_ready.back().second);
 }
 
 TEST_F(HardwareSourceTest, GpioAndSensorMismatchFailuresNameTheirKeys) {

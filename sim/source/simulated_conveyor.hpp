@@ -1,0 +1,104 @@
+#pragma once
+// The simulated cell's world: a conveyor carrying a seeded sequence of catalog parts, one
+// after another, each placed once in the belt frame with its exact pose (the ground truth).
+// Two readers scan it: the simulated scanner of SimulatedSource (simulated_source.hpp) and
+// the hardware twins (sim/twins/), whose camera and encoder follow the same belt, so a
+// simulated and a twin-driven hardware cell with the same settings see the same parts.
+//
+// Frames (sim/conveyor_scene.hpp): the belt frame is the scanner frame at encoder tick 0. At
+// profile k the belt has moved by s = k · Δy along +y (Δy = profile_step_mm()), so a part's
+// pose in the scanner frame is then T_scanner_part = Translation(0, s, 0) · T_belt_part. The
+// laser sheet of profile k lies at y_belt = −k · Δy, so the parts are placed at decreasing
+// y_belt in sequence order: part 0 meets the sheet first. The stream is profiles
+// k = 0 … last_profile(): an empty lead-in of part_gap_mm, the parts each part_gap_mm apart
+// (bounding box to bounding box, along y), and a trailing part_gap_mm of empty belt.
+//
+// Determinism: the part sequence, each part's rotation and across-belt offset come from
+// settings.seed alone.
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "scanner/scanner_model.hpp"
+#include "sim/conveyor_scene.hpp"
+#include "sim/mesh.hpp"
+#include "sim/part_catalog.hpp"
+
+namespace cosmos {
+
+enum class PoseMode : std::uint8_t {
+  kRandom,   // uniform over SO(3) (sim/part_pose.hpp random_rotation)
+  kResting,  // settled on a face of its convex hull (resting_rotation)
+};
+
+struct SimulatedConveyorSettings {
+  int parts = 20;             // parts on the belt, >= 1
+  std::uint64_t seed = 7;     // part sequence, poses and offsets
+  double part_gap_mm = 40.0;  // empty belt between bounding boxes, and before and after
+  PoseMode pose = PoseMode::kRandom;
+  // false: every part centred across the belt (x = 0); true: a seeded x offset that keeps
+  // its bounding box at least edge_margin_mm inside the field of view at belt height.
+  bool random_x_offset = false;
+  double edge_margin_mm = 8.0;
+  std::vector<std::string> part_names;  // the parts to draw from, uniformly; empty = all
+};
+
+// A part the conveyor may carry: its mesh in its own frame (mm) and its index in the catalog.
+struct SimPartModel {
+  std::string name;
+  TriangleMesh mesh;
+  int catalog_index = -1;
+};
+
+// Ground truth of one part on the belt.
+struct PlacedSimPart {
+  int catalog_index = -1;
+  std::string name;
+  Eigen::Isometry3d T_belt_part = Eigen::Isometry3d::Identity();
+  Eigen::AlignedBox3d bounds_mm;  // belt frame
+  // The profiles whose laser sheet crosses the part's bounding box: every sample of the part
+  // lies in them, and no other part's does.
+  std::int64_t first_profile = 0;
+  std::int64_t last_profile = -1;
+};
+
+class SimulatedConveyor {
+ public:
+  // Draws from the catalog's parts (settings.part_names selects among them) and loads only
+  // the meshes drawn. InputError for an unknown part name or an unreadable mesh,
+  // std::invalid_argument for settings out of range; builds the whole scene.
+  SimulatedConveyor(const PartCatalog& catalog, const ScannerParameters& parameters,
+                    const SimulatedConveyorSettings& settings);
+  // The same from meshes in memory (procedural test parts); part_names selects among them.
+  SimulatedConveyor(const std::vector<SimPartModel>& models, const ScannerParameters& parameters,
+                    const SimulatedConveyorSettings& settings);
+  ~SimulatedConveyor();
+  SimulatedConveyor(const SimulatedConveyor&) = delete;
+  SimulatedConveyor& operator=(const SimulatedConveyor&) = delete;
+
+  // The committed scene, for the scanners that trace it.
+  const ConveyorScene& scene() const { return *scene_; }
+  const std::vector<PlacedSimPart>& placed_parts() const { return placed_; }
+  // The placed part that profiles first_profile … last_profile (a scanned part's rows) cover
+  // most, nullptr when they cover none. Parts the cell dropped take no part_seq, so this,
+  // not part_seq, pairs a pose with its truth.
+  const PlacedSimPart* placed_part_scanned_in(std::int64_t first_profile,
+                                              std::int64_t last_profile) const;
+  // The last profile index of the stream.
+  std::int64_t last_profile() const { return last_profile_; }
+  const ScannerParameters& parameters() const { return parameters_; }
+
+ private:
+  // picks: per belt position, an index into `models`.
+  void build(const std::vector<const SimPartModel*>& models, const std::vector<std::size_t>& picks,
+             const SimulatedConveyorSettings& settings);
+
+  ScannerParameters parameters_;
+  std::unique_ptr<ConveyorScene> scene_;
+  std::vector<PlacedSimPart> placed_;
+  std::int64_t last_profile_ = -1;
+};
+
+}  // namespace cosmos
