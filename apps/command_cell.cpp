@@ -48,13 +48,8 @@ std::unique_ptr<ScannerSource> make_source(const CellOptions& options, const Cel
           "cell: --source hardware needs --hardware FILE (see config/hardware-example.yaml)");
     return std::make_unique<HardwareSource>(read_hardware_config(options.hardware), config.scanner);
   }
-  SimulatedSourceSettings settings;
-  settings.parts = options.parts > 0 ? options.parts : config.sim_source.parts;
-  settings.seed = config.sim_source.seed;
-  settings.part_gap_mm = config.sim_source.part_gap_mm;
-  settings.pose =
-      config.sim_source.pose == SimPoseMode::kResting ? PoseMode::kResting : PoseMode::kRandom;
-  settings.part_names = config.sim_source.part_names;
+  SimulatedSourceSettings settings = config.sim_source;
+  if (options.parts > 0) settings.parts = options.parts;
   return std::make_unique<SimulatedSource>(catalog, config.scanner, settings);
 }
 
