@@ -16,7 +16,20 @@ namespace {
 ModelBaseBuildSettings build_settings(const CellConfig& config) {
   ModelBaseBuildSettings settings;
   settings.view_count = config.cell.model_views;
+  settings.conditioning = config.conditioning;
   return settings;
+}
+
+CellModelBase read_for_cell(const std::filesystem::path& path, const CellConfig& config) {
+  CellModelBase loaded{read_model_base(path), {}};
+  if (const auto difference = conditioning_difference(
+          model_base_view_conditioning(loaded.base, path), config.conditioning)) {
+    throw InputError(path.string() + ": its views were taken with other conditioning: " +
+                     difference->key + " is " + difference->actual + ", " + config.file.string() +
+                     " gives " + difference->expected);
+  }
+  loaded.cosmos = model_base_cosmos_parameters(loaded.base, path);
+  return loaded;
 }
 
 }  // namespace
@@ -24,20 +37,17 @@ ModelBaseBuildSettings build_settings(const CellConfig& config) {
 std::filesystem::path cached_model_base_path(const CellConfig& config, const PartCatalog& catalog) {
   const ModelBaseBuildSettings settings = build_settings(config);
   const std::string key =
-      catalog_content_hash(catalog) +
-      model_base_parameters_text(settings.cosmos, config.scanner, settings.registration,
-                                 settings.view_count, settings.grouping);
+      catalog_content_hash(catalog) + model_base_parameters_text(config.scanner, settings);
   char name[64];
   std::snprintf(name, sizeof name, "cell-%d-views-%016llx.cmb", settings.view_count,
                 static_cast<unsigned long long>(xxh64(key)));
   return default_mesh_cache_dir().parent_path() / "modelbases" / name;
 }
 
-ModelBase load_cell_model_base(const CellConfig& config, const PartCatalog& catalog) {
-  const CosmosParameters cosmos;
-  if (!config.cell.model_base.empty()) return read_model_base_for(config.cell.model_base, cosmos);
+CellModelBase load_cell_model_base(const CellConfig& config, const PartCatalog& catalog) {
+  if (!config.cell.model_base.empty()) return read_for_cell(config.cell.model_base, config);
   const std::filesystem::path path = cached_model_base_path(config, catalog);
-  if (std::filesystem::exists(path)) return read_model_base_for(path, cosmos);
+  if (std::filesystem::exists(path)) return read_for_cell(path, config);
   std::fprintf(stderr, "cell: building the model base (first run; cached as %s)\n",
                path.string().c_str());
   std::error_code error;
@@ -47,7 +57,7 @@ ModelBase load_cell_model_base(const CellConfig& config, const PartCatalog& cata
   const ModelBase base =
       build_model_base(catalog, config.scanner, build_settings(config), progress_printer(catalog));
   write_model_base(base, path);
-  return read_model_base_for(path, cosmos);
+  return read_for_cell(path, config);
 }
 
 }  // namespace cosmos

@@ -10,15 +10,9 @@
 namespace cosmos::cli {
 namespace {
 
-SimulatedConveyorSettings conveyor_settings(const CellSourceChoice& choice,
-                                            const CellConfig& config) {
-  SimulatedConveyorSettings settings;
-  settings.parts = choice.parts > 0 ? choice.parts : config.sim_source.parts;
-  settings.seed = config.sim_source.seed;
-  settings.part_gap_mm = config.sim_source.part_gap_mm;
-  settings.pose =
-      config.sim_source.pose == SimPoseMode::kResting ? PoseMode::kResting : PoseMode::kRandom;
-  settings.part_names = config.sim_source.part_names;
+SimulatedSourceSettings source_settings(const CellSourceChoice& choice, const CellConfig& config) {
+  SimulatedSourceSettings settings = config.sim_source;
+  if (choice.parts > 0) settings.parts = choice.parts;
   return settings;
 }
 
@@ -45,11 +39,10 @@ std::unique_ptr<ScannerSource> make_cell_source(const CellSourceChoice& choice,
       return std::make_unique<HardwareSource>(hardware, config.scanner);
     return std::make_unique<HardwareTwinSource>(
         hardware, std::make_unique<SimulatedConveyor>(catalog, config.scanner,
-                                                      conveyor_settings(choice, config)));
+                                                      source_settings(choice, config)));
   }
-  SimulatedSourceSettings settings;
-  static_cast<SimulatedConveyorSettings&>(settings) = conveyor_settings(choice, config);
-  return std::make_unique<SimulatedSource>(catalog, config.scanner, settings);
+  return std::make_unique<SimulatedSource>(catalog, config.scanner,
+                                           source_settings(choice, config));
 }
 
 const SimulatedConveyor* simulated_ground_truth(const ScannerSource& source) {

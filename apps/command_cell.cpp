@@ -52,23 +52,30 @@ void run(const CellOptions& options) {
     throw InputError(options.config +
                      ": conditioning.grid_mm must equal the belt travel per profile (" +
                      std::to_string(source->mm_per_profile()) + " mm)");
-  const ModelBase base = load_cell_model_base(config, catalog);
-  const Recognizer recognizer(base, CosmosParameters{}, RecognitionParameters{});
+  // The COSMOS parameters the base was built with, the one set every analysis of a scan
+  // uses: the recognizer, the scan loop's incremental COSMOS and the part views.
+  const CellModelBase loaded = load_cell_model_base(config, catalog);
+  const ModelBase& base = loaded.base;
+  const CosmosParameters& cosmos = loaded.cosmos;
+  const Recognizer recognizer(base, cosmos, RecognitionParameters{});
   LcmPublisher publisher(config.lcm.url, config.lcm.channels());
 
   const bool unpaced = options.unpaced || !options.replay.empty();
-  ScanLoopSettings loop_settings;
-  loop_settings.conditioning = config.conditioning;
-  loop_settings.tracking = config.tracking.tracker;
-  loop_settings.max_part_rows = config.max_part_rows();
-  loop_settings.builders = config.realtime.part_builders;
-  loop_settings.part_queue_slots = config.realtime.part_queue_slots;
-  loop_settings.wait_for_recognizer = unpaced;
+  ScanLoopSettings loop_settings{.conditioning = config.conditioning,
+                                 .tracking = config.tracking.tracker,
+                                 .cosmos = cosmos,
+                                 .max_part_rows = config.max_part_rows(),
+                                 .builders = config.realtime.part_builders,
+                                 .part_queue_slots = config.realtime.part_queue_slots,
+                                 .wait_for_recognizer = unpaced};
+  // The grid is never interpolated across an edge the fit treats as one.
+  loop_settings.conditioning.depth_jump_mm = cosmos.fit.depth_jump_mm;
   ScanLoop loop(loop_settings);
 
   PartRecognitionContext context;
   context.recognizer = &recognizer;
   context.model_base = &base;
+  context.cosmos = cosmos;
   for (const ModelPart& part : base.parts) {
     const PartEntry* entry = catalog.find(part.name);
     context.catalog_index_of_base_part.push_back(

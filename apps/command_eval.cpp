@@ -14,6 +14,7 @@
 
 #include "apps/command_registry.hpp"
 #include "core/input_error.hpp"
+#include "core/io/model_base_file.hpp"
 #include "scanner/scanner_config.hpp"
 #include "sim/evaluation/evaluation_report.hpp"
 #include "sim/evaluation/evaluation_scans.hpp"
@@ -91,12 +92,15 @@ void run(const EvalOptions& options) {
   fs::create_directories(options.out, error);
   if (error) throw InputError(options.out + ": cannot create directory (" + error.message() + ")");
 
-  const CosmosParameters cosmos;
-  const ModelBase base = read_model_base_for(options.model_base, cosmos);
+  const ModelBase base = read_model_base(options.model_base);
+  const CosmosParameters cosmos = model_base_cosmos_parameters(base, options.model_base);
   const PartCatalog catalog = read_part_catalog(find_part_catalog(options.catalog));
   ScannerParameters scanner =
       options.config.empty() ? ScannerParameters{} : read_scanner_config(options.config);
   if (options.noise_mm >= 0) scanner.z_noise_mm = options.noise_mm;
+  // The scans lose the belt as the base's views did.
+  scanner.background_height_mm =
+      model_base_view_conditioning(base, options.model_base).height_threshold_mm;
 
   const std::vector<EvaluationPart> parts = evaluation_parts(base, catalog, options.unknown);
   std::vector<EvaluationTest> plan = evaluation_plan(parts, options.tests, options.seed);

@@ -20,8 +20,7 @@ namespace {
 struct InspectOptions {
   std::filesystem::path range_path;
   std::filesystem::path out_dir;
-  int smoothing_iterations = SmoothingParameters{}.iterations;
-  int max_patches = SegmentationParameters{}.max_patches;
+  CosmosParameters cosmos;  // the defaults, with the options' overrides
 };
 
 void require_non_negative(const char* option, int value) {
@@ -37,8 +36,8 @@ std::size_t fitted_pixels(const ViewAnalysis& analysis) {
 }
 
 void run_inspect(const InspectOptions& options) {
-  require_non_negative("--smoothing-iterations", options.smoothing_iterations);
-  require_non_negative("--max-patches", options.max_patches);
+  require_non_negative("--smoothing-iterations", options.cosmos.smoothing.iterations);
+  require_non_negative("--max-patches", options.cosmos.segmentation.max_patches);
   const auto start = std::chrono::steady_clock::now();
 
   const RangeImage image = read_range_image(options.range_path);
@@ -46,9 +45,7 @@ void run_inspect(const InspectOptions& options) {
   if (data_pixels == 0)
     throw InputError(options.range_path.string() + ": no pixel has data (all NaN)");
 
-  CosmosParameters parameters;
-  parameters.smoothing.iterations = options.smoothing_iterations;
-  parameters.segmentation.max_patches = options.max_patches;
+  const CosmosParameters& parameters = options.cosmos;
   const ViewAnalysis analysis = analyze_view(image, parameters);
   if (fitted_pixels(analysis) == 0) {
     throw InputError(options.range_path.string() +
@@ -85,12 +82,12 @@ void install_inspect(CLI::App& root) {
       ->type_name("DIR")
       ->required();
   command
-      ->add_option("--smoothing-iterations", options->smoothing_iterations,
+      ->add_option("--smoothing-iterations", options->cosmos.smoothing.iterations,
                    "curvature-consistency iterations (>= 0)")
       ->type_name("N")
       ->capture_default_str();
   command
-      ->add_option("--max-patches", options->max_patches,
+      ->add_option("--max-patches", options->cosmos.segmentation.max_patches,
                    "adaptive CSMP budget, §5.4.3 (>= 0; 0 = fixed shape-diameter limit)")
       ->type_name("N")
       ->capture_default_str();

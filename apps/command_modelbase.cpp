@@ -17,7 +17,7 @@
 #include "apps/model_base_progress.hpp"
 #include "core/input_error.hpp"
 #include "core/io/model_base_file.hpp"
-#include "scanner/scanner_config.hpp"
+#include "realtime/config/cell_config.hpp"
 #include "sim/model_base_build/model_base_builder.hpp"
 #include "sim/part_catalog.hpp"
 
@@ -89,9 +89,12 @@ void run_build(const BuildOptions& options) {
   std::error_code error;
   if (!fs::is_directory(parent, error))
     fail("build", out.string() + ": no directory " + parent.string());
-  const ModelBaseBuildSettings settings = build_settings(options);
-  const ScannerParameters scanner =
-      options.config.empty() ? ScannerParameters{} : read_scanner_config(options.config);
+  ModelBaseBuildSettings settings = build_settings(options);
+  // The cell config's scanner and conditioning (whose belt threshold the views are cut at).
+  const CellConfig config =
+      options.config.empty() ? CellConfig{} : load_cell_config(options.config);
+  const ScannerParameters& scanner = config.scanner;
+  settings.conditioning = config.conditioning;
   const PartCatalog catalog = read_part_catalog(find_part_catalog(options.catalog));
 
   const auto start = std::chrono::steady_clock::now();
@@ -156,7 +159,7 @@ void install(CLI::App& root) {
       ->type_name("N");
   build
       ->add_option("--config", build_options->config,
-                   "cell config whose scanner: section overrides the defaults")
+                   "cell config whose scanner: and conditioning: sections override the defaults")
       ->type_name("FILE");
   char level_help[96];
   std::snprintf(level_help, sizeof level_help,

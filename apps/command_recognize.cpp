@@ -9,6 +9,7 @@
 #include "apps/command_registry.hpp"
 #include "apps/recognition_json.hpp"
 #include "core/input_error.hpp"
+#include "core/io/model_base_file.hpp"
 #include "core/io/range_image_file.hpp"
 #include "core/recognition/recognizer.hpp"
 #include "sim/model_base_build/model_base_parameters.hpp"
@@ -51,8 +52,9 @@ void print_summary(const RecognitionResult& result, const ModelBase& base) {
 void run(const RecognizeOptions& options) {
   if (options.model_base.empty()) throw InputError("recognize: missing --modelbase FILE");
   if (options.range_image.empty()) throw InputError("recognize: missing RANGE image");
-  const CosmosParameters cosmos;
-  const ModelBase base = read_model_base_for(options.model_base, cosmos);
+  const ModelBase base = read_model_base(options.model_base);
+  // A scene is analysed exactly as the base's views were.
+  const CosmosParameters cosmos = model_base_cosmos_parameters(base, options.model_base);
   const RangeImage scene = read_range_image(options.range_image);
   const Recognizer recognizer(base, cosmos, recognition_parameters(options));
   const RecognitionResult result = recognizer.recognize(scene);

@@ -14,6 +14,7 @@
 #include "apps/sim_frame_dump.hpp"
 #include "core/input_error.hpp"
 #include "core/io/range_image_file.hpp"
+#include "realtime/config/cell_config.hpp"
 #include "scanner/scanner_config.hpp"
 #include "sim/mesh.hpp"
 #include "sim/model_views.hpp"
@@ -91,8 +92,13 @@ LoadedPart load_part(const std::string& command, const SimOptions& options) {
 
 ScannerParameters scanner_parameters(const std::string& command, const SimOptions& options,
                                      std::uint64_t seed) {
-  ScannerParameters parameters =
-      options.config.empty() ? ScannerParameters{} : read_scanner_config(options.config);
+  ScannerParameters parameters;
+  if (!options.config.empty()) {
+    const CellConfig config = load_cell_config(options.config);
+    parameters = config.scanner;
+    // Range images lose the belt at the cell's threshold, as its model views and scans do.
+    parameters.background_height_mm = config.conditioning.height_threshold_mm;
+  }
   parameters.seed = seed;
   if (!options.noise_mm.empty()) {
     parameters.z_noise_mm =
@@ -237,7 +243,7 @@ void add_part_options(CLI::App* command, SimOptions& options) {
       ->capture_default_str();
   command
       ->add_option("--config", options.config,
-                   "cell config whose scanner: section overrides the defaults")
+                   "cell config whose scanner: and conditioning: sections override the defaults")
       ->type_name("FILE");
 }
 

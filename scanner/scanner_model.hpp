@@ -22,12 +22,32 @@
 //     |x| <= 100 mm, so every catalog part (<= 150 mm) fits in any pose that is not taller
 //     than that; the camera's view narrows with height, so near the field's edges less.
 #include <cstdint>
+#include <span>
 
+#include "core/parameter_visitor.hpp"
+#include "scanner/conditioning_parameters.hpp"
 #include "scanner/triangulation_geometry.hpp"
 
 namespace cosmos {
 
 enum class LaserModel : std::uint8_t { kFan, kParallel };
+
+inline std::span<const ParameterChoice<LaserModel>> parameter_choices(LaserModel) {
+  static constexpr ParameterChoice<LaserModel> kChoices[] = {{LaserModel::kFan, "fan"},
+                                                             {LaserModel::kParallel, "parallel"}};
+  return kChoices;
+}
+
+// What the simulated scanner delivers: kProfile calibrated profiles straight from the
+// geometry, kCamera sensor frames turned into profiles by the firmware's stripe extraction
+// (sim/simulated_scanner.hpp).
+enum class ScanMode : std::uint8_t { kProfile, kCamera };
+
+inline std::span<const ParameterChoice<ScanMode>> parameter_choices(ScanMode) {
+  static constexpr ParameterChoice<ScanMode> kChoices[] = {{ScanMode::kProfile, "profile"},
+                                                           {ScanMode::kCamera, "camera"}};
+  return kChoices;
+}
 
 // Camera mode: how the sensor image of the stripe is drawn. Levels are fractions of the
 // sensor's full scale, so they mean the same for 8-, 10-, 12- and 16-bit frames.
@@ -41,6 +61,26 @@ struct CameraFrameParameters {
   double full_well_electrons = 5000.0;  // full scale in electrons: sets the shot noise
   double threshold_level = 0.08;        // extraction threshold (above ambient + 4 σ read noise)
   int background_frames = 4;            // pre-rendered ambient + read-noise frames (see renderer)
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("bit_depth", bit_depth, "8: 8-bit frames; 10, 12, 16: 16-bit words", Range{8, 16});
+    v("stripe_sigma_px", stripe_sigma_px, "Gaussian stripe profile across the rows, px",
+      Range{0.3, 20});
+    v("stripe_peak_level", stripe_peak_level,
+      "peak at normal incidence on a white surface, of full scale", Range::above(0, 1));
+    v("ambient_level", ambient_level, "uniform ambient light, of full scale", Range::below(0, 1));
+    v("read_noise_level", read_noise_level, "sigma of dark and read noise, of full scale",
+      Range{0, 0.5});
+    v("speckle_contrast", speckle_contrast, "sigma of the multiplicative laser speckle",
+      Range{0, 1});
+    v("full_well_electrons", full_well_electrons, "full scale in electrons (shot noise)",
+      Range{100, 1e7});
+    v("threshold_level", threshold_level, "stripe extraction threshold, of full scale",
+      Range::open(0, 1));
+    v("background_frames", background_frames, "pre-rendered ambient and read-noise frames",
+      Range{1, 64});
+  }
 };
 
 struct ScannerParameters {
@@ -73,12 +113,49 @@ struct ScannerParameters {
   double reflectivity = 1.0;
 
   // Measurement noise (profile mode: Gaussian on z; camera mode: image noise instead) and
-  // its seed, and the belt background removal of range images.
+  // its seed.
   double z_noise_mm = 0.02;
   std::uint64_t seed = 1;
-  double background_height_mm = 0.5;
+  // The belt threshold of simulated range images (sim/range_image_scan.hpp). Not a key of
+  // its own: it is the cell's conditioning.height_threshold_mm, which the model-base build
+  // sets here for its views, so model views and live scans lose the same belt.
+  double background_height_mm = ConditioningParameters{}.height_threshold_mm;
 
   CameraFrameParameters camera;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("encoder_mm_per_tick", encoder_mm_per_tick, "belt travel per encoder tick, mm",
+      Range::above(0, 100));
+    v("encoder_ticks_per_profile", encoder_ticks_per_profile, "encoder ticks per profile",
+      Range{1, 100000});
+    v("line_rate_hz", line_rate_hz, "profiles per second (paces the belt in time)",
+      Range::above(0, 1e6));
+    v("triangulation_angle_deg", triangulation_angle_deg,
+      "camera axis against the laser sheet, deg", Range{5, 75});
+    v("camera_height_mm", camera_height_mm, "camera centre above the belt, mm", Range{50, 5000});
+    v("laser_height_mm", laser_height_mm, "fan source above the belt centre, mm", Range{50, 5000});
+    v("laser_model", laser_model, "fan: a line laser's fan (laser shadows); parallel: none");
+    v("field_of_view_mm", field_of_view_mm, "profile width across the belt at belt height, mm",
+      Range{10, 5000});
+    v("points_per_profile", points_per_profile, "samples across the field of view",
+      Range{16, 8192});
+    v("sensor_width_px", sensor_width_px, "sensor columns", Range{64, 8192});
+    v("sensor_height_px", sensor_height_px, "sensor rows", Range{16, 8192});
+    v("roi_height_px", roi_height_px, "rows of the region of interest (<= sensor_height_px)",
+      Range{16, 8192});
+    v("belt_row_fraction_of_roi", belt_row_fraction_of_roi,
+      "where the belt line falls in the ROI, of its rows", Range::open(0, 1));
+    v("max_incidence_deg", max_incidence_deg, "more oblique laser incidence: dropout, deg",
+      Range::open(0, 90));
+    v("min_reflected_intensity", min_reflected_intensity,
+      "weaker Lambertian reflection: dropout, of a white surface's", Range{0, 1});
+    v("reflectivity", reflectivity, "surface reflectivity", Range::above(0, 1));
+    v("z_noise_mm", z_noise_mm, "profile-mode height noise sigma, mm", Range{0, 10});
+    v("seed", seed, "seed of every random number of a simulated scan");
+    v.retired("background_height_mm", "conditioning.height_threshold_mm");
+    v("camera", camera, "camera-mode frame drawing");
+  }
 
   double profile_step_mm() const { return encoder_mm_per_tick * encoder_ticks_per_profile; }
   double belt_speed_mm_per_s() const { return profile_step_mm() * line_rate_hz; }

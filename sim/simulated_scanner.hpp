@@ -26,8 +26,6 @@
 
 namespace cosmos {
 
-enum class ScanMode : std::uint8_t { kProfile, kCamera };
-
 class SimulatedScanner {
  public:
   // The scene must outlive the scanner and be committed before acquire().

@@ -1,5 +1,6 @@
 #include "core/io/parameters_text.hpp"
 
+#include <cstdint>
 #include <nlohmann/json.hpp>
 
 namespace cosmos {
@@ -77,6 +78,57 @@ std::optional<ParameterDifference> first_parameter_difference(std::string_view e
     ++a;
   }
   return std::nullopt;
+}
+
+std::optional<ParameterValues> ParameterValues::parse(std::string_view text) {
+  auto leaves = leaves_of(text);
+  if (!leaves) return std::nullopt;
+  ParameterValues values;
+  values.leaves_ = std::move(*leaves);
+  return values;
+}
+
+namespace {
+
+std::optional<json> leaf(const std::map<std::string, std::string>& leaves, const std::string& key) {
+  const auto found = leaves.find(key);
+  if (found == leaves.end()) return std::nullopt;
+  return json::parse(found->second);
+}
+
+}  // namespace
+
+std::optional<double> ParameterValues::number(const std::string& key) const {
+  const auto value = leaf(leaves_, key);
+  if (!value || !value->is_number()) return std::nullopt;
+  return value->get<double>();
+}
+
+std::optional<std::int64_t> ParameterValues::integer(const std::string& key) const {
+  const auto value = leaf(leaves_, key);
+  if (!value || !value->is_number_integer()) return std::nullopt;
+  if (value->is_number_unsigned() &&
+      value->get<std::uint64_t>() > static_cast<std::uint64_t>(INT64_MAX))
+    return std::nullopt;
+  return value->get<std::int64_t>();
+}
+
+std::optional<std::uint64_t> ParameterValues::unsigned_integer(const std::string& key) const {
+  const auto value = leaf(leaves_, key);
+  if (!value || !value->is_number_unsigned()) return std::nullopt;
+  return value->get<std::uint64_t>();
+}
+
+std::optional<bool> ParameterValues::flag(const std::string& key) const {
+  const auto value = leaf(leaves_, key);
+  if (!value || !value->is_boolean()) return std::nullopt;
+  return value->get<bool>();
+}
+
+std::optional<std::string> ParameterValues::text(const std::string& key) const {
+  const auto value = leaf(leaves_, key);
+  if (!value || !value->is_string()) return std::nullopt;
+  return value->get<std::string>();
 }
 
 }  // namespace cosmos

@@ -27,6 +27,7 @@
 #include <span>
 
 #include "core/matching/patch_group.hpp"
+#include "core/parameter_visitor.hpp"
 
 namespace cosmos {
 
@@ -38,6 +39,15 @@ struct GoodnessParameters {
   // noise for the 5x5 fits of §3.5.1.
   double curvedness_floor_per_mm = 0.01;
   double coarseness_exponent = 1.0;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("shape_index_scale", shape_index_scale, "|dS_I| at which S_I similarity reaches 0",
+      Range::above(0, 1));
+    v("curvedness_floor_per_mm", curvedness_floor_per_mm,
+      "curvedness differences below this are noise, 1/mm", Range{0, 10});
+    v("coarseness_exponent", coarseness_exponent, "weight of a match's coarseness", Range{0, 10});
+  }
 };
 
 // One side of a MappedPair as §5.3.3 sees it: the group and the patches adjacent to it.

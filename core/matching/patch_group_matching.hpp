@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "core/matching/correspondence_goodness.hpp"
+#include "core/parameter_visitor.hpp"
 #include "core/representation/cosmos_view.hpp"
 
 namespace cosmos {
@@ -42,6 +43,17 @@ struct PatchGroupMatchParameters {
   // adjacency is weak and need not be matched (§5.4.3); 0: every adjacency must match.
   double min_adjacency_strength = 0.05;
   GoodnessParameters goodness;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("group_size_limit", group_size_limit, "patches grown around lp or rp (§5.3.2)", Range{1, 64});
+    v("max_operations", max_operations, "operations of the whole match", Range{1, 1e12});
+    v("max_operations_per_refine", max_operations_per_refine, "operations of one refine",
+      Range{1, 1e12});
+    v("min_adjacency_strength", min_adjacency_strength,
+      "weaker adjacencies need not match (§5.4.3), of the smaller perimeter", Range{0, 1});
+    v("goodness", goodness, "correspondence goodness (§5.3.3)");
+  }
 };
 
 enum class PatchGroupMatchStatus {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/matching/patch_group_matching.hpp"
+#include "core/parameter_visitor.hpp"
 #include "core/representation/cosmos_view.hpp"
 #include "core/rigid_transform.hpp"
 
@@ -54,6 +55,14 @@ struct PoseFromPatchesParameters {
   // A group whose patch normals nearly cancel (|area-weighted mean| below this, e.g. a whole
   // cylinder) has no orientation (§3.2.2, the centre of the unit sphere): left out of R.
   double min_group_normal_length = 0.3;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("min_normal_spread_deg", min_normal_spread_deg, "less spread normals fix no rotation, deg",
+      Range{0, 180});
+    v("min_group_normal_length", min_group_normal_length,
+      "shorter mean group normals have no orientation", Range{0, 1});
+  }
 };
 
 struct PoseFromPatches {

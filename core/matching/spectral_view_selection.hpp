@@ -5,19 +5,34 @@
 // distance on the ten moments as in the thesis (Eq. 4.3), or Mahalanobis with the pooled
 // within-cluster covariance as §7.2.4 suggests.
 #include <Eigen/Core>
+#include <span>
 #include <vector>
 
 #include "core/modelbase/model_base.hpp"
+#include "core/parameter_visitor.hpp"
 #include "core/representation/shape_spectrum.hpp"
 
 namespace cosmos {
 
 enum class SpectralDistance { kEuclidean, kMahalanobis };
 
+inline std::span<const ParameterChoice<SpectralDistance>> parameter_choices(SpectralDistance) {
+  static constexpr ParameterChoice<SpectralDistance> kChoices[] = {
+      {SpectralDistance::kEuclidean, "euclidean"}, {SpectralDistance::kMahalanobis, "mahalanobis"}};
+  return kChoices;
+}
+
 struct SpectralSelectionParameters {
   int best_clusters = 5;  // K
   int best_views = 5;     // m
   SpectralDistance distance = SpectralDistance::kEuclidean;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("best_clusters", best_clusters, "K best view clusters (§5.2)", Range{1, 1000});
+    v("best_views", best_views, "m best views of them (§5.2)", Range{1, 1000});
+    v("distance", distance, "distance between moment vectors");
+  }
 };
 
 struct SpectralCandidate {

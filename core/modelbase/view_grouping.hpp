@@ -20,6 +20,7 @@
 
 #include "core/modelbase/model_base.hpp"
 #include "core/modelbase/view_clustering.hpp"
+#include "core/parameter_visitor.hpp"
 
 namespace cosmos {
 
@@ -28,6 +29,13 @@ inline constexpr double kDefaultViewCutLevel = 8e-4;
 struct ViewGroupingParameters {
   double cut_level = kDefaultViewCutLevel;  // Eq. 4.3 dissimilarity (complete-link height)
   int cluster_count = 0;                    // > 0: cut each part's dendrogram to this many
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("cut_level", cut_level, "dendrogram cut, Eq. 4.3 dissimilarity (when cluster_count is 0)",
+      Range::above(0, 1e6));
+    v("cluster_count", cluster_count, "> 0: this many clusters per part", Range{0, 320});
+  }
 };
 
 struct ViewGroupingResult {

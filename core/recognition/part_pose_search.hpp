@@ -16,6 +16,7 @@
 
 #include "core/modelbase/model_base.hpp"
 #include "core/modelbase/model_surface.hpp"
+#include "core/parameter_visitor.hpp"
 #include "core/registration/part_distance_field.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/registration/view_registration.hpp"
@@ -47,6 +48,32 @@ struct PartPoseSearchParameters {
   // applies it to whole parts too).
   double worst_kept_score_mm2(double best_mm2) const {
     return kept_score_factor * best_mm2 + kept_score_margin_mm2;
+  }
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("scoring_points", scoring_points, "scene control points that score a pose", Range{1, 100000});
+    v("start_scoring_points", start_scoring_points, "the same for the first two stages",
+      Range{1, 100000});
+    v("in_plane_turns", in_plane_turns, "turns about the viewing axis per coarse view",
+      Range{1, 360});
+    v("field_truncation_mm", field_truncation_mm, "farther points count as this far, mm",
+      Range::above(0, 1e3));
+    v("field_candidates", field_candidates, "kept after scoring the starts", Range{1, 1000000});
+    v("field_aligned", field_aligned, "kept after one alignment step", Range{1, 1000000});
+    v("field_iterations", field_iterations, "alignment steps for those", Range{0, 1000});
+    v("refined_hypotheses", refined_hypotheses, "registered on their nearest view",
+      Range{1, 100000});
+    v("refinement_iterations", refinement_iterations, "registration iterations there",
+      Range{0, 1000});
+    v("refinement_gate", refinement_gate, "poses that fail it are not registered");
+    v("best_hypotheses", best_hypotheses, "poses returned, best first", Range{1, 1000});
+    v("same_pose_rad", same_pose_rad, "closer poses are one, rad", Range{0, 3.15});
+    v("same_pose_mm", same_pose_mm, "closer poses are one, mm", Range{0, 1e3});
+    v("kept_score_factor", kept_score_factor, "poses scoring worse than factor x best ...",
+      Range{1, 1e6});
+    v("kept_score_margin_mm2", kept_score_margin_mm2, "... + margin are dropped, mm^2",
+      Range{0, 1e6});
   }
 };
 
@@ -108,6 +135,16 @@ struct FieldAlignedStartParameters {
   int aligned_starts = 4;  // the best-scoring starts, aligned
   int field_iterations = 10;
   double field_truncation_mm = 10.0;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("scoring_points", scoring_points, "scene control points that score a start",
+      Range{1, 100000});
+    v("aligned_starts", aligned_starts, "the best-scoring starts, aligned", Range{1, 1000});
+    v("field_iterations", field_iterations, "alignment steps for each", Range{0, 1000});
+    v("field_truncation_mm", field_truncation_mm, "farther points count as this far, mm",
+      Range::above(0, 1e3));
+  }
 };
 
 // `starts` are T_model_scene on `view` (a view of the part `model` belongs to). Returns at

@@ -11,6 +11,7 @@
 
 #include "core/modelbase/model_base.hpp"
 #include "core/modelbase/model_surface.hpp"
+#include "core/parameter_visitor.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/registration/view_registration.hpp"
 #include "core/rigid_transform.hpp"
@@ -23,6 +24,16 @@ struct PartSupportParameters {
   // At most this many of them, the nearest first: a 320-view base has ~37 within 40 degrees,
   // where 12 (~20 degrees) already cover what one view misses.
   int max_neighbour_views = 20;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("inlier_distance_mm", inlier_distance_mm, "scene points this close are explained, mm",
+      Range::above(0, 100));
+    v("neighbour_view_angle_deg", neighbour_view_angle_deg,
+      "the part's views this close to the matched one join its surface, deg", Range{0, 180});
+    v("max_neighbour_views", max_neighbour_views, "at most this many of them, nearest first",
+      Range{0, 320});
+  }
 };
 
 struct PartSupport {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/matching/pose_from_patches.hpp"
+#include "core/parameter_visitor.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/rigid_transform.hpp"
 
@@ -16,6 +17,11 @@ namespace cosmos {
 
 struct PoseHypothesisParameters {
   int in_plane_turns = 12;  // evenly spaced turns about +z, 0 = none
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("in_plane_turns", in_plane_turns, "evenly spaced turns about +z; 0: none", Range{0, 360});
+  }
 };
 
 // Turn k of `turns` evenly spaced ones about the viewing axis (+z), taking the scene's

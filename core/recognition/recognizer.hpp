@@ -27,6 +27,7 @@
 #include "core/matching/pose_from_patches.hpp"
 #include "core/matching/spectral_view_selection.hpp"
 #include "core/modelbase/model_base.hpp"
+#include "core/parameter_visitor.hpp"
 #include "core/range_image.hpp"
 #include "core/recognition/part_pose_search.hpp"
 #include "core/recognition/part_support.hpp"
@@ -92,6 +93,43 @@ struct RecognitionParameters {
   double plausible_support = 0.45;
   double max_rms_mm = 0.12;
   int min_scene_points = 30;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("selection", selection, "spectral model-view selection (§5.2)");
+    v("matching", matching, "patch-group graph matching (§5.3)");
+    v("pose", pose, "the pose a patch correspondence implies (§5.3.5)");
+    v("registration", registration, "view registration (ch. 6)");
+    v("scene_points", scene_points, "the scene's control points (§6.7.1)");
+    v("min_dense_scene_points", min_dense_scene_points, "fewer: halve the stride",
+      Range{0, 1000000});
+    v("in_plane_hypotheses", in_plane_hypotheses, "turns about the viewing axis per view",
+      Range{0, 360});
+    v("field_starts", field_starts, "verification's starts aligned in the part's field");
+    v("registered_hypotheses", registered_hypotheses, "starts registered per selected view",
+      Range{1, 1000});
+    v("registration_gate", registration_gate, "a start that fails it is not registered");
+    v("coarse_points", coarse_points, "spread scene points of the coarse passes",
+      Range{1, 1000000});
+    v("coarse_registration_iterations", coarse_registration_iterations, "coarse passes, at most",
+      Range{0, 1000});
+    v("fine_registration_iterations", fine_registration_iterations, "passes on all points, at most",
+      Range{0, 1000});
+    v("sufficient_support", sufficient_support, "verification stops at this part support",
+      Range{0, 1});
+    v("support", support, "what counts as explained scene surface");
+    v("searched_parts", searched_parts, "parts the pose search falls back to", Range{0, 100000});
+    v("convincing_field_fit_mm2", convincing_field_fit_mm2,
+      "a part whose best field pose fits this well is registered at once, mm^2", Range{0, 1e6});
+    v("search", search, "the pose search over a part's views");
+    v("field", field, "the parts' distance fields");
+    v("min_inlier_fraction", min_inlier_fraction, "less support: rejected as unknown", Range{0, 1});
+    v("plausible_support", plausible_support, "below this on the coarse points: judged on them",
+      Range{0, 1});
+    v("max_rms_mm", max_rms_mm, "larger RMS residual: rejected, mm", Range::above(0, 100));
+    v("min_scene_points", min_scene_points, "fewer scene control points: rejected",
+      Range{0, 1000000});
+  }
 };
 
 enum class RecognitionStatus { kOk, kRejected };

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "core/parameter_visitor.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/rigid_transform.hpp"
 
@@ -21,6 +22,12 @@ namespace cosmos {
 struct PartDistanceFieldParameters {
   double voxel_mm = 2.0;
   double margin_mm = 12.0;  // the grid extends this far beyond the points
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("voxel_mm", voxel_mm, "distance field voxel, mm", Range::above(0, 100));
+    v("margin_mm", margin_mm, "the field extends this far beyond the part, mm", Range{0, 1e3});
+  }
 };
 
 class PartDistanceField {
@@ -84,6 +91,13 @@ struct FieldGate {
   bool passes(const RegistrationPoints& scene, const PartDistanceField& field,
               const RigidTransform& T_part_scene) const {
     return field_fraction_within(scene, field, T_part_scene, distance_mm) >= min_fraction;
+  }
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("distance_mm", distance_mm, "scene points this close to the part count, mm",
+      Range::above(0, 1e3));
+    v("min_fraction", min_fraction, "a pose passes with this share of them", Range{0, 1});
   }
 };
 

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/parameter_visitor.hpp"
 #include "core/range_image.hpp"
 #include "core/surface/darboux_frame_field.hpp"
 
@@ -40,6 +41,20 @@ struct RegistrationPointParameters {
   // The sensor's z noise standard deviation; 0 = estimate it as the median fit residual of
   // the candidate windows (§6.6: only second-order statistics of the noise are needed).
   double z_noise_sigma_mm = 0.0;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("stride_px", stride_px, "one control point per stride^2 pixels (§6.7.1)", Range{1, 64});
+    v("window_size", window_size, "fit window, pixels (odd; §6.5.1: 5)", Range{3, 15});
+    v("depth_jump_mm", depth_jump_mm, "a window across a larger 4-neighbour |dz| is not taken, mm",
+      Range::above(0, 1e4));
+    v("quadric_fit", quadric_fit, "quadric fit; false: the thesis's plane (Eq. 6.7)");
+    v("max_residual_noise_ratio", max_residual_noise_ratio,
+      "rougher windows (fit residual over noise) are not taken (§6.7.1)", Range::above(0, 1e3));
+    v("max_tilt_deg", max_tilt_deg, "steeper surface is not taken, deg", Range::above(0, 90));
+    v("z_noise_sigma_mm", z_noise_sigma_mm, "sensor z noise sigma, mm; 0: estimated per view",
+      Range{0, 10});
+  }
 };
 
 // The local fit z(dx, dy) = sum_k coefficient_k * basis_k(dx, dy), offsets in mm from the

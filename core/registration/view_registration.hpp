@@ -24,8 +24,10 @@
 // set changes; a period-2 oscillation below the tolerances (a point at the model's edge
 // matched every other pass) also counts as converged. Budgets are iterations and
 // intersection steps, never time.
+#include <span>
 #include <vector>
 
+#include "core/parameter_visitor.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/rigid_transform.hpp"
 
@@ -35,6 +37,14 @@ enum class RegistrationEstimator {
   chen_medioni,      // §6.4, Eq. 6.4: every d_s^2 counts the same
   minimum_variance,  // §6.6, Eq. 6.23: d_s^2 / sigma_ds^2
 };
+
+inline std::span<const ParameterChoice<RegistrationEstimator>> parameter_choices(
+    RegistrationEstimator) {
+  static constexpr ParameterChoice<RegistrationEstimator> kChoices[] = {
+      {RegistrationEstimator::chen_medioni, "chen_medioni"},
+      {RegistrationEstimator::minimum_variance, "minimum_variance"}};
+  return kChoices;
+}
 
 struct RegistrationParameters {
   RegistrationEstimator estimator = RegistrationEstimator::minimum_variance;
@@ -52,6 +62,29 @@ struct RegistrationParameters {
   double convergence_rotation_rad = 1e-6;
   double convergence_translation_mm = 1e-5;
   int min_inliers = 12;  // 6 parameters, twice over
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("estimator", estimator, "chen_medioni (§6.4) or minimum_variance (§6.6)");
+    v("max_iterations", max_iterations, "iteration budget", Range{1, 10000});
+    v("max_intersection_steps", max_intersection_steps,
+      "per control point and iteration (correspondence budget)", Range{1, 1000});
+    v("max_correspondence_distance_mm", max_correspondence_distance_mm,
+      "farther correspondences are dropped, mm", Range::above(0, 1e4));
+    v("max_normal_angle_deg", max_normal_angle_deg, "normals further apart do not correspond, deg",
+      Range::above(0, 180));
+    v("rejection_mad_factor", rejection_mad_factor, "outliers beyond this many MADs",
+      Range::above(0, 100));
+    v("min_rejection_distance_mm", min_rejection_distance_mm,
+      "outlier distance never below this, mm", Range{0, 1e3});
+    v("min_distance_sigma_mm", min_distance_sigma_mm, "MVE: sigma_ds never below this, mm",
+      Range::above(0, 10));
+    v("convergence_rotation_rad", convergence_rotation_rad, "converged below this rotation, rad",
+      Range::above(0, 1));
+    v("convergence_translation_mm", convergence_translation_mm, "and below this translation, mm",
+      Range::above(0, 10));
+    v("min_inliers", min_inliers, "fewer correspondences: no estimate", Range{6, 1000000});
+  }
 };
 
 enum class RegistrationStatus {

@@ -1,26 +1,29 @@
 #pragma once
-// The cell configuration (config/cell.yaml): one struct per section, every field with its
-// default, so a missing key (or section) keeps it. Sections:
-//   scanner:      ScannerParameters, parsed by scanner/scanner_config.hpp (read_scanner_config)
+// The cell configuration (config/cell.yaml), read once into the settings structs the cell's
+// parts take as they are. Every field has its default, so a missing key (or section) keeps it;
+// each struct's visit() lists its keys with their ranges (docs/parameters.md is generated from
+// them). Sections:
+//   scanner:      ScannerParameters (scanner/scanner_model.hpp)
 //   cell:         catalog, model base, the scanner's pose in the cell
-//   conditioning: ConditioningParameters (realtime/loop/profile_conditioner.hpp)
+//   conditioning: ConditioningParameters (scanner/conditioning_parameters.hpp)
 //   tracking:     PartTrackerParameters (realtime/loop/part_tracker.hpp) and the longest part
 //   lcm:          where and on which channels the cell publishes
 //   realtime:     the acquisition thread's scheduling and the queue sizes
-//   sim_source:   the parts the simulated source sends down the belt
-// An unknown section or key, a value of the wrong type or out of its range throws InputError
-// `file:LINE: section.key: reason`; a missing file or a YAML syntax error one line naming the
-// file.
-#include <cstdint>
+//   sim_source:   SimulatedSourceSettings (realtime/config/sim_source_settings.hpp)
+// The cell's COSMOS parameters are not here: it takes those its model base was built with.
+// An unknown section or key, a retired key, a value of the wrong type or out of its range
+// throws InputError `file:LINE: section.key: reason`; a missing file or a YAML syntax error one
+// line naming the file.
 #include <filesystem>
 #include <string>
-#include <vector>
 
+#include "core/parameter_visitor.hpp"
 #include "core/rigid_transform.hpp"
+#include "realtime/config/sim_source_settings.hpp"
 #include "realtime/lcm/lcm_channels.hpp"
 #include "realtime/loop/part_tracker.hpp"
-#include "realtime/loop/profile_conditioner.hpp"
 #include "realtime/rt/realtime_settings.hpp"
+#include "scanner/conditioning_parameters.hpp"
 #include "scanner/scanner_model.hpp"
 
 namespace cosmos {
@@ -37,6 +40,16 @@ struct CellSettings {
   // YAML, rotation_deg [rx, ry, rz] gives R = Rz Ry Rx (Eq. 6.2 order) and translation_mm t.
   // Default identity: the cell frame is the scanner frame until the cell is calibrated.
   RigidTransform T_cell_scanner;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("catalog", catalog, "the part catalog; relative: to the config file's directory");
+    v("model_base", model_base, "the model base file; empty: built once and cached");
+    v("model_views", model_views, "view-sphere directions per part (§4.5: 320)", Range{1, 320});
+    v("T_cell_scanner", T_cell_scanner,
+      "scanner frame in the cell frame: rotation_deg [rx, ry, rz] (R = Rz Ry Rx), "
+      "translation_mm [x, y, z]");
+  }
 };
 
 struct TrackingSettings {
@@ -44,6 +57,12 @@ struct TrackingSettings {
   // Longer parts are cut (their extra rows dropped and counted): sets IncrementalCosmos's
   // max_rows, see CellConfig::max_part_rows().
   double max_part_length_mm = 300.0;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v.fields(tracker);
+    v("max_part_length_mm", max_part_length_mm, "longer parts are cut, mm", Range::above(0, 1e4));
+  }
 };
 
 struct LcmSettings {
@@ -55,6 +74,16 @@ struct LcmSettings {
   double status_period_s = 1.0;   // cell_status_t period
 
   LcmChannelNames channels() const { return {pose_channel, status_channel, profile_channel}; }
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("url", url, "LCM network; ttl=0 keeps the traffic on this host");
+    v("pose_channel", pose_channel, "part_pose_t, one per part");
+    v("status_channel", status_channel, "cell_status_t, every status_period_s");
+    v("profile_channel", profile_channel, "range_profile_t, for record and replay");
+    v("publish_profiles", publish_profiles, "every profile on profile_channel");
+    v("status_period_s", status_period_s, "cell_status_t period, s", Range::above(0, 3600));
+  }
 };
 
 struct RealtimeQueueSettings {
@@ -63,21 +92,18 @@ struct RealtimeQueueSettings {
   int part_builders = 8;          // parts in flight (ScanLoopSettings::builders)
   int part_queue_slots = 8;       // loop -> recognizer completed parts
   int pose_queue_slots = 32;      // recognizer -> publisher poses
-};
 
-enum class SimPoseMode : std::uint8_t {
-  kRandom,   // uniformly random orientation (sim/part_pose.hpp random_rotation)
-  kResting,  // settled on a face of the convex hull (resting_rotation)
-};
-
-struct SimSourceSettings {
-  int parts = 20;             // parts sent down the belt, then the source ends
-  std::uint64_t seed = 7;     // the order, poses and placement of the parts
-  double part_gap_mm = 40.0;  // belt between consecutive parts' bounding boxes
-  SimPoseMode pose = SimPoseMode::kRandom;
-  // Catalog part names the source picks from; empty: every catalog part. The names are
-  // checked against the catalog by whoever loads it.
-  std::vector<std::string> part_names;
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v.fields(thread);
+    v("profile_ring_slots", profile_ring_slots, "recorded profiles queued for publishing",
+      Range{1, 1 << 20});
+    v("part_builders", part_builders, "parts in flight (open, queued, being recognized)",
+      Range{1, 64});
+    v("part_queue_slots", part_queue_slots, "completed parts queued for the recognizer",
+      Range{1, 1024});
+    v("pose_queue_slots", pose_queue_slots, "poses queued for the publisher", Range{1, 4096});
+  }
 };
 
 struct CellConfig {
@@ -88,10 +114,22 @@ struct CellConfig {
   TrackingSettings tracking;
   LcmSettings lcm;
   RealtimeQueueSettings realtime;
-  SimSourceSettings sim_source;
+  SimulatedSourceSettings sim_source;
 
   // Rows (profiles) of the longest part: max_part_length_mm over the belt step per profile.
   int max_part_rows() const;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("scanner", scanner, "the scanner and conveyor (scanner/scanner_model.hpp)");
+    v("cell", cell, "the catalog, the model base and the scanner's pose in the cell");
+    v("conditioning", conditioning,
+      "profiles onto the COSMOS grid (realtime/loop/profile_conditioner.hpp)");
+    v("tracking", tracking, "parts on the belt (realtime/loop/part_tracker.hpp)");
+    v("lcm", lcm, "where the cell publishes");
+    v("realtime", realtime, "the acquisition thread and the queues between threads");
+    v("sim_source", sim_source, "the simulated source (sim/source/simulated_source.hpp)");
+  }
 };
 
 CellConfig load_cell_config(const std::filesystem::path& yaml_path);

@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/parameter_visitor.hpp"
+
 namespace cosmos {
 
 struct PartTrackerParameters {
@@ -21,6 +23,19 @@ struct PartTrackerParameters {
   // surface into pieces a few millimetres apart. 0: only touching runs continue a part.
   int link_gap_rows = 0;
   std::int64_t min_pixels = 50;  // smaller completed components are noise
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("max_open_parts", max_open_parts, "parts open at once; more: runs dropped and counted",
+      Range{1, 4096});
+    v("max_runs_per_row", max_runs_per_row, "runs of data per row; more: dropped and counted",
+      Range{1, 65536});
+    v("link_gap_columns", link_gap_columns, "runs this many columns apart still touch",
+      Range{0, 65536});
+    v("link_gap_rows", link_gap_rows, "rows a part stays open without data", Range{0, 65536});
+    v("min_pixels", min_pixels, "smaller completed components are noise",
+      Range{0, 1099511627776.0});  // 2^40
+  }
 };
 
 struct TrackedPart {

@@ -6,20 +6,9 @@
 // is coarser, and never across a depth jump or a gap. No allocation, no branches on the
 // per-point path beyond the validity tests.
 #include "core/profile.hpp"
+#include "scanner/conditioning_parameters.hpp"  // ConditioningParameters
 
 namespace cosmos {
-
-struct ConditioningParameters {
-  double grid_mm = 0.4;  // COSMOS grid along x (and the belt step along y)
-  // The grid covers [x_min, x_max) across the belt; the defaults put its points on the
-  // default scanner's samples (config/cell.yaml says why that matters).
-  double x_min_mm = -127.8;
-  double x_max_mm = 128.2;
-  double belt_height_mm = 0.0;  // the belt plane z = belt_height + belt_slope_x * x
-  double belt_slope_x = 0.0;
-  double height_threshold_mm = 0.5;  // above the belt: part; below: background
-  double depth_jump_mm = 3.0;        // no interpolation between samples further apart in z
-};
 
 class ProfileConditioner {
  public:

@@ -7,12 +7,23 @@
 #include <string>
 #include <vector>
 
+#include "core/parameter_visitor.hpp"
+
 namespace cosmos {
 
 struct RealtimeSettings {
   int sched_fifo_priority = 0;  // 1..99: SCHED_FIFO at that priority; 0: leave the policy
   int cpu = -1;                 // >= 0: pin the thread to that CPU; -1: no affinity
   bool lock_memory = false;     // mlockall(MCL_CURRENT | MCL_FUTURE): no page faults later
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("sched_fifo_priority", sched_fifo_priority,
+      "1..99: SCHED_FIFO at that priority; 0: leave the policy", Range{0, 99});
+    v("cpu", cpu, ">= 0: pin the acquisition thread to that CPU; -1: no affinity",
+      Range{-1, 1023});  // CPU_SETSIZE - 1
+    v("lock_memory", lock_memory, "mlockall: no page faults once running");
+  }
 };
 
 struct RealtimeReport {

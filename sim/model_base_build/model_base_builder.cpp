@@ -176,8 +176,7 @@ ModelBase build_model_base(const PartCatalog& catalog, const ScannerParameters& 
                            const ModelBaseProgress& progress) {
   ModelBase base;
   base.catalog_hash = catalog_content_hash(catalog);
-  base.parameters_text = model_base_parameters_text(settings.cosmos, scanner, settings.registration,
-                                                    settings.view_count, settings.grouping);
+  base.parameters_text = model_base_parameters_text(scanner, settings);
   std::vector<TriangleMesh> meshes;
   for (const PartEntry& entry : catalog.parts) {
     meshes.push_back(load_mesh(entry.mesh_path, entry.size_mm));
@@ -185,7 +184,10 @@ ModelBase build_model_base(const PartCatalog& catalog, const ScannerParameters& 
                           mesh_diameter_mm(meshes.back()), entry.symmetric});
   }
 
-  BuildJobs jobs(catalog, meshes, scanner, settings);
+  // Model views are cut from the belt like live scans: at the conditioning's threshold.
+  ScannerParameters view_scanner = scanner;
+  view_scanner.background_height_mm = settings.conditioning.height_threshold_mm;
+  BuildJobs jobs(catalog, meshes, view_scanner, settings);
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const int threads = std::clamp(settings.threads > 0 ? settings.threads : cores, 1,
                                  std::max(1, static_cast<int>(jobs.results.size())));

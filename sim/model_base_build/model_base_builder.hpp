@@ -13,6 +13,7 @@
 #include "core/modelbase/model_base.hpp"
 #include "core/modelbase/view_grouping.hpp"
 #include "core/registration/registration_points.hpp"
+#include "scanner/conditioning_parameters.hpp"
 #include "scanner/scanner_model.hpp"
 #include "sim/model_base_build/view_direction_subset.hpp"
 #include "sim/part_catalog.hpp"
@@ -33,9 +34,14 @@ RegistrationPointParameters model_surface_registration_parameters();
 struct ModelBaseBuildSettings {
   int view_count = kFullViewCount;  // the first N of spread_view_subset
   int threads = 0;                  // 0: every core
-  CosmosParameters cosmos;          // the live defaults: model views and scans must agree
+  // The one default construction of a cell's COSMOS parameters: the base records them and
+  // every recognizer of its scans takes them from there.
+  CosmosParameters cosmos;
   RegistrationPointParameters registration = model_surface_registration_parameters();
   ViewGroupingParameters grouping;
+  // The cell's conditioning: the model views lose the belt at its height_threshold_mm, as
+  // live scans do (the views' grid is the scanner's samples and profiles, recorded beside it).
+  ConditioningParameters conditioning;
 };
 
 struct ModelBaseBuildProgress {

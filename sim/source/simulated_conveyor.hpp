@@ -21,29 +21,13 @@
 #include <string>
 #include <vector>
 
+#include "realtime/config/sim_source_settings.hpp"  // SimulatedConveyorSettings, PoseMode
 #include "scanner/scanner_model.hpp"
 #include "sim/conveyor_scene.hpp"
 #include "sim/mesh.hpp"
 #include "sim/part_catalog.hpp"
 
 namespace cosmos {
-
-enum class PoseMode : std::uint8_t {
-  kRandom,   // uniform over SO(3) (sim/part_pose.hpp random_rotation)
-  kResting,  // settled on a face of its convex hull (resting_rotation)
-};
-
-struct SimulatedConveyorSettings {
-  int parts = 20;             // parts on the belt, >= 1
-  std::uint64_t seed = 7;     // part sequence, poses and offsets
-  double part_gap_mm = 40.0;  // empty belt between bounding boxes, and before and after
-  PoseMode pose = PoseMode::kRandom;
-  // false: every part centred across the belt (x = 0); true: a seeded x offset that keeps
-  // its bounding box at least edge_margin_mm inside the field of view at belt height.
-  bool random_x_offset = false;
-  double edge_margin_mm = 8.0;
-  std::vector<std::string> part_names;  // the parts to draw from, uniformly; empty = all
-};
 
 // A part the conveyor may carry: its mesh in its own frame (mm) and its index in the catalog.
 struct SimPartModel {

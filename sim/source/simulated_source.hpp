@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "firmware_bridge/error_line.hpp"
+#include "realtime/config/sim_source_settings.hpp"  // SimulatedSourceSettings, PoseMode
 #include "realtime/sources/scanner_source.hpp"
 #include "scanner/scanner_model.hpp"
 #include "sim/part_catalog.hpp"
@@ -22,10 +23,6 @@
 #include "sim/source/simulated_conveyor.hpp"
 
 namespace cosmos {
-
-struct SimulatedSourceSettings : SimulatedConveyorSettings {
-  ScanMode mode = ScanMode::kProfile;
-};
 
 class SimulatedSource final : public ScannerSource {
  public:

@@ -93,10 +93,16 @@ TEST_F(ScannerConfig, BadKeysTypesAndRangesNameFileLineAndKey) {
             file + ":2: scanner.roi_height_px: must not exceed sensor_height_px (1024), got 2000");
   EXPECT_EQ(error_of("scanner:\n  z_noise_mm: 1\n  z_noise_mm: 2\n"),
             file + ":3: scanner.z_noise_mm: key given twice");
-  EXPECT_EQ(error_of("scanner: [1, 2]\n"),
-            file + ":1: scanner: expected a map of settings, got a list");
+  EXPECT_EQ(error_of("scanner: [1, 2]\n"), file + ":1: scanner: expected a map, got a list");
   EXPECT_EQ(error_of("scanner:\n  z_noise_mm: [1\n").rfind(file + ":", 0), 0u);
   EXPECT_EQ(error_of("scanner: {}\n"), "");
+}
+
+TEST_F(ScannerConfig, TheFormerBackgroundKeyNamesTheOneThatReplacedIt) {
+  // Model views and live scans lose the belt at one threshold, the conditioning's.
+  EXPECT_EQ(error_of("scanner:\n  z_noise_mm: 0.02\n  background_height_mm: 0.5\n"),
+            (dir_ / "cell.yaml").string() +
+                ":3: scanner.background_height_mm: replaced by conditioning.height_threshold_mm");
 }
 
 TEST_F(ScannerConfig, MissingFileIsOneLine) {
@@ -114,6 +120,22 @@ TEST(ScannerParametersCheck, RefusesOutOfRangeFieldsSetInCode) {
   EXPECT_NO_THROW(check_scanner_parameters(p));
   p.max_incidence_deg = 95.0;
   EXPECT_THROW(check_scanner_parameters(p), std::invalid_argument);
+  const auto message = [](const ScannerParameters& parameters) -> std::string {
+    try {
+      check_scanner_parameters(parameters);
+    } catch (const std::invalid_argument& error) {
+      return error.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(message(p), "scanner.max_incidence_deg: must be in (0, 90), got 95");
+  ScannerParameters camera;
+  camera.camera.bit_depth = 9;
+  EXPECT_EQ(message(camera), "scanner.camera.bit_depth: must be 8, 10, 12 or 16, got 9");
+  ScannerParameters roi;
+  roi.roi_height_px = 2000;
+  EXPECT_EQ(message(roi),
+            "scanner.roi_height_px: must not exceed sensor_height_px (1024), got 2000");
 }
 
 }  // namespace

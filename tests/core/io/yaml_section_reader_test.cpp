@@ -39,7 +39,7 @@ void read_tracking(YamlSectionReader& reader, Tracking& t) {
   reader.read("window", t.window, 1, 100);
   reader.read("offset", t.offset, -1000, 1000);
   reader.read("seed", t.seed);
-  reader.read("gap_mm", t.gap_mm, NumberRange{0.0, 10.0, true, false});
+  reader.read("gap_mm", t.gap_mm, Range{0.0, 10.0, true, false});
   reader.read("enabled", t.enabled);
   reader.read("name", t.name);
 }
@@ -119,13 +119,13 @@ TEST(YamlSectionReader, FailPointsAtTheKeyOrElseAtTheSection) {
             "cell.yaml:2: tracking.offset: required with window");
 }
 
-TEST(YamlSectionReader, NumberRangeText) {
-  EXPECT_EQ((NumberRange{0, 1}).text(), "[0, 1]");
-  EXPECT_EQ((NumberRange{-2.5, 100, true, true}).text(), "(-2.5, 100)");
-  EXPECT_TRUE((NumberRange{0, 1}).contains(0.0));
-  EXPECT_FALSE((NumberRange{0, 1, true}).contains(0.0));
-  EXPECT_FALSE((NumberRange{0, 1, false, true}).contains(1.0));
-  EXPECT_FALSE((NumberRange{-1e300, 1e300}).contains(std::numeric_limits<double>::infinity()));
+TEST(YamlSectionReader, RangeText) {
+  EXPECT_EQ((Range{0, 1}).text(), "[0, 1]");
+  EXPECT_EQ((Range{-2.5, 100, true, true}).text(), "(-2.5, 100)");
+  EXPECT_TRUE((Range{0, 1}).contains(0.0));
+  EXPECT_FALSE((Range{0, 1, true}).contains(0.0));
+  EXPECT_FALSE((Range{0, 1, false, true}).contains(1.0));
+  EXPECT_FALSE((Range{-1e300, 1e300}).contains(std::numeric_limits<double>::infinity()));
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 // The cell configuration: the shipped config/cell.yaml holds the documented defaults, values
-// and paths are read as given, and every bad file ends in one line `file:LINE: key: reason`.
+// and paths are read as given into the very settings structs the cell takes, every field of
+// every section round-trips, and every bad file ends in one line `file:LINE: key: reason`
+// (retired keys naming the key that replaced them).
 #include "realtime/config/cell_config.hpp"
 
 #include <gtest/gtest.h>
@@ -11,7 +13,9 @@
 #include <string>
 
 #include "core/input_error.hpp"
+#include "core/parameter_range_check.hpp"
 #include "tests/common/config_file_test.hpp"
+#include "tests/common/parameter_fields.hpp"
 
 namespace cosmos {
 namespace {
@@ -54,7 +58,6 @@ TEST_F(CellConfigFile, ShippedConfigHoldsTheDocumentedDefaults) {
   EXPECT_EQ(c.belt_height_mm, defaults.conditioning.belt_height_mm);
   EXPECT_EQ(c.belt_slope_x, defaults.conditioning.belt_slope_x);
   EXPECT_EQ(c.height_threshold_mm, defaults.conditioning.height_threshold_mm);
-  EXPECT_EQ(c.depth_jump_mm, defaults.conditioning.depth_jump_mm);
 
   const TrackingSettings& t = config.tracking;
   EXPECT_EQ(t.tracker.max_open_parts, 8);
@@ -83,8 +86,31 @@ TEST_F(CellConfigFile, ShippedConfigHoldsTheDocumentedDefaults) {
   EXPECT_EQ(config.sim_source.parts, 20);
   EXPECT_EQ(config.sim_source.seed, 7u);
   EXPECT_EQ(config.sim_source.part_gap_mm, 40.0);
-  EXPECT_EQ(config.sim_source.pose, SimPoseMode::kRandom);
+  EXPECT_EQ(config.sim_source.pose, PoseMode::kRandom);
+  EXPECT_FALSE(config.sim_source.random_x_offset);
+  EXPECT_EQ(config.sim_source.mode, ScanMode::kProfile);
   EXPECT_TRUE(config.sim_source.part_names.empty());
+
+  // Field by field, the whole config is the defaults (paths resolved against the file).
+  CellConfig resolved = defaults;
+  resolved.cell.catalog = file.parent_path() / defaults.cell.catalog;
+  EXPECT_EQ(testing::parameter_leaves(config), testing::parameter_leaves(resolved));
+}
+
+TEST_F(CellConfigFile, EveryDefaultIsInItsDeclaredRange) {
+  EXPECT_EQ(first_out_of_range(CellConfig{}, ""), std::nullopt);
+}
+
+TEST_F(CellConfigFile, EveryFieldOfEverySectionRoundTrips) {
+  // Every field changed from its default, written as YAML and read back.
+  CellConfig changed;
+  testing::FieldChanger changer(testing::FieldChanger::kAll);
+  visit_parameters(changer, changed);
+  EXPECT_EQ(changer.count, testing::parameter_field_count(CellConfig{}));
+  const CellConfig config = load_cell_config(write(changer.yaml));
+  changed.cell.catalog = dir_ / changed.cell.catalog;
+  changed.cell.model_base = dir_ / changed.cell.model_base;
+  EXPECT_EQ(testing::parameter_leaves(config), testing::parameter_leaves(changed)) << changer.yaml;
 }
 
 TEST_F(CellConfigFile, EmptyFileGivesTheDefaultsWithTheCatalogBesideIt) {
@@ -142,7 +168,7 @@ TEST_F(CellConfigFile, ReadsEveryKindOfValue) {
   EXPECT_EQ(config.realtime.part_queue_slots, 4);
   EXPECT_EQ(config.sim_source.parts, 3);
   EXPECT_EQ(config.sim_source.seed, 18446744073709551615ULL);
-  EXPECT_EQ(config.sim_source.pose, SimPoseMode::kResting);
+  EXPECT_EQ(config.sim_source.pose, PoseMode::kResting);
   ASSERT_EQ(config.sim_source.part_names.size(), 2u);
   EXPECT_EQ(config.sim_source.part_names[1], "cow");
 }
@@ -173,7 +199,7 @@ TEST_F(CellConfigFile, EveryBadValueNamesItsLineAndKey) {
        "cell.T_cell_scanner.translation_mm", "expected a number, got 'x'"},
       {"cell:\n  T_cell_scanner:\n    translation: [0, 0, 0]\n", 3,
        "cell.T_cell_scanner.translation", "unknown key"},
-      {"cell:\n  catalog: [a, b]\n", 2, "cell.catalog", "expected a non-empty string, got a list"},
+      {"cell:\n  catalog: [a, b]\n", 2, "cell.catalog", "expected a path, got a list"},
       {"conditioning:\n  grid_mm: 0\n", 2, "conditioning.grid_mm", "must be in (0, 100], got 0"},
       {"conditioning:\n  x_min_mm: 10\n  x_max_mm: 5\n", 3, "conditioning.x_max_mm",
        "x_max_mm must exceed x_min_mm"},
@@ -190,6 +216,17 @@ TEST_F(CellConfigFile, EveryBadValueNamesItsLineAndKey) {
       {"sim_source:\n  part_names:\n    - bunny\n    - bunny\n", 4, "sim_source.part_names",
        "bunny given twice"},
       {"scanner:\n  bogus: 1\n", 2, "scanner.bogus", "unknown key"},
+      {"sim_source:\n  parts: 0\n", 2, "sim_source.parts", "must be in [1, 1000000], got 0"},
+      {"sim_source:\n  mode: laser\n", 2, "sim_source.mode",
+       "expected profile or camera, got 'laser'"},
+      {"tracking:\n  min_pixels: 1\nscanner: {}\ntracking: {}\n", 4, "tracking",
+       "section given twice"},
+      // One concept, one key: the model views' and the live scans' belt threshold and the
+      // fit's depth jump (which the cell takes from its model base).
+      {"scanner:\n  background_height_mm: 0.5\n", 2, "scanner.background_height_mm",
+       "replaced by conditioning.height_threshold_mm"},
+      {"conditioning:\n  grid_mm: 0.4\n  depth_jump_mm: 3\n", 3, "conditioning.depth_jump_mm",
+       "replaced by cosmos.fit.depth_jump_mm, which the cell takes from its model base"},
   };
   for (const BadFile& bad : cases) {
     const std::string message = error_of(bad.text);

@@ -1,0 +1,66 @@
+#pragma once
+// The settings of the simulated cell's conveyor and source (sim/source/), declared here
+// so that the cell config's `sim_source:` section reads into the very struct the source takes
+// (realtime/ does not see sim/; sim/source sees realtime/).
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/parameter_visitor.hpp"
+#include "scanner/scanner_model.hpp"
+
+namespace cosmos {
+
+enum class PoseMode : std::uint8_t {
+  kRandom,   // uniform over SO(3) (sim/part_pose.hpp random_rotation)
+  kResting,  // settled on a face of its convex hull (resting_rotation)
+};
+
+inline std::span<const ParameterChoice<PoseMode>> parameter_choices(PoseMode) {
+  static constexpr ParameterChoice<PoseMode> kChoices[] = {{PoseMode::kRandom, "random"},
+                                                           {PoseMode::kResting, "resting"}};
+  return kChoices;
+}
+
+// The conveyor's parts (sim/source/simulated_conveyor.hpp): what goes down the belt, for the
+// simulated source and the hardware twins alike.
+struct SimulatedConveyorSettings {
+  int parts = 20;             // parts in the stream, >= 1
+  std::uint64_t seed = 7;     // part sequence, poses and offsets
+  double part_gap_mm = 40.0;  // empty belt between bounding boxes, and before and after
+  PoseMode pose = PoseMode::kRandom;
+  // false: every part centred across the belt (x = 0); true: a seeded x offset that keeps
+  // its bounding box at least edge_margin_mm inside the field of view at belt height.
+  bool random_x_offset = false;
+  double edge_margin_mm = 8.0;
+  // The parts to draw from, uniformly; empty = all. The names are checked against the
+  // catalog by whoever loads it.
+  std::vector<std::string> part_names;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("parts", parts, "parts sent down the belt, then the source ends", Range{1, 1000000});
+    v("seed", seed, "the order, poses and placement of the parts");
+    v("part_gap_mm", part_gap_mm, "belt between consecutive parts' bounding boxes, mm",
+      Range::above(0, 1e4));
+    v("pose", pose, "random: any orientation; resting: settled on a face of its hull");
+    v("random_x_offset", random_x_offset, "false: parts centred across the belt");
+    v("edge_margin_mm", edge_margin_mm, "random offsets keep the part this far inside, mm",
+      Range{0, 1e4});
+    v("part_names", part_names, "catalog parts to draw from; empty: all");
+  }
+};
+
+// The `sim_source:` section: the conveyor, and how the simulated source scans it.
+struct SimulatedSourceSettings : SimulatedConveyorSettings {
+  ScanMode mode = ScanMode::kProfile;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    SimulatedConveyorSettings::visit(v);
+    v("mode", mode, "profile: calibrated profiles; camera: sensor frames and stripe extraction");
+  }
+};
+
+}  // namespace cosmos

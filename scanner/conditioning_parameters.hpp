@@ -1,0 +1,45 @@
+#pragma once
+// How the scanner's profiles become the COSMOS grid (config/cell.yaml, section
+// `conditioning:`; realtime/loop/profile_conditioner.hpp does it to live profiles). Declared
+// beside the scanner because the model-base build needs it too: the model views are cut from
+// the belt at the same height threshold as live scans, and the base records that threshold and
+// its views' grid, which a cell's conditioning must match.
+#include "core/cosmos_parameters.hpp"
+#include "core/parameter_visitor.hpp"
+
+namespace cosmos {
+
+struct ConditioningParameters {
+  double grid_mm = 0.4;  // COSMOS grid along x (and the belt step along y)
+  // The grid covers [x_min, x_max) across the belt; the defaults put its points on the
+  // default scanner's samples (config/cell.yaml says why that matters).
+  double x_min_mm = -127.8;
+  double x_max_mm = 128.2;
+  double belt_height_mm = 0.0;  // the belt plane z = belt_height + belt_slope_x * x
+  double belt_slope_x = 0.0;
+  // Above the belt: part; below: background. The one belt threshold of live scans and of the
+  // model views (the model-base build scans them with it).
+  double height_threshold_mm = 0.5;
+  // No interpolation between samples further apart in z. Not a key of its own: it is the
+  // COSMOS fit's depth jump (cosmos.fit.depth_jump_mm), which the cell takes from its model
+  // base, so the grid is never interpolated across an edge that the fit treats as one.
+  double depth_jump_mm = SurfaceFitParameters{}.depth_jump_mm;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("grid_mm", grid_mm, "COSMOS grid pitch across the belt and belt travel per profile, mm",
+      Range::above(0, 100));
+    v("x_min_mm", x_min_mm, "the grid covers [x_min_mm, x_max_mm) across the belt, mm",
+      Range{-1e5, 1e5});
+    v("x_max_mm", x_max_mm, "end of the grid across the belt, mm", Range{-1e5, 1e5});
+    v("belt_height_mm", belt_height_mm,
+      "belt plane z = belt_height_mm + belt_slope_x * x, removed, mm", Range{-1e4, 1e4});
+    v("belt_slope_x", belt_slope_x, "belt plane slope across the belt", Range{-10, 10});
+    v("height_threshold_mm", height_threshold_mm,
+      "less above the belt is background, mm (live scans and model views)", Range{0, 1e4});
+    v.retired("depth_jump_mm",
+              "cosmos.fit.depth_jump_mm, which the cell takes from its model base");
+  }
+};
+
+}  // namespace cosmos
