@@ -28,8 +28,8 @@ struct RecognizeOptions {
 RecognitionParameters recognition_parameters(const RecognizeOptions& options) {
   RecognitionParameters parameters;
   parameters.registration.estimator = options.estimator == "cm"
-                                          ? RegistrationEstimator::chen_medioni
-                                          : RegistrationEstimator::minimum_variance;
+                                          ? RegistrationEstimator::kChenMedioni
+                                          : RegistrationEstimator::kMinimumVariance;
   parameters.selection.distance = options.distance == "mahalanobis" ? SpectralDistance::kMahalanobis
                                                                     : SpectralDistance::kEuclidean;
   return parameters;

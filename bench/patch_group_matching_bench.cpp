@@ -64,14 +64,14 @@ void run_match(benchmark::State& state, const CosmosView& scene, const CosmosVie
 }
 
 void BM_MatchCapsuleViews(benchmark::State& state) {
-  run_match(state, testing::analytic_view(AnalyticShape::capsule, 35).view,
-            testing::analytic_view(AnalyticShape::capsule, 0).view);
+  run_match(state, testing::analytic_view(AnalyticShape::kCapsule, 35).view,
+            testing::analytic_view(AnalyticShape::kCapsule, 0).view);
 }
 BENCHMARK(BM_MatchCapsuleViews)->Unit(benchmark::kMicrosecond);
 
 void BM_MatchCapsuleAgainstTorus(benchmark::State& state) {
-  run_match(state, testing::analytic_view(AnalyticShape::capsule, 35).view,
-            testing::analytic_view(AnalyticShape::torus, 0).view);
+  run_match(state, testing::analytic_view(AnalyticShape::kCapsule, 35).view,
+            testing::analytic_view(AnalyticShape::kTorus, 0).view);
 }
 BENCHMARK(BM_MatchCapsuleAgainstTorus)->Unit(benchmark::kMicrosecond);
 

@@ -48,12 +48,12 @@ void register_pair(benchmark::State& state, RegistrationEstimator estimator) {
 }
 
 void BM_RegisterChenMedioni(benchmark::State& state) {
-  register_pair(state, RegistrationEstimator::chen_medioni);
+  register_pair(state, RegistrationEstimator::kChenMedioni);
 }
 BENCHMARK(BM_RegisterChenMedioni)->Unit(benchmark::kMillisecond);
 
 void BM_RegisterMinimumVariance(benchmark::State& state) {
-  register_pair(state, RegistrationEstimator::minimum_variance);
+  register_pair(state, RegistrationEstimator::kMinimumVariance);
 }
 BENCHMARK(BM_RegisterMinimumVariance)->Unit(benchmark::kMillisecond);
 

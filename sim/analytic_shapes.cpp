@@ -179,23 +179,23 @@ std::array<Eigen::Vector3d, 3> box_corner_shape_normals() {
 ShapePoint analytic_shape_point(AnalyticShape shape, const AnalyticDimensions& dimensions,
                                 double x_mm, double y_mm) {
   switch (shape) {
-    case AnalyticShape::sphere:
+    case AnalyticShape::kSphere:
       return sphere_point(dimensions.radius_mm, x_mm, y_mm, false);
-    case AnalyticShape::cup:
+    case AnalyticShape::kCup:
       return sphere_point(dimensions.radius_mm, x_mm, y_mm, true);
-    case AnalyticShape::cylinder:
+    case AnalyticShape::kCylinder:
       return cylinder_point(dimensions, x_mm, y_mm);
-    case AnalyticShape::saddle:
+    case AnalyticShape::kSaddle:
       return saddle_point(dimensions, x_mm, y_mm);
-    case AnalyticShape::plane:
+    case AnalyticShape::kPlane:
       return plane_point(dimensions, x_mm, y_mm);
-    case AnalyticShape::torus:
+    case AnalyticShape::kTorus:
       return torus_point(dimensions, x_mm, y_mm);
-    case AnalyticShape::ellipsoid:
+    case AnalyticShape::kEllipsoid:
       return ellipsoid_point(dimensions, x_mm, y_mm);
-    case AnalyticShape::capsule:
+    case AnalyticShape::kCapsule:
       return capsule_point(dimensions, x_mm, y_mm);
-    case AnalyticShape::box_corner:
+    case AnalyticShape::kBoxCorner:
       return box_corner_point(dimensions, x_mm, y_mm);
   }
   return {};
@@ -206,22 +206,22 @@ double analytic_silhouette_extent_mm(AnalyticShape shape, const AnalyticDimensio
   const double ax = std::abs(direction.x());
   const double ay = std::abs(direction.y());
   switch (shape) {
-    case AnalyticShape::sphere:
-    case AnalyticShape::cup:
+    case AnalyticShape::kSphere:
+    case AnalyticShape::kCup:
       return d.radius_mm;
-    case AnalyticShape::cylinder:
+    case AnalyticShape::kCylinder:
       return ax * d.radius_mm + ay * 0.5 * d.cylinder_length_mm;
-    case AnalyticShape::saddle:
+    case AnalyticShape::kSaddle:
       return (ax + ay) * d.saddle_half_width_mm;
-    case AnalyticShape::plane:
+    case AnalyticShape::kPlane:
       return (ax + ay) * d.plane_half_width_mm;
-    case AnalyticShape::torus:
+    case AnalyticShape::kTorus:
       return d.torus_major_radius_mm + d.torus_minor_radius_mm;
-    case AnalyticShape::ellipsoid:
+    case AnalyticShape::kEllipsoid:
       return std::hypot(ax * d.ellipsoid_semi_axes_mm.x(), ay * d.ellipsoid_semi_axes_mm.y());
-    case AnalyticShape::capsule:
+    case AnalyticShape::kCapsule:
       return ax * 0.5 * d.capsule_length_mm + d.capsule_radius_mm;
-    case AnalyticShape::box_corner: {
+    case AnalyticShape::kBoxCorner: {
       // The hexagon's vertices are +-e times the faces' horizontal normal parts.
       double extent = 0.0;
       for (const Eigen::Vector3d& n : box_corner_shape_normals()) {

@@ -13,11 +13,11 @@ namespace cosmos {
 namespace {
 
 constexpr std::pair<const char*, AnalyticShape> kShapeNames[] = {
-    {"sphere", AnalyticShape::sphere},         {"cup", AnalyticShape::cup},
-    {"cylinder", AnalyticShape::cylinder},     {"saddle", AnalyticShape::saddle},
-    {"plane", AnalyticShape::plane},           {"torus", AnalyticShape::torus},
-    {"ellipsoid", AnalyticShape::ellipsoid},   {"capsule", AnalyticShape::capsule},
-    {"box-corner", AnalyticShape::box_corner},
+    {"sphere", AnalyticShape::kSphere},        {"cup", AnalyticShape::kCup},
+    {"cylinder", AnalyticShape::kCylinder},    {"saddle", AnalyticShape::kSaddle},
+    {"plane", AnalyticShape::kPlane},          {"torus", AnalyticShape::kTorus},
+    {"ellipsoid", AnalyticShape::kEllipsoid},  {"capsule", AnalyticShape::kCapsule},
+    {"box-corner", AnalyticShape::kBoxCorner},
 };
 
 // Bounds the memory of one surface (the truth grid costs ~40 bytes per pixel).
@@ -101,7 +101,7 @@ Eigen::Matrix3d turn_about_z(double rotate_deg) {
 }  // namespace
 
 AnalyticShape parse_analytic_shape(std::string_view name) {
-  if (name == "box_corner") return AnalyticShape::box_corner;
+  if (name == "box_corner") return AnalyticShape::kBoxCorner;
   for (const auto& [text, shape] : kShapeNames) {
     if (name == text) return shape;
   }

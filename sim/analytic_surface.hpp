@@ -22,15 +22,15 @@
 namespace cosmos {
 
 enum class AnalyticShape {
-  sphere,
-  cup,
-  cylinder,
-  saddle,
-  plane,
-  torus,
-  ellipsoid,
-  capsule,
-  box_corner
+  kSphere,
+  kCup,
+  kCylinder,
+  kSaddle,
+  kPlane,
+  kTorus,
+  kEllipsoid,
+  kCapsule,
+  kBoxCorner
 };
 
 // "sphere", "cup", ..., "box-corner" (the CLI spelling; "box_corner" is accepted too).
@@ -43,7 +43,7 @@ std::string analytic_shape_names();
 // Shape sizes left unset derive from radius_mm = R; the values in brackets are those at the
 // default R = 25 mm, so one --radius-mm scales every shape.
 struct AnalyticSurfaceSpec {
-  AnalyticShape shape = AnalyticShape::sphere;
+  AnalyticShape shape = AnalyticShape::kSphere;
   double radius_mm = 25.0;     // sphere, cup, cylinder radius; saddle z = (x^2 - y^2) / (2R)
   double pixel_size_mm = 0.5;  // dx = dy
   double noise_mm = 0.0;       // standard deviation of the Gaussian noise added to z

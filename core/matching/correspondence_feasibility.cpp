@@ -29,7 +29,7 @@ bool is_feasible_correspondence(const CosmosView& scene, const CosmosView& model
                                 double min_adjacency_strength) {
   const PatchGraph scene_graph = build_patch_graph(scene, min_adjacency_strength);
   const PatchGraph model_graph = build_patch_graph(model, min_adjacency_strength);
-  if (scene_graph.status != PatchGraphStatus::ok || model_graph.status != PatchGraphStatus::ok)
+  if (scene_graph.status != PatchGraphStatus::kOk || model_graph.status != PatchGraphStatus::kOk)
     return false;
   if (pairs.empty()) return false;
 

@@ -49,7 +49,7 @@ PatchGraph build_patch_graph(const CosmosView& view, double min_adjacency_streng
   PatchGraph graph;
   const int n = static_cast<int>(view.patches.size());
   if (n > kMaxGraphPatches) {
-    graph.status = PatchGraphStatus::too_many_patches;
+    graph.status = PatchGraphStatus::kTooManyPatches;
     return graph;
   }
   double total_area_mm2 = 0;

@@ -46,10 +46,10 @@ struct PatchNode {
   PatchSet strongly_adjacent = 0;  // the subset of strong adjacencies, symmetric
 };
 
-enum class PatchGraphStatus { ok, too_many_patches };
+enum class PatchGraphStatus { kOk, kTooManyPatches };
 
 struct PatchGraph {
-  PatchGraphStatus status = PatchGraphStatus::ok;
+  PatchGraphStatus status = PatchGraphStatus::kOk;
   std::vector<PatchNode> nodes;  // in the view's patch order
   PatchSet all = 0;
 };

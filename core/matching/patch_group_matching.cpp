@@ -281,10 +281,10 @@ PatchGroupMatch match_patch_groups(const CosmosView& scene, const CosmosView& mo
   const PatchGraph model_graph = build_patch_graph(model, parameters.min_adjacency_strength);
   const bool empty = scene.patches.empty() || model.patches.empty();
   const bool too_many =
-      scene_graph.status != PatchGraphStatus::ok || model_graph.status != PatchGraphStatus::ok;
+      scene_graph.status != PatchGraphStatus::kOk || model_graph.status != PatchGraphStatus::kOk;
   if (empty || too_many) {
     result.status =
-        empty ? PatchGroupMatchStatus::empty_view : PatchGroupMatchStatus::too_many_patches;
+        empty ? PatchGroupMatchStatus::kEmptyView : PatchGroupMatchStatus::kTooManyPatches;
     PairGoodness nothing;
     nothing.area = nothing.shape_index = nothing.curvedness = nothing.neighbor = 0;
     nothing.goodness = nothing.fineness = 0;
@@ -309,7 +309,7 @@ PatchGroupMatch match_patch_groups(const CosmosView& scene, const CosmosView& mo
   result.fineness = std::clamp(result.fineness, 0.0, 1.0);
   result.operations = matcher.operations();
   result.refinements = matcher.refinements();
-  if (matcher.budget_exhausted()) result.status = PatchGroupMatchStatus::budget_exhausted;
+  if (matcher.budget_exhausted()) result.status = PatchGroupMatchStatus::kBudgetExhausted;
   return result;
 }
 

@@ -57,10 +57,10 @@ struct PatchGroupMatchParameters {
 };
 
 enum class PatchGroupMatchStatus {
-  ok,
-  empty_view,        // a view without patches: the trivial correspondence, score 0
-  too_many_patches,  // over kMaxGraphPatches: the trivial correspondence, score 0
-  budget_exhausted,  // max_operations reached: the (feasible) correspondence so far
+  kOk,
+  kEmptyView,        // a view without patches: the trivial correspondence, score 0
+  kTooManyPatches,   // over kMaxGraphPatches: the trivial correspondence, score 0
+  kBudgetExhausted,  // max_operations reached: the (feasible) correspondence so far
 };
 
 struct MappedPair {
@@ -70,7 +70,7 @@ struct MappedPair {
 };
 
 struct PatchGroupMatch {
-  PatchGroupMatchStatus status = PatchGroupMatchStatus::ok;
+  PatchGroupMatchStatus status = PatchGroupMatchStatus::kOk;
   std::vector<MappedPair> pairs;  // ordered by their lowest scene patch index
   double score = 0;               // §5.3.3 quality with the coarseness factor, in [0, 1]
   double fineness = 0;  // area-weighted mean of the pairs' fineness: 1 = all single patches

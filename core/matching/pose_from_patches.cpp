@@ -79,8 +79,8 @@ RotationFromNormals rotation_from_normals(std::span<const NormalCorrespondence> 
   result.rms_residual_deg = std::sqrt(squared_angle_sum / total_weight) * kRadToDeg;
   result.normal_spread_deg = std::min(spread_deg(scene_scatter), spread_deg(model_scatter));
   result.status = result.normal_spread_deg >= min_normal_spread_deg
-                      ? PatchPoseStatus::ok
-                      : PatchPoseStatus::degenerate_normals;
+                      ? PatchPoseStatus::kOk
+                      : PatchPoseStatus::kDegenerateNormals;
   return result;
 }
 

@@ -22,9 +22,9 @@
 namespace cosmos {
 
 enum class PatchPoseStatus {
-  ok,
-  too_few_pairs,       // no pair with a usable mean normal and positive weight
-  degenerate_normals,  // the normals (on either side) are too close to parallel
+  kOk,
+  kTooFewPairs,        // no pair with a usable mean normal and positive weight
+  kDegenerateNormals,  // the normals (on either side) are too close to parallel
 };
 
 struct NormalCorrespondence {
@@ -34,7 +34,7 @@ struct NormalCorrespondence {
 };
 
 struct RotationFromNormals {
-  PatchPoseStatus status = PatchPoseStatus::too_few_pairs;
+  PatchPoseStatus status = PatchPoseStatus::kTooFewPairs;
   // n_model ~ R_model_scene n_scene. Filled in for degenerate_normals too, but then its
   // angle about the common normal is arbitrary.
   Eigen::Matrix3d R_model_scene = Eigen::Matrix3d::Identity();
@@ -66,7 +66,7 @@ struct PoseFromPatchesParameters {
 };
 
 struct PoseFromPatches {
-  PatchPoseStatus status = PatchPoseStatus::too_few_pairs;
+  PatchPoseStatus status = PatchPoseStatus::kTooFewPairs;
   RigidTransform T_model_scene;  // x_model = R x_scene + t
   double normal_spread_deg = 0;
   double rms_normal_residual_deg = 0;

@@ -10,16 +10,16 @@ namespace cosmos {
 namespace {
 
 ClusteringStatus check_matrix(const Eigen::MatrixXd& d) {
-  if (d.rows() != d.cols()) return ClusteringStatus::not_square;
-  if (d.rows() == 0) return ClusteringStatus::empty;
+  if (d.rows() != d.cols()) return ClusteringStatus::kNotSquare;
+  if (d.rows() == 0) return ClusteringStatus::kEmpty;
   for (Eigen::Index i = 0; i < d.rows(); ++i)
     for (Eigen::Index j = 0; j < d.cols(); ++j) {
       if (i == j) continue;
-      if (!std::isfinite(d(i, j)) || d(i, j) < 0) return ClusteringStatus::invalid_value;
+      if (!std::isfinite(d(i, j)) || d(i, j) < 0) return ClusteringStatus::kInvalidValue;
       if (std::abs(d(i, j) - d(j, i)) > 1e-12 * std::max(1.0, std::abs(d(i, j))))
-        return ClusteringStatus::not_symmetric;
+        return ClusteringStatus::kNotSymmetric;
     }
-  return ClusteringStatus::ok;
+  return ClusteringStatus::kOk;
 }
 
 // Union-find over the views, applying the first `merge_count` merges.
@@ -59,7 +59,7 @@ ViewPartition partition_after(const Dendrogram& dendrogram, std::size_t merge_co
 Dendrogram complete_link_clustering(const Eigen::MatrixXd& dissimilarity) {
   Dendrogram dendrogram;
   dendrogram.status = check_matrix(dissimilarity);
-  if (dendrogram.status != ClusteringStatus::ok) return dendrogram;
+  if (dendrogram.status != ClusteringStatus::kOk) return dendrogram;
   const int n = static_cast<int>(dissimilarity.rows());
   dendrogram.leaves = n;
   // Active clusters by slot: slot s holds cluster id[s]; a union takes the slot of its first

@@ -23,10 +23,10 @@ struct DendrogramMerge {
   int size = 0;       // views in the merged cluster
 };
 
-enum class ClusteringStatus { ok, not_square, not_symmetric, invalid_value, empty };
+enum class ClusteringStatus { kOk, kNotSquare, kNotSymmetric, kInvalidValue, kEmpty };
 
 struct Dendrogram {
-  ClusteringStatus status = ClusteringStatus::empty;
+  ClusteringStatus status = ClusteringStatus::kEmpty;
   int leaves = 0;
   std::vector<DendrogramMerge> merges;  // leaves - 1 merges, in order
 };

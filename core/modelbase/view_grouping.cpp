@@ -16,7 +16,7 @@ ViewGroupingResult group_model_views(const ModelBase& base,
     }
     if (members.empty()) continue;
     const Dendrogram dendrogram = complete_link_clustering(spectral_dissimilarity_matrix(moments));
-    if (dendrogram.status != ClusteringStatus::ok) {
+    if (dendrogram.status != ClusteringStatus::kOk) {
       result.status = dendrogram.status;
       result.failed_part = part;
       result.clusters.clear();

@@ -39,7 +39,7 @@ struct ViewGroupingParameters {
 };
 
 struct ViewGroupingResult {
-  ClusteringStatus status = ClusteringStatus::ok;  // the first part's failure, if any
+  ClusteringStatus status = ClusteringStatus::kOk;  // the first part's failure, if any
   int failed_part = -1;
   std::vector<ViewCluster> clusters;  // part by part, within a part by lowest view
 };

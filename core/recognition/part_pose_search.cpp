@@ -165,7 +165,7 @@ std::vector<ViewPoseHypothesis> register_field_hypotheses(
     const RegistrationResult refined =
         register_views(scoring, surfaces.points(view), T_model_scene, short_registration);
     const RigidTransform& T =
-        refined.status == RegistrationStatus::invalid_input ? T_model_scene : refined.T_model_scene;
+        refined.status == RegistrationStatus::kInvalidInput ? T_model_scene : refined.T_model_scene;
     best.push_back(
         {view, T,
          field_truncated_mean_square_mm2(scoring, field, model_view.T_scanner_part.inverse() * T,

@@ -27,7 +27,7 @@ std::vector<RigidTransform> generate_pose_hypotheses(const RegistrationPoints& s
                                                      const PoseHypothesisParameters& parameters) {
   std::vector<RigidTransform> hypotheses;
   if (scene.size() == 0 || model.size() == 0) return hypotheses;
-  if (from_patches.status == PatchPoseStatus::ok) hypotheses.push_back(from_patches.T_model_scene);
+  if (from_patches.status == PatchPoseStatus::kOk) hypotheses.push_back(from_patches.T_model_scene);
   for (const RigidTransform& T_model_scene : principal_axes_candidates(scene, model))
     hypotheses.push_back(T_model_scene);
   const Eigen::Vector3d scene_centre = centroid_mm(scene);

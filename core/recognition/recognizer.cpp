@@ -114,7 +114,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   }
   result.scene_points = scene_points.points.size();
   result.timings.features_ms += elapsed_ms(stage);
-  if (scene_points.status != RegistrationPointsStatus::ok ||
+  if (scene_points.status != RegistrationPointsStatus::kOk ||
       result.scene_points < parameters_.min_scene_points)
     return finish("too little smooth surface to register (" + std::to_string(result.scene_points) +
                   " control points)");
@@ -286,10 +286,10 @@ void Recognizer::register_candidate(const ScenePoints& scene_points,
     const RegistrationPoints& model = surfaces.points(start.view);
     RegistrationResult registration =
         register_views(scene_points.coarse, model, start.T_model_scene, coarse);
-    if (registration.status == RegistrationStatus::invalid_input) continue;
+    if (registration.status == RegistrationStatus::kInvalidInput) continue;
     registration = register_views(scene_points.all, model, registration.T_model_scene, fine);
     // A degenerate (still planar) result is kept: its support decides.
-    if (registration.status == RegistrationStatus::invalid_input) continue;
+    if (registration.status == RegistrationStatus::kInvalidInput) continue;
     const Support support =
         measure_support(scene_points.all, model, registration.T_model_scene, parameters_);
     if (candidate.registered && support.inlier_fraction <= best_support.inlier_fraction) continue;

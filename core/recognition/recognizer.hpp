@@ -140,7 +140,7 @@ struct RecognitionCandidate {
   double spectral_distance = 0;
   double goodness = 0;  // COSMOS match score (§5.3.3)
   bool registered = false;
-  RegistrationStatus registration_status = RegistrationStatus::invalid_input;
+  RegistrationStatus registration_status = RegistrationStatus::kInvalidInput;
   double rms_mm = 0;
   double inlier_fraction = 0;
   double score = 0;  // the decision's figure of merit, in [0, 1]

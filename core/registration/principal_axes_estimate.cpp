@@ -74,8 +74,8 @@ PrincipalAxesEstimate estimate_by_principal_axes(const RegistrationPoints& scene
   estimate.min_relative_eigenvalue_gap =
       std::min(scene_axes.min_relative_gap, model_axes.min_relative_gap);
   estimate.status = estimate.min_relative_eigenvalue_gap < min_relative_gap
-                        ? PrincipalAxesStatus::ambiguous_axes
-                        : PrincipalAxesStatus::ok;
+                        ? PrincipalAxesStatus::kAmbiguousAxes
+                        : PrincipalAxesStatus::kOk;
   return estimate;
 }
 

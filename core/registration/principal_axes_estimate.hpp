@@ -14,10 +14,10 @@
 
 namespace cosmos {
 
-enum class PrincipalAxesStatus { ok, too_few_points, ambiguous_axes };
+enum class PrincipalAxesStatus { kOk, kTooFewPoints, kAmbiguousAxes };
 
 struct PrincipalAxesEstimate {
-  PrincipalAxesStatus status = PrincipalAxesStatus::too_few_points;
+  PrincipalAxesStatus status = PrincipalAxesStatus::kTooFewPoints;
   RigidTransform T_model_scene;
   AlignmentScore score;  // of the chosen candidate
   // Smallest relative gap between consecutive eigenvalues over both views: near 0 the axes,

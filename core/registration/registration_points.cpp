@@ -88,7 +88,7 @@ RegistrationPointsResult build_registration_points(const RangeImage& image,
                                                    const DarbouxFrameField* frames) {
   RegistrationPointsResult result;
   if (!valid_parameters(image, parameters, frames)) {
-    result.status = RegistrationPointsStatus::invalid_parameters;
+    result.status = RegistrationPointsStatus::kInvalidParameters;
     return result;
   }
   const int half = parameters.window_size / 2;
@@ -123,7 +123,7 @@ RegistrationPointsResult build_registration_points(const RangeImage& image,
     }
   }
   if (candidates.size() < static_cast<std::size_t>(kMinPoints)) {
-    result.status = RegistrationPointsStatus::too_few_points;
+    result.status = RegistrationPointsStatus::kTooFewPoints;
     return result;
   }
   // The median residual is robust to the rough windows and creases the smoothness test is
@@ -162,7 +162,7 @@ RegistrationPointsResult build_registration_points(const RangeImage& image,
     points.surface.col(i) = c.surface;
     points.residual_rms_mm(i) = c.residual_rms_mm;
   }
-  if (n < kMinPoints) result.status = RegistrationPointsStatus::too_few_points;
+  if (n < kMinPoints) result.status = RegistrationPointsStatus::kTooFewPoints;
   return result;
 }
 

@@ -109,10 +109,10 @@ struct RegistrationPoints {
   }
 };
 
-enum class RegistrationPointsStatus { ok, invalid_parameters, too_few_points };
+enum class RegistrationPointsStatus { kOk, kInvalidParameters, kTooFewPoints };
 
 struct RegistrationPointsResult {
-  RegistrationPointsStatus status = RegistrationPointsStatus::ok;
+  RegistrationPointsStatus status = RegistrationPointsStatus::kOk;
   RegistrationPoints points;
 };
 

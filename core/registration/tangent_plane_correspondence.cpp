@@ -68,13 +68,13 @@ CorrespondenceStatus find_tangent_plane(const RegistrationPoints& model,
   while (out.steps < max_steps) {
     BlendedPlane plane;
     if (!blend_planes(model, cells_per_mm, foot.x(), foot.y(), plane))
-      return CorrespondenceStatus::off_model;
+      return CorrespondenceStatus::kOffModel;
     ++out.steps;
     const double norm2 = 1.0 + plane.a * plane.a + plane.b * plane.b;
     // (-a, -b, 1) . direction: the line's approach to the plane, unnormalized.
     const double approach =
         line_direction.z() - plane.a * line_direction.x() - plane.b * line_direction.y();
-    if (approach * approach < min_approach2 * norm2) return CorrespondenceStatus::grazing;
+    if (approach * approach < min_approach2 * norm2) return CorrespondenceStatus::kGrazing;
     // Line p + s d meets the plane z = h + a (x - foot_x) + b (y - foot_y).
     const double s = (plane.height_mm + plane.a * (point_mm.x() - foot.x()) +
                       plane.b * (point_mm.y() - foot.y()) - point_mm.z()) /
@@ -90,11 +90,11 @@ CorrespondenceStatus find_tangent_plane(const RegistrationPoints& model,
       out.distance_mm = out.model_normal.dot(point_mm - out.model_point_mm);
       out.travel_mm = (point_mm - out.model_point_mm).norm();
       out.nearest_model_point = plane.nearest;
-      return CorrespondenceStatus::found;
+      return CorrespondenceStatus::kFound;
     }
     foot = next;
   }
-  return CorrespondenceStatus::not_converged;
+  return CorrespondenceStatus::kNotConverged;
 }
 
 double distance_variance_mm2(const RegistrationPoints& model,

@@ -18,10 +18,10 @@
 namespace cosmos {
 
 enum class CorrespondenceStatus {
-  found,
-  off_model,      // the line leaves the model's control-point grid (or hits a hole in it)
-  grazing,        // the line is nearly parallel to the model's tangent plane
-  not_converged,  // the foot still moved after the step budget
+  kFound,
+  kOffModel,      // the line leaves the model's control-point grid (or hits a hole in it)
+  kGrazing,       // the line is nearly parallel to the model's tangent plane
+  kNotConverged,  // the foot still moved after the step budget
 };
 
 struct TangentPlaneCorrespondence {

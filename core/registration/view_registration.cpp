@@ -62,11 +62,11 @@ long find_correspondences(const RegistrationPoints& scene, const RegistrationPoi
     const CorrespondenceStatus status =
         find_tangent_plane(model, point, normal, p.max_intersection_steps, c);
     steps += c.steps;
-    if (status != CorrespondenceStatus::found) continue;
+    if (status != CorrespondenceStatus::kFound) continue;
     if (c.travel_mm > p.max_correspondence_distance_mm) continue;
     if (c.model_normal.dot(normal) < min_normal_cosine) continue;
     double weight = 1.0;
-    if (p.estimator == RegistrationEstimator::minimum_variance) {
+    if (p.estimator == RegistrationEstimator::kMinimumVariance) {
       const double scene_height_variance = scene_sigma2 * scene.fit_cofactor(kHeight, kHeight);
       const double variance =
           distance_variance_mm2(model, c, point, scene_height_variance, scene_view_axis);
@@ -89,7 +89,7 @@ double rejection_distance_mm(const std::vector<Correspondence>& candidates,
 }
 
 // ok: every direction constrained or only 1-2 weak (a cylinder); planar: 3 or more weak.
-enum class SolveStatus { ok, planar, unconstrained };
+enum class SolveStatus { kOk, kPlanar, kUnconstrained };
 
 struct Increment {
   RigidTransform T_new_old;
@@ -132,7 +132,7 @@ SolveStatus solve_increment(const std::vector<Correspondence>& inliers, Incremen
   const double min_constraint = kMinMeanConstraint * total_weight;
   int weak_directions = 0;
   for (int k = 0; k < 6; ++k) weak_directions += eigen.eigenvalues()(k) > min_constraint ? 0 : 1;
-  if (weak_directions == 6) return SolveStatus::unconstrained;
+  if (weak_directions == 6) return SolveStatus::kUnconstrained;
   Eigen::Matrix<double, 6, 1> x;
   if (weak_directions == 0) {
     x = H.ldlt().solve(-g);
@@ -153,7 +153,7 @@ SolveStatus solve_increment(const std::vector<Correspondence>& inliers, Incremen
   increment.T_new_old = {rotation, centroid - rotation * centroid + x.tail<3>()};
   increment.rotation_rad = x.head<3>().norm();
   increment.centroid_shift_mm = x.tail<3>().norm();
-  return weak_directions >= kMaxWeakDirections ? SolveStatus::planar : SolveStatus::ok;
+  return weak_directions >= kMaxWeakDirections ? SolveStatus::kPlanar : SolveStatus::kOk;
 }
 
 }  // namespace
@@ -173,12 +173,12 @@ RegistrationResult register_views(const RegistrationPoints& scene, const Registr
   const Eigen::Vector3d scene_centroid_mm = scene.position_mm.rowwise().mean();
   RigidTransform T_last = result.T_model_scene;
   bool planar = false;  // the last pass left 3 or more directions free
-  result.status = RegistrationStatus::iteration_budget_exhausted;
+  result.status = RegistrationStatus::kIterationBudgetExhausted;
   for (int iteration = 1; iteration <= parameters.max_iterations; ++iteration) {
     result.intersection_steps +=
         find_correspondences(scene, model, result.T_model_scene, parameters, candidates);
     if (static_cast<int>(candidates.size()) < parameters.min_inliers) {
-      result.status = RegistrationStatus::too_few_correspondences;
+      result.status = RegistrationStatus::kTooFewCorrespondences;
       break;
     }
     const double rejection_mm = rejection_distance_mm(candidates, parameters);
@@ -194,7 +194,7 @@ RegistrationResult register_views(const RegistrationPoints& scene, const Registr
       sum_squares += c.distance_mm * c.distance_mm;
     }
     if (static_cast<int>(inliers.size()) < parameters.min_inliers) {
-      result.status = RegistrationStatus::too_few_correspondences;
+      result.status = RegistrationStatus::kTooFewCorrespondences;
       break;
     }
     was_inlier.swap(is_inlier);
@@ -205,9 +205,9 @@ RegistrationResult register_views(const RegistrationPoints& scene, const Registr
 
     Increment increment;
     const SolveStatus solved = solve_increment(inliers, increment);
-    planar = solved == SolveStatus::planar;
-    if (solved == SolveStatus::unconstrained) {
-      result.status = RegistrationStatus::degenerate;
+    planar = solved == SolveStatus::kPlanar;
+    if (solved == SolveStatus::kUnconstrained) {
+      result.status = RegistrationStatus::kDegenerate;
       break;
     }
     // Step (iii) of §6.4: T^k = T T^{k-1}.
@@ -216,7 +216,7 @@ RegistrationResult register_views(const RegistrationPoints& scene, const Registr
     result.T_model_scene = (increment.T_new_old * result.T_model_scene).normalized();
     if (increment.rotation_rad < parameters.convergence_rotation_rad &&
         increment.centroid_shift_mm < parameters.convergence_translation_mm) {
-      result.status = RegistrationStatus::converged;
+      result.status = RegistrationStatus::kConverged;
       break;
     }
     // A control point whose normal line lands on the edge of the model's data can be
@@ -228,15 +228,15 @@ RegistrationResult register_views(const RegistrationPoints& scene, const Registr
             parameters.convergence_rotation_rad &&
         (result.T_model_scene.apply(scene_centroid_mm) - T_before_last.apply(scene_centroid_mm))
                 .norm() < parameters.convergence_translation_mm) {
-      result.status = RegistrationStatus::converged;
+      result.status = RegistrationStatus::kConverged;
       break;
     }
   }
   // Still planar at the end: the pose is the last iterate, but three of its parameters are
   // whatever the start made them.
-  if (planar && result.status != RegistrationStatus::too_few_correspondences)
-    result.status = RegistrationStatus::degenerate;
-  result.converged = result.status == RegistrationStatus::converged;
+  if (planar && result.status != RegistrationStatus::kTooFewCorrespondences)
+    result.status = RegistrationStatus::kDegenerate;
+  result.converged = result.status == RegistrationStatus::kConverged;
   return result;
 }
 
@@ -246,7 +246,7 @@ AlignmentScore score_alignment(const RegistrationPoints& scene, const Registrati
   AlignmentScore score;
   if (!valid_input(scene, model, parameters)) return score;
   RegistrationParameters unweighted = parameters;
-  unweighted.estimator = RegistrationEstimator::chen_medioni;
+  unweighted.estimator = RegistrationEstimator::kChenMedioni;
   std::vector<Correspondence> candidates;
   find_correspondences(scene, model, T_model_scene, unweighted, candidates);
   const double limit2 =
@@ -271,7 +271,7 @@ void correspondence_distances(const RegistrationPoints& scene, const Registratio
                          std::numeric_limits<double>::infinity());
   if (!valid_input(scene, model, parameters)) return;
   RegistrationParameters unweighted = parameters;
-  unweighted.estimator = RegistrationEstimator::chen_medioni;
+  unweighted.estimator = RegistrationEstimator::kChenMedioni;
   std::vector<Correspondence> candidates;
   find_correspondences(scene, model, T_model_scene, unweighted, candidates);
   for (const Correspondence& c : candidates)

@@ -34,20 +34,20 @@
 namespace cosmos {
 
 enum class RegistrationEstimator {
-  chen_medioni,      // §6.4, Eq. 6.4: every d_s^2 counts the same
-  minimum_variance,  // §6.6, Eq. 6.23: d_s^2 / sigma_ds^2
+  kChenMedioni,      // §6.4, Eq. 6.4: every d_s^2 counts the same
+  kMinimumVariance,  // §6.6, Eq. 6.23: d_s^2 / sigma_ds^2
 };
 
 inline std::span<const ParameterChoice<RegistrationEstimator>> parameter_choices(
     RegistrationEstimator) {
   static constexpr ParameterChoice<RegistrationEstimator> kChoices[] = {
-      {RegistrationEstimator::chen_medioni, "chen_medioni"},
-      {RegistrationEstimator::minimum_variance, "minimum_variance"}};
+      {RegistrationEstimator::kChenMedioni, "chen_medioni"},
+      {RegistrationEstimator::kMinimumVariance, "minimum_variance"}};
   return kChoices;
 }
 
 struct RegistrationParameters {
-  RegistrationEstimator estimator = RegistrationEstimator::minimum_variance;
+  RegistrationEstimator estimator = RegistrationEstimator::kMinimumVariance;
   int max_iterations = 50;         // iteration budget
   int max_intersection_steps = 6;  // per control point and iteration (correspondence budget)
   double max_correspondence_distance_mm = 5.0;
@@ -88,18 +88,18 @@ struct RegistrationParameters {
 };
 
 enum class RegistrationStatus {
-  converged,
-  iteration_budget_exhausted,  // T is the last iterate
-  too_few_correspondences,     // T is the last iterate with enough inliers (or the initial one)
-  degenerate,  // the last pass's inliers left 3 or more of the 6 parameters free (a plane):
-               // T is the last iterate, stepped only in the constrained directions. 1 or 2
-               // free ones (a cylinder, a surface of revolution) keep their current value
-               // without this status.
-  invalid_input,
+  kConverged,
+  kIterationBudgetExhausted,  // T is the last iterate
+  kTooFewCorrespondences,     // T is the last iterate with enough inliers (or the initial one)
+  kDegenerate,  // the last pass's inliers left 3 or more of the 6 parameters free (a plane):
+                // T is the last iterate, stepped only in the constrained directions. 1 or 2
+                // free ones (a cylinder, a surface of revolution) keep their current value
+                // without this status.
+  kInvalidInput,
 };
 
 struct RegistrationResult {
-  RegistrationStatus status = RegistrationStatus::invalid_input;
+  RegistrationStatus status = RegistrationStatus::kInvalidInput;
   bool converged = false;
   RigidTransform T_model_scene;
   double rms_residual_mm = 0.0;  // RMS of d_s over the inliers of the last pass

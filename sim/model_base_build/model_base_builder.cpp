@@ -196,7 +196,7 @@ ModelBase build_model_base(const PartCatalog& catalog, const ScannerParameters& 
   for (ViewResult& result : jobs.results)
     if (result.measured) base.views.push_back(std::move(result.view));
   ViewGroupingResult grouping = group_model_views(base, settings.grouping);
-  if (grouping.status != ClusteringStatus::ok)
+  if (grouping.status != ClusteringStatus::kOk)
     throw std::logic_error("view grouping failed for part '" +
                            base.parts[static_cast<std::size_t>(grouping.failed_part)].name +
                            "' (non-finite moments?)");

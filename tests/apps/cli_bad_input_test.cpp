@@ -162,7 +162,7 @@ TEST_F(CliBadInput, SynthOptionsReachTheSurface) {
   ASSERT_TRUE(result.exited);
   ASSERT_EQ(result.exit_code, 0) << result.err;
   AnalyticSurfaceSpec spec;
-  spec.shape = AnalyticShape::box_corner;
+  spec.shape = AnalyticShape::kBoxCorner;
   spec.radius_mm = 10;
   spec.pixel_size_mm = 0.25;
   spec.noise_mm = 0.1;

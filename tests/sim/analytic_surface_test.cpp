@@ -17,9 +17,9 @@ namespace cosmos {
 namespace {
 
 constexpr AnalyticShape kAllShapes[] = {
-    AnalyticShape::sphere,    AnalyticShape::cup,     AnalyticShape::cylinder,
-    AnalyticShape::saddle,    AnalyticShape::plane,   AnalyticShape::torus,
-    AnalyticShape::ellipsoid, AnalyticShape::capsule, AnalyticShape::box_corner};
+    AnalyticShape::kSphere,    AnalyticShape::kCup,     AnalyticShape::kCylinder,
+    AnalyticShape::kSaddle,    AnalyticShape::kPlane,   AnalyticShape::kTorus,
+    AnalyticShape::kEllipsoid, AnalyticShape::kCapsule, AnalyticShape::kBoxCorner};
 
 AnalyticSurface make(AnalyticShape shape, double rotate_deg = 0.0, double noise_mm = 0.0,
                      std::uint64_t seed = 1) {
@@ -44,8 +44,8 @@ void for_each_valid(const AnalyticSurface& s, Visit&& visit) {
 TEST(AnalyticSurface, ShapeNamesParseAndListTheValidOnes) {
   for (AnalyticShape shape : kAllShapes)
     EXPECT_EQ(parse_analytic_shape(analytic_shape_name(shape)), shape);
-  EXPECT_EQ(parse_analytic_shape("box-corner"), AnalyticShape::box_corner);
-  EXPECT_EQ(parse_analytic_shape("box_corner"), AnalyticShape::box_corner);
+  EXPECT_EQ(parse_analytic_shape("box-corner"), AnalyticShape::kBoxCorner);
+  EXPECT_EQ(parse_analytic_shape("box_corner"), AnalyticShape::kBoxCorner);
   try {
     parse_analytic_shape("blob");
     ADD_FAILURE() << "blob parsed";
@@ -58,7 +58,7 @@ TEST(AnalyticSurface, ShapeNamesParseAndListTheValidOnes) {
 }
 
 TEST(AnalyticSurface, SphereMatchesTheFormulaAtEveryPixel) {
-  const auto s = make(AnalyticShape::sphere);  // R = 25 mm, 0.5 mm pixels
+  const auto s = make(AnalyticShape::kSphere);  // R = 25 mm, 0.5 mm pixels
   // 50 px to the silhouette, 4 px of margin, each side of the centre pixel.
   EXPECT_EQ(s.range.width(), 109);
   EXPECT_EQ(s.range.height(), 109);
@@ -91,7 +91,7 @@ TEST(AnalyticSurface, SphereMatchesTheFormulaAtEveryPixel) {
 }
 
 TEST(AnalyticSurface, CupIsConcave) {
-  const auto s = make(AnalyticShape::cup);
+  const auto s = make(AnalyticShape::kCup);
   for_each_valid(s, [](double x, double y, const AnalyticTruth& t, float z) {
     EXPECT_NEAR(z, -std::sqrt(625.0 - x * x - y * y), 1e-5);
     EXPECT_FLOAT_EQ(t.kappa1, -0.04f);
@@ -102,7 +102,7 @@ TEST(AnalyticSurface, CupIsConcave) {
 }
 
 TEST(AnalyticSurface, CylinderIsARidgeAlongY) {
-  const auto s = make(AnalyticShape::cylinder);
+  const auto s = make(AnalyticShape::kCylinder);
   double max_y = 0;
   for_each_valid(s, [&](double x, double y, const AnalyticTruth& t, float z) {
     EXPECT_NEAR(z, std::sqrt(625.0 - x * x), 1e-5);
@@ -115,7 +115,7 @@ TEST(AnalyticSurface, CylinderIsARidgeAlongY) {
 }
 
 TEST(AnalyticSurface, SaddleHasTheGaussianCurvatureOfItsGraph) {
-  const auto s = make(AnalyticShape::saddle);
+  const auto s = make(AnalyticShape::kSaddle);
   const AnalyticTruth& centre = s.truth(s.range.width() / 2, s.range.height() / 2);
   EXPECT_FLOAT_EQ(centre.kappa1, 0.04f);
   EXPECT_FLOAT_EQ(centre.kappa2, -0.04f);
@@ -130,7 +130,7 @@ TEST(AnalyticSurface, SaddleHasTheGaussianCurvatureOfItsGraph) {
 }
 
 TEST(AnalyticSurface, PlaneIsTiltedAndPlanar) {
-  const auto s = make(AnalyticShape::plane);
+  const auto s = make(AnalyticShape::kPlane);
   const double tilt = 20.0 * std::numbers::pi / 180.0;
   std::size_t valid = 0;
   for_each_valid(s, [&](double x, double, const AnalyticTruth& t, float z) {
@@ -145,7 +145,7 @@ TEST(AnalyticSurface, PlaneIsTiltedAndPlanar) {
 }
 
 TEST(AnalyticSurface, TorusHasAHoleAndKnownCurvatures) {
-  const auto s = make(AnalyticShape::torus);  // R = 30, a = 12
+  const auto s = make(AnalyticShape::kTorus);  // R = 30, a = 12
   const int c = s.range.width() / 2;
   EXPECT_FALSE(s.truth(c, c).valid);
   const AnalyticTruth& crest = s.truth(c + 60, c);  // x = 30 mm: the top of the tube
@@ -162,7 +162,7 @@ TEST(AnalyticSurface, TorusHasAHoleAndKnownCurvatures) {
 }
 
 TEST(AnalyticSurface, EllipsoidCurvatureMatchesItsGaussianCurvature) {
-  const auto s = make(AnalyticShape::ellipsoid);  // 30 x 20 x 15
+  const auto s = make(AnalyticShape::kEllipsoid);  // 30 x 20 x 15
   const double a = 30, b = 20, c = 15;
   for_each_valid(s, [&](double x, double y, const AnalyticTruth& t, float z) {
     const double u = 1.0 - x * x / (a * a) - y * y / (b * b);
@@ -181,13 +181,13 @@ TEST(AnalyticSurface, EllipsoidCurvatureMatchesItsGaussianCurvature) {
 }
 
 TEST(AnalyticSurface, RotationTurnsTheEllipsoidSilhouette) {
-  const auto flat = make(AnalyticShape::ellipsoid);
-  const auto turned = make(AnalyticShape::ellipsoid, 90.0);
+  const auto flat = make(AnalyticShape::kEllipsoid);
+  const auto turned = make(AnalyticShape::kEllipsoid, 90.0);
   EXPECT_EQ(flat.range.width(), turned.range.height());
   EXPECT_EQ(flat.range.height(), turned.range.width());
   EXPECT_EQ(flat.range.width(), 2 * (60 + 4) + 1);
   const double angle = 30.0 * std::numbers::pi / 180.0;
-  const auto oblique = make(AnalyticShape::ellipsoid, 30.0);
+  const auto oblique = make(AnalyticShape::kEllipsoid, 30.0);
   std::size_t valid = 0;
   for (int row = 0; row < oblique.range.height(); ++row) {
     for (int column = 0; column < oblique.range.width(); ++column) {
@@ -207,7 +207,7 @@ TEST(AnalyticSurface, RotationTurnsTheEllipsoidSilhouette) {
 }
 
 TEST(AnalyticSurface, CapsuleRegionsAndAreas) {
-  const auto s = make(AnalyticShape::capsule);  // r = 15, cylinder 40
+  const auto s = make(AnalyticShape::kCapsule);  // r = 15, cylinder 40
   for_each_valid(s, [](double x, double, const AnalyticTruth& t, float) {
     const int region = x < -20.0 ? 0 : (x > 20.0 ? 2 : 1);
     ASSERT_EQ(t.region, region) << x;
@@ -236,7 +236,7 @@ TEST(AnalyticSurface, CapsuleRegionsAndAreas) {
 
 TEST(AnalyticSurface, BoxCornerShowsThreeOrthogonalSquareFaces) {
   for (double rotate_deg : {0.0, 25.0}) {
-    const auto s = make(AnalyticShape::box_corner, rotate_deg);
+    const auto s = make(AnalyticShape::kBoxCorner, rotate_deg);
     const auto normals = box_corner_face_normals(s.spec);
     for (int i = 0; i < 3; ++i) {
       EXPECT_NEAR(normals[i].norm(), 1.0f, 1e-6f);
@@ -284,10 +284,10 @@ TEST(AnalyticSurface, EveryShapeHasUnitNormalsOrderedCurvaturesAndANaNMargin) {
 }
 
 TEST(AnalyticSurface, NoiseIsSeededAndHasTheRequestedSpread) {
-  const auto clean = make(AnalyticShape::plane);
-  const auto a = make(AnalyticShape::plane, 0.0, 0.2, 7);
-  const auto b = make(AnalyticShape::plane, 0.0, 0.2, 7);
-  const auto c = make(AnalyticShape::plane, 0.0, 0.2, 8);
+  const auto clean = make(AnalyticShape::kPlane);
+  const auto a = make(AnalyticShape::kPlane, 0.0, 0.2, 7);
+  const auto b = make(AnalyticShape::kPlane, 0.0, 0.2, 7);
+  const auto c = make(AnalyticShape::kPlane, 0.0, 0.2, 8);
   const std::size_t bytes = a.range.z_mm.size() * sizeof(float);
   EXPECT_EQ(std::memcmp(a.range.z_mm.data(), b.range.z_mm.data(), bytes), 0);
   EXPECT_NE(std::memcmp(a.range.z_mm.data(), c.range.z_mm.data(), bytes), 0);
@@ -329,7 +329,7 @@ TEST(AnalyticSurface, InvalidSpecsThrowNamingTheField) {
   spec.noise_mm = std::nan("");
   EXPECT_NE(message_of(spec).find("noise_mm"), std::string::npos);
   spec = {};
-  spec.shape = AnalyticShape::torus;
+  spec.shape = AnalyticShape::kTorus;
   spec.torus_minor_radius_mm = 40.0;
   EXPECT_NE(message_of(spec).find("torus_minor_radius_mm"), std::string::npos);
   spec = {};

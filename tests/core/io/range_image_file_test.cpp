@@ -128,7 +128,7 @@ TEST_F(RangeImageFile, GroundTruthRoundTripsExactly) {
 
 TEST_F(RangeImageFile, AnalyticSurfaceRoundTripsThroughBothFormats) {
   AnalyticSurfaceSpec spec;
-  spec.shape = AnalyticShape::torus;
+  spec.shape = AnalyticShape::kTorus;
   spec.noise_mm = 0.05;
   spec.rotate_deg = 17.0;
   const AnalyticSurface surface = make_analytic_surface(spec);

@@ -102,7 +102,7 @@ TEST(CorrespondenceFeasibility, TheTrivialCorrespondenceIsAlwaysFeasible) {
 
   const CosmosView& relief = relief_view(0).view;
   for (AnalyticShape shape :
-       {AnalyticShape::capsule, AnalyticShape::torus, AnalyticShape::box_corner}) {
+       {AnalyticShape::kCapsule, AnalyticShape::kTorus, AnalyticShape::kBoxCorner}) {
     const CosmosView& view = analytic_view(shape, 0).view;
     EXPECT_TRUE(
         is_feasible_correspondence(view, relief, {pair_of(all_ids(view), all_ids(relief))}, 0.0));

@@ -72,7 +72,7 @@ TEST(PatchGroupMatching, EmptyViewsGiveTheTrivialCorrespondence) {
   const CosmosView empty;
   for (const auto& [scene, model] : {std::pair{empty, empty}, std::pair{empty, chain_view()}}) {
     const PatchGroupMatch match = match_patch_groups(scene, model);
-    EXPECT_EQ(match.status, PatchGroupMatchStatus::empty_view);
+    EXPECT_EQ(match.status, PatchGroupMatchStatus::kEmptyView);
     ASSERT_EQ(match.pairs.size(), 1u);
     EXPECT_EQ(match.pairs[0].model_patches.size(), model.patches.size());
     EXPECT_EQ(match.score, 0.0);
@@ -86,7 +86,7 @@ TEST(PatchGroupMatching, OnePatchViewsGiveOnePairScoredByItsGoodness) {
   scene.patches = {graph_patch(4, 100, 0.80, {})};
   model.patches = {graph_patch(9, 250, 0.70, {})};
   const PatchGroupMatch match = match_patch_groups(scene, model);
-  EXPECT_EQ(match.status, PatchGroupMatchStatus::ok);
+  EXPECT_EQ(match.status, PatchGroupMatchStatus::kOk);
   ASSERT_EQ(match.pairs.size(), 1u);
   EXPECT_EQ(match.pairs[0].scene_patches, std::vector<int>{4});
   EXPECT_EQ(match.pairs[0].model_patches, std::vector<int>{9});
@@ -120,7 +120,7 @@ TEST(PatchGroupMatching, FifteenPatchGridIsFollowedThroughShuffledIds) {
   const CosmosView scene = grid_view(kShuffled, 1.0);
   const CosmosView model = grid_view(kIdentity, -1.0);
   const PatchGroupMatch match = match_patch_groups(scene, model);
-  EXPECT_EQ(match.status, PatchGroupMatchStatus::ok);
+  EXPECT_EQ(match.status, PatchGroupMatchStatus::kOk);
   ASSERT_EQ(match.pairs.size(), 15u);
   int correct = 0;
   for (const MappedPair& pair : match.pairs) {
@@ -171,8 +171,8 @@ TEST(PatchGroupMatching, WeakAdjacenciesNeedNotMatchStrongOnesMust) {
 }
 
 TEST(PatchGroupMatching, CapsuleViewsCorrespondCapToCapAndRidgeToRidge) {
-  const LabelledView& scene = analytic_view(AnalyticShape::capsule, 35);
-  const LabelledView& model = analytic_view(AnalyticShape::capsule, 0);
+  const LabelledView& scene = analytic_view(AnalyticShape::kCapsule, 35);
+  const LabelledView& model = analytic_view(AnalyticShape::kCapsule, 0);
   const PatchGroupMatch match = match_patch_groups(scene.view, model.view);
   EXPECT_TRUE(feasible(scene.view, model.view, match));
   ASSERT_GE(match.pairs.size(), 3u);
@@ -213,19 +213,19 @@ TEST(PatchGroupMatching, FreeFormReliefViewsCorrespondRegionToRegion) {
 }
 
 TEST(PatchGroupMatching, DifferentPartsGiveCoarserLowerScoringCorrespondences) {
-  const LabelledView& capsule35 = analytic_view(AnalyticShape::capsule, 35);
-  const LabelledView& capsule0 = analytic_view(AnalyticShape::capsule, 0);
+  const LabelledView& capsule35 = analytic_view(AnalyticShape::kCapsule, 35);
+  const LabelledView& capsule0 = analytic_view(AnalyticShape::kCapsule, 0);
   const PatchGroupMatch same_capsule = match_patch_groups(capsule35.view, capsule0.view);
   const PatchGroupMatch same_relief = match_patch_groups(relief_view(40).view, relief_view(0).view);
   const double same_score = std::min(same_capsule.score, same_relief.score);
   const double same_fineness = std::min(same_capsule.fineness, same_relief.fineness);
 
   const std::vector<std::pair<const CosmosView*, const CosmosView*>> different = {
-      {&capsule35.view, &analytic_view(AnalyticShape::torus, 0).view},
-      {&capsule35.view, &analytic_view(AnalyticShape::box_corner, 0).view},
+      {&capsule35.view, &analytic_view(AnalyticShape::kTorus, 0).view},
+      {&capsule35.view, &analytic_view(AnalyticShape::kBoxCorner, 0).view},
       {&relief_view(40).view, &capsule0.view},
-      {&relief_view(40).view, &analytic_view(AnalyticShape::torus, 0).view},
-      {&relief_view(40).view, &analytic_view(AnalyticShape::box_corner, 0).view}};
+      {&relief_view(40).view, &analytic_view(AnalyticShape::kTorus, 0).view},
+      {&relief_view(40).view, &analytic_view(AnalyticShape::kBoxCorner, 0).view}};
   for (const auto& [scene, model] : different) {
     const PatchGroupMatch match = match_patch_groups(*scene, *model);
     EXPECT_TRUE(feasible(*scene, *model, match));
@@ -235,7 +235,7 @@ TEST(PatchGroupMatching, DifferentPartsGiveCoarserLowerScoringCorrespondences) {
   }
   // Planar faces against curved patches: nothing refines, and nothing resembles.
   const PatchGroupMatch box =
-      match_patch_groups(capsule35.view, analytic_view(AnalyticShape::box_corner, 0).view);
+      match_patch_groups(capsule35.view, analytic_view(AnalyticShape::kBoxCorner, 0).view);
   EXPECT_EQ(box.pairs.size(), 1u);
   EXPECT_LT(box.score, 0.05);
 }
@@ -247,7 +247,7 @@ TEST(PatchGroupMatching, WithoutABudgetTheTrivialCorrespondenceStays) {
       match_patch_groups(relief_view(40).view, relief_view(0).view, no_budget);
   EXPECT_EQ(match.pairs.size(), 1u);
   EXPECT_EQ(match.operations, 0);
-  EXPECT_EQ(match.status, PatchGroupMatchStatus::budget_exhausted);
+  EXPECT_EQ(match.status, PatchGroupMatchStatus::kBudgetExhausted);
   EXPECT_TRUE(feasible(relief_view(40).view, relief_view(0).view, match));
 }
 
@@ -255,7 +255,7 @@ TEST(PatchGroupMatching, TheOperationBudgetIsRespected) {
   const CosmosView& scene = relief_view(40).view;
   const CosmosView& model = relief_view(0).view;
   const PatchGroupMatch unlimited = match_patch_groups(scene, model);
-  EXPECT_EQ(unlimited.status, PatchGroupMatchStatus::ok);
+  EXPECT_EQ(unlimited.status, PatchGroupMatchStatus::kOk);
   ASSERT_GT(unlimited.operations, 50);
   for (std::int64_t budget : {std::int64_t{1}, std::int64_t{10}, std::int64_t{50},
                               unlimited.operations / 2, unlimited.operations - 1}) {
@@ -263,7 +263,7 @@ TEST(PatchGroupMatching, TheOperationBudgetIsRespected) {
     parameters.max_operations = budget;
     const PatchGroupMatch match = match_patch_groups(scene, model, parameters);
     EXPECT_LE(match.operations, budget);
-    EXPECT_EQ(match.status, PatchGroupMatchStatus::budget_exhausted);
+    EXPECT_EQ(match.status, PatchGroupMatchStatus::kBudgetExhausted);
     EXPECT_TRUE(feasible(scene, model, match));
     EXPECT_LE(match.pairs.size(), unlimited.pairs.size());
   }

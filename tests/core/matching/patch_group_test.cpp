@@ -26,7 +26,7 @@ PatchSet bits(std::initializer_list<int> indices) {
 
 TEST(PatchGroup, GraphFollowsTheConnectivityListWithAreaShares) {
   const PatchGraph graph = build_patch_graph(chain_view(), 0.05);
-  ASSERT_EQ(graph.status, PatchGraphStatus::ok);
+  ASSERT_EQ(graph.status, PatchGraphStatus::kOk);
   ASSERT_EQ(graph.nodes.size(), 4u);
   EXPECT_EQ(graph.all, bits({0, 1, 2, 3}));
   EXPECT_EQ(graph.nodes[0].adjacent, bits({1}));
@@ -95,10 +95,10 @@ TEST(PatchGroup, ViewsWithoutAreaShareItEquallyAndTooLargeViewsAreRefused) {
   for (int id = 0; id <= kMaxGraphPatches; ++id)
     large.patches.push_back(graph_patch(id, 1, 0.5, {}));
   const PatchGraph refused = build_patch_graph(large, 0.05);
-  EXPECT_EQ(refused.status, PatchGraphStatus::too_many_patches);
+  EXPECT_EQ(refused.status, PatchGraphStatus::kTooManyPatches);
   EXPECT_TRUE(refused.nodes.empty());
   large.patches.pop_back();
-  EXPECT_EQ(build_patch_graph(large, 0.05).status, PatchGraphStatus::ok);
+  EXPECT_EQ(build_patch_graph(large, 0.05).status, PatchGraphStatus::kOk);
 }
 
 TEST(PatchGroup, AdjacencyAndConnectivityOfGroups) {

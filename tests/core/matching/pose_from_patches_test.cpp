@@ -45,7 +45,7 @@ TEST(PoseFromPatches, HandMadeNormalsGiveTheKnownRotationTo1e9) {
     weight *= 1.7;  // unequal weights must not matter for exact data
   }
   const RotationFromNormals rotation = rotation_from_normals(normals, 5.0);
-  EXPECT_EQ(rotation.status, PatchPoseStatus::ok);
+  EXPECT_EQ(rotation.status, PatchPoseStatus::kOk);
   EXPECT_LT(max_abs_difference(rotation.R_model_scene, R_model_scene), 1e-9);
   EXPECT_LT(rotation.rms_residual_deg, 1e-9);
   EXPECT_NEAR(rotation.R_model_scene.determinant(), 1.0, 1e-12);
@@ -60,7 +60,7 @@ TEST(PoseFromPatches, TwoPairsTurnAboutTheAxisOfTheThesisConstruction) {
   const Eigen::Vector3d n_m2 = R_model_scene * n_s2;
   const std::vector<NormalCorrespondence> normals = {{n_s1, n_m1, 1.0}, {n_s2, n_m2, 3.0}};
   const RotationFromNormals rotation = rotation_from_normals(normals, 5.0);
-  EXPECT_EQ(rotation.status, PatchPoseStatus::ok);
+  EXPECT_EQ(rotation.status, PatchPoseStatus::kOk);
   const Eigen::Vector3d thesis_axis = (n_m1 - n_s1).cross(n_m2 - n_s2).normalized();
   const Eigen::AngleAxisd recovered(rotation.R_model_scene);
   EXPECT_NEAR(std::abs(recovered.axis().dot(thesis_axis)), 1.0, 1e-9);
@@ -73,23 +73,23 @@ TEST(PoseFromPatches, NormalSpreadIsTheAngleBetweenTwoEquallyWeightedNormals) {
   const std::vector<NormalCorrespondence> normals = {{a, a, 2.0}, {b, b, 2.0}};
   const RotationFromNormals rotation = rotation_from_normals(normals, 5.0);
   EXPECT_NEAR(rotation.normal_spread_deg, 30.0, 1e-9);
-  EXPECT_EQ(rotation.status, PatchPoseStatus::ok);
+  EXPECT_EQ(rotation.status, PatchPoseStatus::kOk);
   EXPECT_LT(max_abs_difference(rotation.R_model_scene, Eigen::Matrix3d::Identity()), 1e-12);
 }
 
 TEST(PoseFromPatches, FewerThanTwoNonParallelNormalsAreReported) {
-  EXPECT_EQ(rotation_from_normals({}, 5.0).status, PatchPoseStatus::too_few_pairs);
+  EXPECT_EQ(rotation_from_normals({}, 5.0).status, PatchPoseStatus::kTooFewPairs);
   const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
   const std::vector<NormalCorrespondence> zero_weight = {{z, z, 0.0}};
-  EXPECT_EQ(rotation_from_normals(zero_weight, 5.0).status, PatchPoseStatus::too_few_pairs);
+  EXPECT_EQ(rotation_from_normals(zero_weight, 5.0).status, PatchPoseStatus::kTooFewPairs);
   const std::vector<NormalCorrespondence> one = {{z, z, 1.0}};
-  EXPECT_EQ(rotation_from_normals(one, 5.0).status, PatchPoseStatus::degenerate_normals);
+  EXPECT_EQ(rotation_from_normals(one, 5.0).status, PatchPoseStatus::kDegenerateNormals);
   const std::vector<NormalCorrespondence> parallel = {{z, z, 1.0}, {z, z, 5.0}, {-z, -z, 1.0}};
-  EXPECT_EQ(rotation_from_normals(parallel, 5.0).status, PatchPoseStatus::degenerate_normals);
+  EXPECT_EQ(rotation_from_normals(parallel, 5.0).status, PatchPoseStatus::kDegenerateNormals);
   const Eigen::Vector3d tilted(std::sin(3 * kDegToRad), 0, std::cos(3 * kDegToRad));
   const std::vector<NormalCorrespondence> close = {{z, z, 1.0}, {tilted, tilted, 1.0}};
   const RotationFromNormals nearly = rotation_from_normals(close, 5.0);
-  EXPECT_EQ(nearly.status, PatchPoseStatus::degenerate_normals);
+  EXPECT_EQ(nearly.status, PatchPoseStatus::kDegenerateNormals);
   EXPECT_NEAR(nearly.normal_spread_deg, 3.0, 1e-9);
 }
 
@@ -124,7 +124,7 @@ TEST(PoseFromPatches, HandMadeViewsGiveTheKnownPoseTo1e9) {
   std::vector<MappedPair> pairs = {
       {{10}, {10}, {}}, {{11, 12}, {11, 12}, {}}, {{13}, {13}, {}}, {{14}, {14}, {}}};
   const PoseFromPatches pose = estimate_pose_from_patches(views.scene, views.model, pairs);
-  EXPECT_EQ(pose.status, PatchPoseStatus::ok);
+  EXPECT_EQ(pose.status, PatchPoseStatus::kOk);
   EXPECT_EQ(pose.pairs_used, 4);
   EXPECT_LT(max_abs_difference(pose.T_model_scene.rotation, T_model_scene.rotation), 1e-9);
   EXPECT_LT((pose.T_model_scene.translation_mm - T_model_scene.translation_mm).norm(), 1e-9);
@@ -144,16 +144,16 @@ TEST(PoseFromPatches, GroupsWithoutAnOrientationAreLeftOut) {
       {{10}, {10}, {}}, {{11}, {11}, {}}, {{13, 14}, {13, 14}, {}}};
   const PoseFromPatches pose = estimate_pose_from_patches(scene, model, pairs);
   EXPECT_EQ(pose.pairs_used, 2);
-  EXPECT_EQ(pose.status, PatchPoseStatus::ok);
+  EXPECT_EQ(pose.status, PatchPoseStatus::kOk);
   EXPECT_LT(max_abs_difference(pose.T_model_scene.rotation, Eigen::Matrix3d::Identity()), 1e-9);
 }
 
 TEST(PoseFromPatches, CapsuleCorrespondenceGivesTheTurnAboutZ) {
-  const auto& scene = analytic_view(AnalyticShape::capsule, 35);
-  const auto& model = analytic_view(AnalyticShape::capsule, 0);
+  const auto& scene = analytic_view(AnalyticShape::kCapsule, 35);
+  const auto& model = analytic_view(AnalyticShape::kCapsule, 0);
   const PatchGroupMatch match = match_patch_groups(scene.view, model.view);
   const PoseFromPatches pose = estimate_pose_from_patches(scene.view, model.view, match.pairs);
-  ASSERT_EQ(pose.status, PatchPoseStatus::ok);
+  ASSERT_EQ(pose.status, PatchPoseStatus::kOk);
   const Eigen::Matrix3d R_true = model.R_scanner_part * scene.R_scanner_part.transpose();
   // The capsule is symmetric under a half turn about z, and the match cannot tell its caps
   // apart: either pose is right.
@@ -171,7 +171,7 @@ TEST(PoseFromPatches, FreeFormCorrespondenceGivesTheTurnAboutZ) {
   const auto& model = relief_view(0);
   const PatchGroupMatch match = match_patch_groups(scene.view, model.view);
   const PoseFromPatches pose = estimate_pose_from_patches(scene.view, model.view, match.pairs);
-  ASSERT_EQ(pose.status, PatchPoseStatus::ok);
+  ASSERT_EQ(pose.status, PatchPoseStatus::kOk);
   const Eigen::Matrix3d R_true = model.R_scanner_part * scene.R_scanner_part.transpose();
   EXPECT_LT(rotation_angle_between_rad(pose.T_model_scene.rotation, R_true) / kDegToRad, 2.0);
   // Both views see the whole round footprint, turned about its centre: t = 0.
@@ -180,10 +180,10 @@ TEST(PoseFromPatches, FreeFormCorrespondenceGivesTheTurnAboutZ) {
 }
 
 TEST(PoseFromPatches, TorusNormalsAllAlongZDoNotFixARotation) {
-  const auto& torus = analytic_view(AnalyticShape::torus, 0);
+  const auto& torus = analytic_view(AnalyticShape::kTorus, 0);
   const PatchGroupMatch match = match_patch_groups(torus.view, torus.view);
   const PoseFromPatches pose = estimate_pose_from_patches(torus.view, torus.view, match.pairs);
-  EXPECT_EQ(pose.status, PatchPoseStatus::degenerate_normals);
+  EXPECT_EQ(pose.status, PatchPoseStatus::kDegenerateNormals);
   EXPECT_LT(pose.normal_spread_deg, 5.0);
 }
 

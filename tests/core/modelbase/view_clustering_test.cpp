@@ -36,7 +36,7 @@ void expect_merge(const DendrogramMerge& m, int a, int b, double height, int siz
 
 TEST(ViewClustering, CompleteLinkBuildsTheHandComputedDendrogram) {
   const Dendrogram dendrogram = complete_link_clustering(hand_made_dissimilarities());
-  ASSERT_EQ(dendrogram.status, ClusteringStatus::ok);
+  ASSERT_EQ(dendrogram.status, ClusteringStatus::kOk);
   ASSERT_EQ(dendrogram.leaves, 6);
   ASSERT_EQ(dendrogram.merges.size(), 5u);
   expect_merge(dendrogram.merges[0], 0, 1, 0.10, 2);
@@ -84,16 +84,16 @@ TEST(ViewClustering, TiesBreakByTheLowestClusterIds) {
 }
 
 TEST(ViewClustering, RejectsBadMatrices) {
-  EXPECT_EQ(complete_link_clustering(Eigen::MatrixXd(2, 3)).status, ClusteringStatus::not_square);
-  EXPECT_EQ(complete_link_clustering(Eigen::MatrixXd(0, 0)).status, ClusteringStatus::empty);
+  EXPECT_EQ(complete_link_clustering(Eigen::MatrixXd(2, 3)).status, ClusteringStatus::kNotSquare);
+  EXPECT_EQ(complete_link_clustering(Eigen::MatrixXd(0, 0)).status, ClusteringStatus::kEmpty);
   Eigen::MatrixXd d = hand_made_dissimilarities();
   d(0, 1) = 0.2;
-  EXPECT_EQ(complete_link_clustering(d).status, ClusteringStatus::not_symmetric);
+  EXPECT_EQ(complete_link_clustering(d).status, ClusteringStatus::kNotSymmetric);
   d = hand_made_dissimilarities();
   d(0, 1) = d(1, 0) = -0.1;
-  EXPECT_EQ(complete_link_clustering(d).status, ClusteringStatus::invalid_value);
+  EXPECT_EQ(complete_link_clustering(d).status, ClusteringStatus::kInvalidValue);
   const Dendrogram one = complete_link_clustering(Eigen::MatrixXd::Zero(1, 1));
-  EXPECT_EQ(one.status, ClusteringStatus::ok);
+  EXPECT_EQ(one.status, ClusteringStatus::kOk);
   EXPECT_EQ(cut_at_level(one, 0.1).clusters, 1);
 }
 

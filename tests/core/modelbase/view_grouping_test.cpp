@@ -37,7 +37,7 @@ TEST(ViewGrouping, CutAtALevelSeparatesTheGroupsOfEachPart) {
   const ModelBase base = grouped_base();
   const ViewGroupingResult result =
       group_model_views(base, {.cut_level = 0.01, .cluster_count = 0});
-  ASSERT_EQ(result.status, ClusteringStatus::ok);
+  ASSERT_EQ(result.status, ClusteringStatus::kOk);
   ASSERT_EQ(result.clusters.size(), 5u);
   // Part 0, clusters in order of their lowest view.
   EXPECT_EQ(result.clusters[0].part_index, 0);
@@ -57,14 +57,14 @@ TEST(ViewGrouping, CutAtALevelSeparatesTheGroupsOfEachPart) {
 TEST(ViewGrouping, LevelBelowTheTightestPairKeepsEveryViewApart) {
   const ViewGroupingResult result =
       group_model_views(grouped_base(), {.cut_level = 1e-6, .cluster_count = 0});
-  ASSERT_EQ(result.status, ClusteringStatus::ok);
+  ASSERT_EQ(result.status, ClusteringStatus::kOk);
   EXPECT_EQ(result.clusters.size(), 10u);
 }
 
 TEST(ViewGrouping, RequestedCountOverridesTheLevel) {
   const ViewGroupingResult result =
       group_model_views(grouped_base(), {.cut_level = 0.01, .cluster_count = 2});
-  ASSERT_EQ(result.status, ClusteringStatus::ok);
+  ASSERT_EQ(result.status, ClusteringStatus::kOk);
   ASSERT_EQ(result.clusters.size(), 4u);
   // Complete link: the 0.5 and 0.8 groups are at most 0.30 apart in m1 (Eq. 4.3: 0.09), the
   // 0.2 and 0.5 groups 0.31 (0.0961), so the first two to merge are 0.5 and 0.8.
@@ -78,7 +78,7 @@ TEST(ViewGrouping, NonFiniteMomentsAreReportedWithThePart) {
   ModelBase base = grouped_base();
   base.views[8].moments[2] = std::numeric_limits<double>::quiet_NaN();
   const ViewGroupingResult result = group_model_views(base, {});
-  EXPECT_EQ(result.status, ClusteringStatus::invalid_value);
+  EXPECT_EQ(result.status, ClusteringStatus::kInvalidValue);
   EXPECT_EQ(result.failed_part, 1);
   EXPECT_TRUE(result.clusters.empty());
 }

@@ -117,14 +117,14 @@ TEST(PoseHypotheses, TheTruePoseIsAmongTheTurnsAndThePrincipalAxesCandidates) {
 TEST(PoseHypotheses, TheCosmosPoseComesFirstWhenThereIsOne) {
   const ViewPair pair = turned_pair(90.0);
   PoseFromPatches from_patches;
-  from_patches.status = PatchPoseStatus::ok;
+  from_patches.status = PatchPoseStatus::kOk;
   from_patches.T_model_scene = {Eigen::Matrix3d::Identity(), {1.0, 2.0, 3.0}};
   const std::vector<RigidTransform> hypotheses =
       generate_pose_hypotheses(pair.scene, pair.model, from_patches, {.in_plane_turns = 6});
   ASSERT_EQ(hypotheses.size(), 1u + 4u + 6u);
   EXPECT_TRUE(same_pose(hypotheses[0], from_patches.T_model_scene, 1e-15));
   // A pose that failed is left out.
-  from_patches.status = PatchPoseStatus::too_few_pairs;
+  from_patches.status = PatchPoseStatus::kTooFewPairs;
   EXPECT_EQ(
       generate_pose_hypotheses(pair.scene, pair.model, from_patches, {.in_plane_turns = 6}).size(),
       4u + 6u);

@@ -21,7 +21,7 @@ namespace {
 // coefficient in use), with empty cells inside the grid as well as around it.
 RegistrationPoints sphere_points(int stride_px) {
   AnalyticSurfaceSpec spec;
-  spec.shape = AnalyticShape::sphere;
+  spec.shape = AnalyticShape::kSphere;
   spec.radius_mm = 20.0;
   spec.noise_mm = 0.02;
   spec.seed = 3;

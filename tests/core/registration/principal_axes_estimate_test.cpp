@@ -96,15 +96,15 @@ TEST(PrincipalAxesEstimate, EigenvalueGapDecidesWhetherTheAxesAreDefined) {
   };
   // Eigenvalues 1/3, 4/3, 3: gaps 1 and 5/3, relative to the largest: 1/3.
   const PrincipalAxesEstimate distinct = estimate_for(3, 2, 1, 0.05);
-  EXPECT_EQ(distinct.status, PrincipalAxesStatus::ok);
+  EXPECT_EQ(distinct.status, PrincipalAxesStatus::kOk);
   EXPECT_NEAR(distinct.min_relative_eigenvalue_gap, 1.0 / 3, 1e-12);
   // a = 2.1, b = 2: (4.41 - 4) / 4.41.
   EXPECT_NEAR(estimate_for(2.1, 2, 1, 0.05).min_relative_eigenvalue_gap, 0.41 / 4.41, 1e-12);
-  EXPECT_EQ(estimate_for(2.1, 2, 1, 0.05).status, PrincipalAxesStatus::ok);
-  EXPECT_EQ(estimate_for(2.1, 2, 1, 0.1).status, PrincipalAxesStatus::ambiguous_axes);
+  EXPECT_EQ(estimate_for(2.1, 2, 1, 0.05).status, PrincipalAxesStatus::kOk);
+  EXPECT_EQ(estimate_for(2.1, 2, 1, 0.1).status, PrincipalAxesStatus::kAmbiguousAxes);
   // A round footprint: the in-plane axes are anyone's.
   const PrincipalAxesEstimate round = estimate_for(2, 2, 1, 0.05);
-  EXPECT_EQ(round.status, PrincipalAxesStatus::ambiguous_axes);
+  EXPECT_EQ(round.status, PrincipalAxesStatus::kAmbiguousAxes);
   EXPECT_NEAR(round.min_relative_eigenvalue_gap, 0.0, 1e-12);
 }
 
@@ -114,7 +114,7 @@ TEST(PrincipalAxesEstimate, FewerThanThreePointsGiveNothing) {
   EXPECT_TRUE(principal_axes_candidates(two, many).empty());
   EXPECT_TRUE(principal_axes_candidates(many, two).empty());
   EXPECT_EQ(estimate_by_principal_axes(two, many, RegistrationParameters{}).status,
-            PrincipalAxesStatus::too_few_points);
+            PrincipalAxesStatus::kTooFewPoints);
 }
 
 // The free-form part turned 45 degrees about z (Table 6.3's pose): of the four candidates the
@@ -130,7 +130,7 @@ TEST(PrincipalAxesEstimate, RecoversTheFortyFiveDegreeTurnOfTheFreeFormPart) {
   const auto scene = build_registration_points(scene_image, {.stride_px = 2}).points;
   const RegistrationParameters parameters;
   const PrincipalAxesEstimate estimate = estimate_by_principal_axes(scene, model, parameters);
-  EXPECT_EQ(estimate.status, PrincipalAxesStatus::ok);
+  EXPECT_EQ(estimate.status, PrincipalAxesStatus::kOk);
   const RigidTransform truth = T_scanner2_part.inverse();
   EXPECT_LT(rotation_angle_between_rad(estimate.T_model_scene.rotation, truth.rotation) / kDeg,
             0.5);

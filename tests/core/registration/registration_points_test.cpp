@@ -33,7 +33,7 @@ TEST(RegistrationPoints, PlaneFitGivesTheNormalAndTheRegressionCovariance) {
   for (bool quadric : {false, true}) {
     parameters.quadric_fit = quadric;
     const RegistrationPointsResult result = build_registration_points(image, parameters);
-    ASSERT_EQ(result.status, RegistrationPointsStatus::ok);
+    ASSERT_EQ(result.status, RegistrationPointsStatus::kOk);
     const RegistrationPoints& points = result.points;
     EXPECT_EQ(points.grid_width, 21);
     const Eigen::Vector3d expected_normal(-std::sin(30 * kDeg), 0, std::cos(30 * kDeg));
@@ -123,14 +123,14 @@ TEST(RegistrationPoints, QuadricHeightIsUnbiasedOnACurvedSurfaceWherePlaneIsNot)
 // coefficients against the closed form z = sqrt(R^2 - x^2 - y^2) at its pixel.
 TEST(RegistrationPoints, SphereControlPointsFollowTheClosedFormSurface) {
   AnalyticSurfaceSpec spec;
-  spec.shape = AnalyticShape::sphere;
+  spec.shape = AnalyticShape::kSphere;
   spec.radius_mm = 25.0;
   const AnalyticSurface sphere = make_analytic_surface(spec);
   RegistrationPointParameters parameters;
   parameters.stride_px = 2;
   parameters.z_noise_sigma_mm = 0.01;
   const RegistrationPointsResult result = build_registration_points(sphere.range, parameters);
-  ASSERT_EQ(result.status, RegistrationPointsStatus::ok);
+  ASSERT_EQ(result.status, RegistrationPointsStatus::kOk);
   const RegistrationPoints& points = result.points;
   ASSERT_GT(points.size(), 1000);
   // Within 45 degrees of the apex the 2 mm window sees a nearly quadratic surface; towards the
@@ -179,7 +179,7 @@ TEST(RegistrationPoints, SphereControlPointsFollowTheClosedFormSurface) {
 // §6.7.1: steeper surface than max_tilt_deg is not taken.
 TEST(RegistrationPoints, TiltLimitDropsExactlyTheSteeperPoints) {
   AnalyticSurfaceSpec spec;
-  spec.shape = AnalyticShape::sphere;
+  spec.shape = AnalyticShape::kSphere;
   const AnalyticSurface sphere = make_analytic_surface(spec);
   RegistrationPointParameters parameters;
   parameters.stride_px = 2;
@@ -208,12 +208,12 @@ TEST(RegistrationPoints, NoiseIsEstimatedFromThePlaneResiduals) {
   RangeImage image = tilted_plane(20.0, 81, 0.5);
   add_z_noise(image, 0.04, 7);
   const RegistrationPointsResult result = build_registration_points(image, {});
-  ASSERT_EQ(result.status, RegistrationPointsStatus::ok);
+  ASSERT_EQ(result.status, RegistrationPointsStatus::kOk);
   EXPECT_NEAR(result.points.z_noise_sigma_mm, 0.04, 0.004);
   RegistrationPointParameters bad;
   bad.window_size = 4;
   EXPECT_EQ(build_registration_points(image, bad).status,
-            RegistrationPointsStatus::invalid_parameters);
+            RegistrationPointsStatus::kInvalidParameters);
 }
 
 // A rough strip (noise ten times the rest) is taken for a crease: above 3 times the median
@@ -241,9 +241,9 @@ TEST(RegistrationPoints, RoughWindowsAreLeftOut) {
 TEST(RegistrationPoints, TooFewPointsAndBadParametersAreReported) {
   // A 6 x 6 image has full 5x5 windows at 2 x 2 pixels only: fewer than the 6 parameters.
   const RangeImage tiny = tilted_plane(0.0, 6, 0.5);
-  EXPECT_EQ(build_registration_points(tiny, {}).status, RegistrationPointsStatus::too_few_points);
+  EXPECT_EQ(build_registration_points(tiny, {}).status, RegistrationPointsStatus::kTooFewPoints);
   const RangeImage image = tilted_plane(0.0, 21, 0.5);
-  EXPECT_EQ(build_registration_points(image, {}).status, RegistrationPointsStatus::ok);
+  EXPECT_EQ(build_registration_points(image, {}).status, RegistrationPointsStatus::kOk);
   for (const RegistrationPointParameters& bad :
        {RegistrationPointParameters{.stride_px = 0}, RegistrationPointParameters{.window_size = 1},
         RegistrationPointParameters{.depth_jump_mm = 0.0},
@@ -251,7 +251,7 @@ TEST(RegistrationPoints, TooFewPointsAndBadParametersAreReported) {
         RegistrationPointParameters{.max_tilt_deg = 90.0},
         RegistrationPointParameters{.z_noise_sigma_mm = -0.1}})
     EXPECT_EQ(build_registration_points(image, bad).status,
-              RegistrationPointsStatus::invalid_parameters);
+              RegistrationPointsStatus::kInvalidParameters);
 }
 
 TEST(RegistrationPoints, SelectAndSpreadSubsetsKeepEachPointsValues) {

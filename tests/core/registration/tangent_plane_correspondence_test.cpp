@@ -49,7 +49,7 @@ TEST(TangentPlaneCorrespondence, DistanceToAKnownPlaneIsThePerpendicularOne) {
       // The line turned by line_deg about y from the vertical, pointing down.
       const Eigen::Vector3d direction(std::sin(line_deg * kDeg), 0.0, -std::cos(line_deg * kDeg));
       TangentPlaneCorrespondence c;
-      ASSERT_EQ(find_tangent_plane(model, p, direction, 6, c), CorrespondenceStatus::found)
+      ASSERT_EQ(find_tangent_plane(model, p, direction, 6, c), CorrespondenceStatus::kFound)
           << offset_mm << " " << line_deg;
       EXPECT_NEAR(c.distance_mm, offset_mm, 1e-5) << offset_mm << " " << line_deg;
       EXPECT_LT((c.model_normal - n).norm(), 1e-5);
@@ -71,11 +71,11 @@ TEST(TangentPlaneCorrespondence, NearestModelPointIsTheCellWithTheLargestBlendWe
   // Pixel 12, 7 is at (-10 + 6, -10 + 3.5); a point 0.2 mm right and 0.1 mm down of it.
   const double x = -10.0 + 12 * 0.5 + 0.2, y = -10.0 + 7 * 0.5 + 0.1;
   TangentPlaneCorrespondence c;
-  ASSERT_EQ(find_tangent_plane(model, {x, y, 6.0}, {0, 0, -1}, 6, c), CorrespondenceStatus::found);
+  ASSERT_EQ(find_tangent_plane(model, {x, y, 6.0}, {0, 0, -1}, 6, c), CorrespondenceStatus::kFound);
   EXPECT_EQ(c.nearest_model_point, model.point_at_cell(12, 7));
   EXPECT_NEAR(c.distance_mm, 1.0, 1e-6);
   ASSERT_EQ(find_tangent_plane(model, {x + 0.1, y + 0.2, 4.5}, {0, 0, -1}, 6, c),
-            CorrespondenceStatus::found);
+            CorrespondenceStatus::kFound);
   EXPECT_EQ(c.nearest_model_point, model.point_at_cell(13, 8));
   EXPECT_NEAR(c.distance_mm, -0.5, 1e-6);
 }
@@ -88,21 +88,21 @@ TEST(TangentPlaneCorrespondence, OffModelGrazingAndUnsettledLinesAreReported) {
   TangentPlaneCorrespondence c;
   // Over the hole: no control points around (0, 0).
   EXPECT_EQ(find_tangent_plane(model, {0.1, 0.1, 6.0}, {0, 0, -1}, 6, c),
-            CorrespondenceStatus::off_model);
+            CorrespondenceStatus::kOffModel);
   // Beyond the grid.
   EXPECT_EQ(find_tangent_plane(model, {30.0, 0.0, 6.0}, {0, 0, -1}, 6, c),
-            CorrespondenceStatus::off_model);
+            CorrespondenceStatus::kOffModel);
   // The line meets the plane at 80 degrees from its normal: too tangential (limit ~78.5);
   // at 75 degrees it is found.
   const Eigen::Vector3d p(-5.0, 5.0, 5.1);
   const auto line_at = [](double deg) {
     return Eigen::Vector3d(std::sin(deg * kDeg), 0.0, -std::cos(deg * kDeg));
   };
-  EXPECT_EQ(find_tangent_plane(model, p, line_at(80.0), 6, c), CorrespondenceStatus::grazing);
-  EXPECT_EQ(find_tangent_plane(model, p, line_at(75.0), 6, c), CorrespondenceStatus::found);
+  EXPECT_EQ(find_tangent_plane(model, p, line_at(80.0), 6, c), CorrespondenceStatus::kGrazing);
+  EXPECT_EQ(find_tangent_plane(model, p, line_at(75.0), 6, c), CorrespondenceStatus::kFound);
   EXPECT_NEAR(c.distance_mm, 0.1, 1e-5);
   // An oblique line needs two intersections: with a budget of one, the foot has not settled.
-  EXPECT_EQ(find_tangent_plane(model, p, line_at(30.0), 1, c), CorrespondenceStatus::not_converged);
+  EXPECT_EQ(find_tangent_plane(model, p, line_at(30.0), 1, c), CorrespondenceStatus::kNotConverged);
   EXPECT_EQ(c.steps, 1);
 }
 
@@ -116,7 +116,7 @@ TEST(TangentPlaneCorrespondence, DistanceVarianceOfAHorizontalPlaneByHand) {
   const double dx = 0.2, dy = -0.1;
   const Eigen::Vector3d p(-10.0 + 12 * 0.5 + dx, -10.0 + 7 * 0.5 + dy, 5.4);
   TangentPlaneCorrespondence c;
-  ASSERT_EQ(find_tangent_plane(model, p, {0, 0, -1}, 6, c), CorrespondenceStatus::found);
+  ASSERT_EQ(find_tangent_plane(model, p, {0, 0, -1}, 6, c), CorrespondenceStatus::kFound);
   ASSERT_EQ(c.nearest_model_point, model.point_at_cell(12, 7));
   const double model_term = sigma2 * (1.0 / 25 + (dx * dx + dy * dy) / 12.5);
   EXPECT_NEAR(distance_variance_mm2(model, c, p, 0.0, Eigen::Vector3d::UnitZ()), model_term, 1e-12);
@@ -145,7 +145,7 @@ TEST(TangentPlaneCorrespondence, DistanceVarianceOfATiltedPlaneGrowsWithTheDista
     // Vertically above the control point, so the foot (and dx, dy) stay at it.
     const Eigen::Vector3d p = foot + Eigen::Vector3d(0, 0, d * std::sqrt(norm2));
     TangentPlaneCorrespondence c;
-    ASSERT_EQ(find_tangent_plane(model, p, {0, 0, -1}, 6, c), CorrespondenceStatus::found);
+    ASSERT_EQ(find_tangent_plane(model, p, {0, 0, -1}, 6, c), CorrespondenceStatus::kFound);
     ASSERT_EQ(c.nearest_model_point, k);
     ASSERT_NEAR(c.distance_mm, d, 1e-5);
     const double expected = sigma2 * (1.0 / (25 * norm2) + d * d * a * a / (12.5 * norm2 * norm2));
@@ -184,7 +184,7 @@ TEST(TangentPlaneCorrespondence, PredictedDistanceSigmaMatchesMonteCarloAndFalls
         const Eigen::Vector3d p = scene.position_mm.col(i) + Eigen::Vector3d(0.17, 0.17, 0);
         const Eigen::Vector3d p_on = p + Eigen::Vector3d(0, 0, std::tan(tilt * kDeg) * 0.17);
         ASSERT_EQ(find_tangent_plane(model, p_on, scene.normal.col(i), 6, c),
-                  CorrespondenceStatus::found);
+                  CorrespondenceStatus::kFound);
         sum2 += c.distance_mm * c.distance_mm;
         predicted2 += distance_variance_mm2(model, c, p_on,
                                             kSigma * kSigma * scene.fit_cofactor(kHeight, kHeight),
@@ -214,7 +214,7 @@ TEST(TangentPlaneCorrespondence, NormalLineMeetsTheSurfaceAtTheKnownPoint) {
       const Eigen::Vector3d surface(x, y, free_form_height_mm(x, y));
       TangentPlaneCorrespondence c;
       ASSERT_EQ(find_tangent_plane(model, surface + 0.8 * normal, -normal, 6, c),
-                CorrespondenceStatus::found);
+                CorrespondenceStatus::kFound);
       EXPECT_NEAR(c.distance_mm, 0.8, 2e-3) << x << " " << y;
       EXPECT_LT((c.model_point_mm - surface).norm(), 5e-3) << x << " " << y;
       // The quadric's slopes carry the third-derivative bias of a 2 mm window on the steep
@@ -226,8 +226,8 @@ TEST(TangentPlaneCorrespondence, NormalLineMeetsTheSurfaceAtTheKnownPoint) {
   EXPECT_GT(checked, 30);
   TangentPlaneCorrespondence c;
   EXPECT_EQ(find_tangent_plane(model, {200, 0, 0}, {0, 0, 1}, 6, c),
-            CorrespondenceStatus::off_model);
-  EXPECT_EQ(find_tangent_plane(model, {0, 0, 30}, {1, 0, 0}, 6, c), CorrespondenceStatus::grazing);
+            CorrespondenceStatus::kOffModel);
+  EXPECT_EQ(find_tangent_plane(model, {0, 0, 30}, {1, 0, 0}, 6, c), CorrespondenceStatus::kGrazing);
 }
 
 }  // namespace

@@ -75,8 +75,8 @@ ExperimentOutcome run_experiment(const ViewPairExperiment& e) {
     add_z_noise(scene_image, e.noise_mm, 2 * trial + 2);
     const auto model = build_registration_points(model_image, {.stride_px = 1});
     const auto scene = build_registration_points(scene_image, {.stride_px = 2});
-    EXPECT_EQ(model.status, RegistrationPointsStatus::ok);
-    EXPECT_EQ(scene.status, RegistrationPointsStatus::ok);
+    EXPECT_EQ(model.status, RegistrationPointsStatus::kOk);
+    EXPECT_EQ(scene.status, RegistrationPointsStatus::kOk);
     scene_points = scene.points.size();
     RegistrationParameters parameters;
     RigidTransform initial = RigidTransform::identity();
@@ -95,10 +95,10 @@ ExperimentOutcome run_experiment(const ViewPairExperiment& e) {
     }
     outcome.mean_initial_angle_deg +=
         rotation_angle_between_rad(initial.rotation, truth.rotation) / kDeg / kTrials;
-    parameters.estimator = RegistrationEstimator::chen_medioni;
+    parameters.estimator = RegistrationEstimator::kChenMedioni;
     outcome.chen_medioni.add(register_views(scene.points, model.points, initial, parameters),
                              truth);
-    parameters.estimator = RegistrationEstimator::minimum_variance;
+    parameters.estimator = RegistrationEstimator::kMinimumVariance;
     outcome.minimum_variance.add(register_views(scene.points, model.points, initial, parameters),
                                  truth);
   }
@@ -170,17 +170,17 @@ TEST(ViewRegistration, ReportsDegenerateAndMissingOverlap) {
   const auto plane_scene = build_registration_points(plane_image, {.stride_px = 2}).points;
   // A plane leaves the in-plane translations and the rotation about its normal free (§6.8).
   EXPECT_EQ(register_views(plane_scene, plane, RigidTransform::identity(), {}).status,
-            RegistrationStatus::degenerate);
+            RegistrationStatus::kDegenerate);
   const RangeImage part_image =
       render_free_form_part(RigidTransform::identity(), FreeFormPartSpec{});
   const auto part = build_registration_points(part_image, {}).points;
   const auto part_scene = build_registration_points(part_image, {.stride_px = 2}).points;
   const RegistrationResult far =
       register_views(part_scene, part, {Eigen::Matrix3d::Identity(), {500, 0, 0}}, {});
-  EXPECT_EQ(far.status, RegistrationStatus::too_few_correspondences);
+  EXPECT_EQ(far.status, RegistrationStatus::kTooFewCorrespondences);
   EXPECT_FALSE(far.converged);
   EXPECT_EQ(register_views(RegistrationPoints{}, part, {}, {}).status,
-            RegistrationStatus::invalid_input);
+            RegistrationStatus::kInvalidInput);
   // Identical views from the identity: converged at once, zero residual.
   const RegistrationResult same = register_views(part_scene, part, {}, {});
   EXPECT_TRUE(same.converged);

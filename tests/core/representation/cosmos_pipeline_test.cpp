@@ -29,7 +29,7 @@ int peak_bin(const ShapeSpectrum& spectrum) {
 TEST(CosmosPipeline, TiltedPlaneIsOnePlanarPatchCoveringEveryFittedPixel) {
   // z = tan(20 deg) x over |x|, |y| <= 25 mm: 101 x 101 samples. Only the four corner pixels
   // see fewer than the 12 samples a fit needs (3 x 3 of their 5 x 5 window).
-  const AnalyticSurface surface = analytic(AnalyticShape::plane);
+  const AnalyticSurface surface = analytic(AnalyticShape::kPlane);
   const ViewAnalysis analysis = analyze(surface);
   const double tilt = 20.0 * std::numbers::pi / 180.0;
   ASSERT_EQ(surface.range.count_valid(), 101u * 101u);
@@ -49,7 +49,7 @@ TEST(CosmosPipeline, TiltedPlaneIsOnePlanarPatchCoveringEveryFittedPixel) {
 }
 
 TEST(CosmosPipeline, SphereIsOneCapWhoseSpectrumPeaksInTheLastBin) {
-  const AnalyticSurface surface = analytic(AnalyticShape::sphere);  // R = 25 mm
+  const AnalyticSurface surface = analytic(AnalyticShape::kSphere);  // R = 25 mm
   const ViewAnalysis analysis = analyze(surface);
   // Valid: every sample but the grazing rim (normals beyond 85 degrees are never valid) and a
   // few rim pixels with too few samples.
@@ -82,7 +82,7 @@ TEST(CosmosPipeline, SphereIsOneCapWhoseSpectrumPeaksInTheLastBin) {
 }
 
 TEST(CosmosPipeline, CylinderSpectrumPeaksAtTheRidgeShapeIndex) {
-  const AnalyticSurface surface = analytic(AnalyticShape::cylinder);
+  const AnalyticSurface surface = analytic(AnalyticShape::kCylinder);
   const ViewAnalysis analysis = analyze(surface);
   ASSERT_EQ(analysis.view.patches.size(), 1u);
   EXPECT_NEAR(analysis.view.patches[0].shape_index, 0.75, 0.005);

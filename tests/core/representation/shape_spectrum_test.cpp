@@ -46,15 +46,15 @@ TEST(ShapeSpectrum, ShapeIndexOneFallsInTheLastBin) {
 }
 
 TEST(ShapeSpectrum, EllipsoidSpectrumIsInvariantToRotationAboutTheViewingAxis) {
-  const auto reference = analyze(analytic(AnalyticShape::ellipsoid, 0.0, 0.0));
+  const auto reference = analyze(analytic(AnalyticShape::kEllipsoid, 0.0, 0.0));
   for (double angle : {30.0, 90.0}) {
-    const auto rotated = analyze(analytic(AnalyticShape::ellipsoid, 0.0, angle));
+    const auto rotated = analyze(analytic(AnalyticShape::kEllipsoid, 0.0, angle));
     const double d = spectral_dissimilarity(reference.moments, rotated.moments);
     EXPECT_LT(d, 0.01) << angle;
     EXPECT_NEAR(rotated.spectrum.visible_area_mm2 / reference.spectrum.visible_area_mm2, 1.0, 0.02);
   }
   // And it does tell a sphere from an ellipsoid.
-  const auto sphere = analyze(analytic(AnalyticShape::sphere));
+  const auto sphere = analyze(analytic(AnalyticShape::kSphere));
   EXPECT_GT(spectral_dissimilarity(reference.moments, sphere.moments), 1e-4);
 }
 

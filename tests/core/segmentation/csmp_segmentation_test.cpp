@@ -57,7 +57,7 @@ TEST(CsmpSegmentation, AdaptiveLimitCapsThePatchCount) {
 }
 
 TEST(CsmpSegmentation, CapsuleGivesTwoCapsAndARidge) {
-  const auto surface = analytic(AnalyticShape::capsule);
+  const auto surface = analytic(AnalyticShape::kCapsule);
   const auto analysis = analyze(surface);
   auto patches = analysis.view.patches;
   ASSERT_GE(patches.size(), 3u);
@@ -93,7 +93,7 @@ TEST(CsmpSegmentation, CapsuleGivesTwoCapsAndARidge) {
 }
 
 TEST(CsmpSegmentation, BoxCornerGivesThreeAdjacentPlanes) {
-  const auto surface = analytic(AnalyticShape::box_corner);
+  const auto surface = analytic(AnalyticShape::kBoxCorner);
   const auto analysis = analyze(surface);
   const auto truth_normals = box_corner_face_normals(surface.spec);
   std::vector<const Csmp*> planar;

@@ -179,7 +179,7 @@ TEST(CurvatureConsistency, ValidColumnExtentSpansTheFirstToTheLastValidPixel) {
 
 TEST(CurvatureConsistency, NoisyTorusShapeIndexMovesTowardsTheAnalyticValue) {
   // The torus's shape index varies over the whole scale (cap outside, saddle inside).
-  const auto surface = analytic(AnalyticShape::torus, 0.02);
+  const auto surface = analytic(AnalyticShape::kTorus, 0.02);
   const auto smoothed = analyze(surface, 15);
   const auto raw = analyze(surface, 0);
   double smoothed_error = 0, raw_error = 0;
@@ -198,7 +198,7 @@ TEST(CurvatureConsistency, NoisyTorusShapeIndexMovesTowardsTheAnalyticValue) {
 }
 
 TEST(CurvatureConsistency, NoisySphereSmoothingHelps) {
-  const auto surface = analytic(AnalyticShape::sphere, 0.02);
+  const auto surface = analytic(AnalyticShape::kSphere, 0.02);
   const auto smoothed = analyze(surface, 15);
   const auto raw = analyze(surface, 0);
   std::vector<double> smoothed_values, raw_values;
@@ -224,7 +224,7 @@ TEST(CurvatureConsistency, NoisySphereSmoothingHelps) {
 // below the noise (1e-3/mm) 73 % of these pixels were within 0.05 of the ridge's S_I.
 TEST(CurvatureConsistency, GentleNoisyCylinderSmoothsToARidge) {
   AnalyticSurfaceSpec spec;
-  spec.shape = AnalyticShape::cylinder;
+  spec.shape = AnalyticShape::kCylinder;
   spec.radius_mm = 100.0;
   spec.cylinder_length_mm = 80.0;
   spec.pixel_size_mm = 0.4;
@@ -242,7 +242,7 @@ TEST(CurvatureConsistency, GentleNoisyCylinderSmoothsToARidge) {
 }
 
 TEST(CurvatureConsistency, NoiseFreeSphereKeepsItsCurvature) {
-  const auto surface = analytic(AnalyticShape::sphere);  // R = 25 mm: k1 = k2 = 0.04/mm
+  const auto surface = analytic(AnalyticShape::kSphere);  // R = 25 mm: k1 = k2 = 0.04/mm
   const DarbouxFrameField fitted = fit_local_surfaces(surface.range, SurfaceFitParameters{});
   DarbouxFrameField smoothed = fitted;
   smooth_curvatures(smoothed, surface.range.pixel_size_x_mm, surface.range.pixel_size_y_mm,

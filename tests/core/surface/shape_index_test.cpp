@@ -29,7 +29,7 @@ TEST(ShapeIndexFormula, CategoriesOfTheScale) {
 }
 
 TEST(ShapeIndex, SphereIsCapWithCurvednessOneOverRadius) {
-  const auto surface = analytic(AnalyticShape::sphere);
+  const auto surface = analytic(AnalyticShape::kSphere);
   const auto analysis = analyze(surface);
   std::vector<bool> cap, curvedness_ok;
   for_each_interior(surface, [&](std::size_t i, const AnalyticTruth&) {
@@ -42,7 +42,7 @@ TEST(ShapeIndex, SphereIsCapWithCurvednessOneOverRadius) {
 }
 
 TEST(ShapeIndex, CupIsConcave) {
-  const auto surface = analytic(AnalyticShape::cup);
+  const auto surface = analytic(AnalyticShape::kCup);
   const auto analysis = analyze(surface);
   std::vector<bool> cup;
   for_each_interior(surface, [&](std::size_t i, const AnalyticTruth&) {
@@ -53,7 +53,7 @@ TEST(ShapeIndex, CupIsConcave) {
 }
 
 TEST(ShapeIndex, CylinderIsRidge) {
-  const auto surface = analytic(AnalyticShape::cylinder);  // r = 25 mm by default
+  const auto surface = analytic(AnalyticShape::kCylinder);  // r = 25 mm by default
   AnalyticSurfaceSpec spec = surface.spec;
   spec.radius_mm = 20.0;
   const auto cylinder = make_analytic_surface(spec);
@@ -71,7 +71,7 @@ TEST(ShapeIndex, CylinderIsRidge) {
 }
 
 TEST(ShapeIndex, SymmetricSaddleNearCentre) {
-  const auto surface = analytic(AnalyticShape::saddle);
+  const auto surface = analytic(AnalyticShape::kSaddle);
   const auto analysis = analyze(surface);
   int checked = 0;
   for (int row = 0; row < surface.range.height(); ++row) {
@@ -86,7 +86,7 @@ TEST(ShapeIndex, SymmetricSaddleNearCentre) {
 }
 
 TEST(ShapeIndex, TiltedPlaneIsPlanar) {
-  const auto surface = analytic(AnalyticShape::plane);
+  const auto surface = analytic(AnalyticShape::kPlane);
   const auto analysis = analyze(surface);
   std::vector<bool> planar;
   for_each_interior(surface, [&](std::size_t i, const AnalyticTruth&) {
@@ -97,7 +97,7 @@ TEST(ShapeIndex, TiltedPlaneIsPlanar) {
 }
 
 TEST(ShapeIndex, TorusMatchesAnalyticShapeIndex) {
-  const auto surface = analytic(AnalyticShape::torus);
+  const auto surface = analytic(AnalyticShape::kTorus);
   const auto analysis = analyze(surface);
   std::vector<bool> close;
   for_each_interior(surface, [&](std::size_t i, const AnalyticTruth& truth) {
