@@ -9,8 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "apps/cell_model_base.hpp"
-#include "apps/cell_source.hpp"
+#include "apps/cell_world.hpp"
 #include "apps/command_registry.hpp"
 #include "core/input_error.hpp"
 #include "core/recognition/recognizer.hpp"
@@ -30,12 +29,6 @@ struct CellOptions {
   std::string replay;
 };
 
-std::unique_ptr<ScannerSource> make_source(const CellOptions& options, const CellConfig& config,
-                                           const PartCatalog& catalog) {
-  return make_cell_source({options.source, options.hardware, options.replay, options.parts}, config,
-                          catalog);
-}
-
 double percentile(std::vector<double> values, double q) {
   if (values.empty()) return 0;
   std::sort(values.begin(), values.end());
@@ -45,16 +38,17 @@ double percentile(std::vector<double> values, double q) {
 
 void run(const CellOptions& options) {
   const CellConfig config = load_cell_config(options.config);
-  const PartCatalog catalog = read_part_catalog(config.cell.catalog);
-  std::unique_ptr<ScannerSource> source = make_source(options, config, catalog);
-  if (source->start() != SourceStatus::kOk) throw InputError(std::string(source->last_error()));
-  if (std::abs(source->mm_per_profile() - config.conditioning.grid_mm) > 1e-9)
+  CellWorld world(config);
+  ScannerSource& source =
+      world.open_source({options.source, options.hardware, options.replay, options.parts});
+  if (source.start() != SourceStatus::kOk) throw InputError(std::string(source.last_error()));
+  if (std::abs(source.mm_per_profile() - config.conditioning.grid_mm) > 1e-9)
     throw InputError(options.config +
                      ": conditioning.grid_mm must equal the belt travel per profile (" +
-                     std::to_string(source->mm_per_profile()) + " mm)");
+                     std::to_string(source.mm_per_profile()) + " mm)");
   // The COSMOS parameters the base was built with, the one set every analysis of a scan
   // uses: the recognizer, the scan loop's incremental COSMOS and the part views.
-  const CellModelBase loaded = load_cell_model_base(config, catalog);
+  const CellModelBase loaded = world.load_model_base();
   const ModelBase& base = loaded.base;
   const CosmosParameters& cosmos = loaded.cosmos;
   const Recognizer recognizer(base, cosmos, RecognitionParameters{});
@@ -76,11 +70,7 @@ void run(const CellOptions& options) {
   context.recognizer = &recognizer;
   context.model_base = &base;
   context.cosmos = cosmos;
-  for (const ModelPart& part : base.parts) {
-    const PartEntry* entry = catalog.find(part.name);
-    context.catalog_index_of_base_part.push_back(
-        entry ? static_cast<int>(entry - catalog.parts.data()) : -1);
-  }
+  context.catalog_index_of_base_part = world.catalog_indices(base);
   context.T_cell_scanner = config.cell.T_cell_scanner;
   context.mm_per_tick = config.scanner.encoder_mm_per_tick;
   context.grid_mm = config.conditioning.grid_mm;
@@ -97,25 +87,18 @@ void run(const CellOptions& options) {
   settings.publish_profiles = config.lcm.publish_profiles;
   settings.duration_s = options.duration_s;
 
-  const SimulatedConveyor* simulated = simulated_ground_truth(*source);
   std::vector<double> latencies_ms;
   int correct = 0;
   std::printf("%5s  %-18s %-9s %9s %9s %9s  %6s %8s %10s\n", "part", "name", "status", "x_mm",
               "y_mm", "z_mm", "score", "rms_mm", "latency_ms");
-  const CellRunSummary summary = run_cell(
-      *source, loop, context, publisher, settings, [&](const PartRecognition& recognition) {
+  const CellRunSummary summary =
+      run_cell(source, loop, context, publisher, settings, [&](const PartRecognition& recognition) {
         const PartPose& pose = recognition.pose;
         latencies_ms.push_back(pose.latency_ms);
-        announce_pose_published(*source);
-        std::string truth;
-        const PlacedSimPart* placed = simulated
-                                          ? simulated->placed_part_scanned_in(
-                                                recognition.first_profile, recognition.last_profile)
-                                          : nullptr;
-        if (placed) {
-          truth = placed->name;
-          correct += pose.status == PoseStatus::kOk && pose.part_name == truth;
-        }
+        world.announce_pose_published();
+        const std::string truth =
+            world.simulated_part_in(recognition.first_profile, recognition.last_profile);
+        if (!truth.empty()) correct += pose.status == PoseStatus::kOk && pose.part_name == truth;
         const Eigen::Vector3d& t = pose.translation_cell_part_mm;
         std::printf("%5lld  %-18s %-9s %9.2f %9.2f %9.2f  %6.3f %8.4f %10.1f%s%s\n",
                     static_cast<long long>(pose.part_seq),
@@ -133,7 +116,7 @@ void run(const CellOptions& options) {
       static_cast<long long>(summary.deadline_overruns), static_cast<long long>(summary.parts_seen),
       static_cast<long long>(summary.parts_dropped),
       static_cast<long long>(summary.poses_published));
-  if (simulated)
+  if (world.has_ground_truth())
     std::printf("cell: %d of %zu parts identified correctly (simulated ground truth)\n", correct,
                 latencies_ms.size());
   std::printf("cell: latency end of part -> pose published: median %.1f ms, p99 %.1f ms\n",

@@ -15,6 +15,7 @@
 #include "apps/command_registry.hpp"
 #include "core/input_error.hpp"
 #include "core/io/model_base_file.hpp"
+#include "core/io/recorded_parameters.hpp"
 #include "scanner/scanner_config.hpp"
 #include "sim/evaluation/evaluation_report.hpp"
 #include "sim/evaluation/evaluation_scans.hpp"

@@ -11,8 +11,8 @@
 #include "core/input_error.hpp"
 #include "core/io/model_base_file.hpp"
 #include "core/io/range_image_file.hpp"
+#include "core/io/recorded_parameters.hpp"
 #include "core/recognition/recognizer.hpp"
-#include "sim/model_base_build/model_base_parameters.hpp"
 
 namespace cosmos::cli {
 namespace {

@@ -1,15 +1,13 @@
 // The model base's parameters text (sim/model_base_build/model_base_parameters.hpp), written by
 // visiting the parameter structs: a change of any field that shapes the views (every field of
 // cosmos, registration, grouping and the scanner but its line rate and frame drawing, and the
-// belt threshold) changes it; the COSMOS parameters and the views' conditioning read back from
-// it; a cell's conditioning is compared with the views' on both grid pitches.
+// belt threshold) changes it.
 #include "sim/model_base_build/model_base_parameters.hpp"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "core/input_error.hpp"
 #include "tests/common/parameter_fields.hpp"
 
 namespace cosmos {
@@ -79,70 +77,6 @@ TEST(ModelBaseParameters, ChangingAnyScannerFieldButTheLineRateAndFramesChangesT
       EXPECT_NE(changed, text) << key << " is not in the model base's parameters";
     }
   }
-}
-
-TEST(ModelBaseParameters, TheCosmosParametersReadBackFromTheBase) {
-  ModelBaseBuildSettings settings;
-  testing::FieldChanger changer(testing::FieldChanger::kAll);
-  visit_parameters(changer, settings.cosmos);
-  ModelBase base;
-  base.parameters_text = model_base_parameters_text(ScannerParameters{}, settings);
-  const CosmosParameters read = model_base_cosmos_parameters(base, "base.cmb");
-  EXPECT_EQ(testing::parameter_leaves(read), testing::parameter_leaves(settings.cosmos));
-  EXPECT_EQ(read.smoothing.iterations, 17);
-
-  ModelBase older;
-  older.parameters_text = "{\"cosmos\": {\"fit\": {\"window_size\": 5}}}";
-  try {
-    model_base_cosmos_parameters(older, "old.cmb");
-    FAIL() << "a base without every COSMOS parameter was accepted";
-  } catch (const InputError& error) {
-    EXPECT_EQ(std::string(error.what()),
-              "old.cmb: built without cosmos.fit.bicubic (a base older than that parameter): "
-              "rebuild it");
-  }
-}
-
-TEST(ModelBaseParameters, ACellsConditioningMustMatchTheViewsOnBothPitchesAndTheThreshold) {
-  ModelBaseBuildSettings settings;
-  ModelBase base;
-  base.parameters_text = model_base_parameters_text(ScannerParameters{}, settings);
-  const ModelViewConditioning views = model_base_view_conditioning(base, "base.cmb");
-  EXPECT_EQ(views.grid_x_mm, 0.4);
-  EXPECT_EQ(views.grid_y_mm, 0.4);
-  EXPECT_EQ(views.height_threshold_mm, 0.5);
-
-  const ConditioningParameters cell;
-  EXPECT_EQ(conditioning_difference(views, cell), std::nullopt);
-
-  ConditioningParameters coarser = cell;
-  coarser.grid_mm = 0.5;
-  const auto grid = conditioning_difference(views, coarser);
-  ASSERT_TRUE(grid);
-  EXPECT_EQ(grid->key, "conditioning.grid_x_mm");
-  EXPECT_EQ(grid->expected, "0.5");
-  EXPECT_EQ(grid->actual, "0.4");
-
-  // Views across a finer scanner: the x pitch alone differs.
-  ScannerParameters finer;
-  finer.points_per_profile = 1280;
-  const auto x = conditioning_difference(model_view_conditioning(finer, cell), cell);
-  ASSERT_TRUE(x);
-  EXPECT_EQ(x->key, "conditioning.grid_x_mm");
-  EXPECT_EQ(x->actual, "0.2");
-  // Views along a coarser belt step: the y pitch alone differs.
-  ScannerParameters longer_step;
-  longer_step.encoder_ticks_per_profile = 5;
-  const auto y = conditioning_difference(model_view_conditioning(longer_step, cell), cell);
-  ASSERT_TRUE(y);
-  EXPECT_EQ(y->key, "conditioning.grid_y_mm");
-  EXPECT_EQ(y->actual, "0.5");
-
-  ConditioningParameters higher = cell;
-  higher.height_threshold_mm = 0.8;
-  const auto threshold = conditioning_difference(views, higher);
-  ASSERT_TRUE(threshold);
-  EXPECT_EQ(threshold->key, "conditioning.height_threshold_mm");
 }
 
 }  // namespace

@@ -1,0 +1,58 @@
+#pragma once
+// What `cosmos cell` runs with beyond its config file: the scanner source its options choose,
+// the model base, the catalog index of each base part, and the simulated ground truth where
+// the source has one. One interface, one implementation per build:
+//   cell_world_simulated.cpp  the full build: the simulated source, real hardware or the
+//                             hardware twins (a hardware YAML naming the simulated devices,
+//                             config/hardware-sim.yaml), replays; the model base the config
+//                             names, or one built and cached on first run
+//   cell_world_hardware.cpp   a build without the simulator (-DCOSMOS_SIMULATOR=OFF, which
+//                             links no Embree, assimp or Qhull): real hardware and replays;
+//                             the model base the config names
+// Errors throw InputError (one line).
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "apps/cell_model_base.hpp"
+#include "realtime/config/cell_config.hpp"
+#include "realtime/sources/scanner_source.hpp"
+
+namespace cosmos::cli {
+
+struct CellSourceChoice {
+  std::string source = "sim";  // sim | hardware
+  std::string hardware;        // the hardware YAML
+  std::string replay;          // an LCM log; wins over `source`
+  int parts = -1;              // simulated parts; <= 0: sim_source.parts
+};
+
+class CellWorld {
+ public:
+  // Reads what the build needs besides the config (the part catalog, with the simulator).
+  explicit CellWorld(const CellConfig& config);
+  ~CellWorld();
+  CellWorld(const CellWorld&) = delete;
+  CellWorld& operator=(const CellWorld&) = delete;
+
+  // The source the options choose, owned by this world; call once.
+  ScannerSource& open_source(const CellSourceChoice& choice);
+  CellModelBase load_model_base() const;
+  // Per part of `base`, its index in the catalog (-1 when the catalog lacks it).
+  std::vector<int> catalog_indices(const ModelBase& base) const;
+
+  // Whether the open source has simulated ground truth, and the name of the part it scanned
+  // in profiles [first, last] ("" for none).
+  bool has_ground_truth() const;
+  std::string simulated_part_in(std::int64_t first_profile, std::int64_t last_profile) const;
+  // A pose went out: a hardware source (real or on the twins) pulses result_ready for it.
+  // Safe from the publisher thread (HardwareSource::announce_result).
+  void announce_pose_published();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace cosmos::cli

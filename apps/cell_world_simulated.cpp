@@ -1,0 +1,138 @@
+#include <cstdio>
+#include <filesystem>
+
+#include "apps/cell_world.hpp"
+#include "apps/model_base_progress.hpp"
+#include "core/input_error.hpp"
+#include "core/io/model_base_file.hpp"
+#include "core/io/xxh64.hpp"
+#include "realtime/config/hardware_config.hpp"
+#include "realtime/sources/hardware_source.hpp"
+#include "realtime/sources/replay_source.hpp"
+#include "sim/model_base_build/catalog_content_hash.hpp"
+#include "sim/model_base_build/model_base_builder.hpp"
+#include "sim/model_base_build/model_base_parameters.hpp"
+#include "sim/part_catalog.hpp"
+#include "sim/source/simulated_source.hpp"
+#include "sim/twins/hardware_twin_source.hpp"
+
+namespace cosmos::cli {
+namespace {
+
+SimulatedSourceSettings source_settings(const CellSourceChoice& choice, const CellConfig& config) {
+  SimulatedSourceSettings settings = config.sim_source;
+  if (choice.parts > 0) settings.parts = choice.parts;
+  return settings;
+}
+
+ModelBaseBuildSettings build_settings(const CellConfig& config) {
+  ModelBaseBuildSettings settings;
+  settings.view_count = config.cell.model_views;
+  settings.conditioning = config.conditioning;
+  return settings;
+}
+
+// The cache holds one base per catalog content and parameter set: a changed catalog,
+// scanner or belt threshold builds a new base instead of loading a stale one.
+std::filesystem::path cached_model_base_path(const CellConfig& config, const PartCatalog& catalog) {
+  const ModelBaseBuildSettings settings = build_settings(config);
+  const std::string key =
+      catalog_content_hash(catalog) + model_base_parameters_text(config.scanner, settings);
+  char name[64];
+  std::snprintf(name, sizeof name, "cell-%d-views-%016llx.cmb", settings.view_count,
+                static_cast<unsigned long long>(xxh64(key)));
+  return default_mesh_cache_dir().parent_path() / "modelbases" / name;
+}
+
+}  // namespace
+
+struct CellWorld::State {
+  const CellConfig& config;
+  PartCatalog catalog;
+  std::unique_ptr<ScannerSource> source;
+  const SimulatedConveyor* conveyor = nullptr;  // the source's, when it has one
+  HardwareSource* hardware = nullptr;           // the source's, when it is one
+};
+
+CellWorld::CellWorld(const CellConfig& config)
+    : state_(new State{config, read_part_catalog(config.cell.catalog), nullptr}) {}
+
+CellWorld::~CellWorld() = default;
+
+ScannerSource& CellWorld::open_source(const CellSourceChoice& choice) {
+  const CellConfig& config = state_->config;
+  if (!choice.replay.empty()) {
+    ReplaySourceSettings settings;
+    settings.max_profile_width = static_cast<std::size_t>(config.scanner.points_per_profile);
+    settings.mm_per_profile = config.scanner.profile_step_mm();
+    settings.channel = config.lcm.profile_channel;
+    state_->source = std::make_unique<ReplaySource>(choice.replay, settings);
+  } else if (choice.source == "hardware") {
+    if (choice.hardware.empty()) {
+      throw InputError(
+          "cell: --source hardware needs --hardware FILE (see config/hardware-example.yaml, or "
+          "config/hardware-sim.yaml for the simulated twins)");
+    }
+    const HardwareConfig hardware = read_hardware_config(choice.hardware);
+    if (!hardware.camera_simulated()) {
+      auto source = std::make_unique<HardwareSource>(hardware, config.scanner);
+      state_->hardware = source.get();
+      state_->source = std::move(source);
+    } else {
+      auto twins = std::make_unique<HardwareTwinSource>(
+          hardware, std::make_unique<SimulatedConveyor>(state_->catalog, config.scanner,
+                                                        source_settings(choice, config)));
+      state_->conveyor = &twins->conveyor();
+      state_->hardware = &twins->hardware();
+      state_->source = std::move(twins);
+    }
+  } else {
+    auto simulated = std::make_unique<SimulatedSource>(state_->catalog, config.scanner,
+                                                       source_settings(choice, config));
+    state_->conveyor = &simulated->conveyor();
+    state_->source = std::move(simulated);
+  }
+  return *state_->source;
+}
+
+CellModelBase CellWorld::load_model_base() const {
+  const CellConfig& config = state_->config;
+  if (!config.cell.model_base.empty()) return read_cell_model_base(config.cell.model_base, config);
+  const std::filesystem::path path = cached_model_base_path(config, state_->catalog);
+  if (std::filesystem::exists(path)) return read_cell_model_base(path, config);
+  std::fprintf(stderr, "cell: building the model base (first run; cached as %s)\n",
+               path.string().c_str());
+  std::error_code error;
+  std::filesystem::create_directories(path.parent_path(), error);
+  if (error)
+    throw InputError(path.parent_path().string() + ": cannot create (" + error.message() + ")");
+  const ModelBase base = build_model_base(state_->catalog, config.scanner, build_settings(config),
+                                          progress_printer(state_->catalog));
+  write_model_base(base, path);
+  return read_cell_model_base(path, config);
+}
+
+std::vector<int> CellWorld::catalog_indices(const ModelBase& base) const {
+  std::vector<int> indices;
+  for (const ModelPart& part : base.parts) {
+    const PartEntry* entry = state_->catalog.find(part.name);
+    indices.push_back(entry ? static_cast<int>(entry - state_->catalog.parts.data()) : -1);
+  }
+  return indices;
+}
+
+bool CellWorld::has_ground_truth() const { return state_->conveyor != nullptr; }
+
+std::string CellWorld::simulated_part_in(std::int64_t first_profile,
+                                         std::int64_t last_profile) const {
+  if (!state_->conveyor) return "";
+  const PlacedSimPart* placed =
+      state_->conveyor->placed_part_scanned_in(first_profile, last_profile);
+  return placed ? placed->name : "";
+}
+
+void CellWorld::announce_pose_published() {
+  if (state_->hardware) state_->hardware->announce_result();
+}
+
+}  // namespace cosmos::cli
