@@ -4,14 +4,17 @@
 // on COSMOS_POSE while a live table shows it; a summary ends the run.
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "apps/cell_world.hpp"
 #include "apps/command_registry.hpp"
 #include "core/input_error.hpp"
+#include "core/parameter_range_check.hpp"
 #include "core/recognition/recognizer.hpp"
 #include "realtime/cell/cell_runner.hpp"
 #include "realtime/config/cell_config.hpp"
@@ -129,6 +132,20 @@ void run(const CellOptions& options) {
   std::printf("cell: %s\n", summary.realtime_report.c_str());
 }
 
+// --parts sets sim_source.parts: the range its visit() declares, before any config is read.
+std::string check_part_count(const std::string& text) {
+  SimulatedSourceSettings settings;
+  const char* const end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, settings.parts);
+  if (error != std::errc{} || stop != end) return "'" + text + "' is not a whole number";
+  const std::optional<std::string> problem = first_out_of_range(settings, "sim_source");
+  if (!problem) return {};
+  std::string reason = *problem;
+  const std::size_t colon = reason.find(": ");
+  if (colon != std::string::npos) reason.erase(colon, 1);  // "sim_source.parts must be in ..."
+  return reason;
+}
+
 void install(CLI::App& root) {
   auto options = std::make_shared<CellOptions>();
   CLI::App* command =
@@ -139,7 +156,8 @@ void install(CLI::App& root) {
       ->capture_default_str();
   command->add_option("--hardware", options->hardware, "hardware YAML for --source hardware")
       ->type_name("FILE");
-  command->add_option("--parts", options->parts, "simulated parts (default: sim_source.parts)");
+  command->add_option("--parts", options->parts, "simulated parts (default: sim_source.parts)")
+      ->check(check_part_count, "N");
   command->add_option("--duration-s", options->duration_s, "stop after this much scanning time")
       ->check(CLI::NonNegativeNumber);
   command->add_flag("--unpaced", options->unpaced, "do not pace the loop at the line rate");

@@ -91,8 +91,8 @@ class Listener {
       return format_status(status_);
     }
     if (channel == kProfileChannel) {
-      profile_message_.z_mm.clear();  // decode() keeps the old array when width is 0
-      if (decode_message(data, size, profile_message_) &&
+      // No config here: bounded by the widest profile any scanner config gives.
+      if (decode_message(data, size, kMaxProfileWidth, profile_message_) &&
           from_message(profile_message_, profile_)) {
         return format_profile(profile_);
       }

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <initializer_list>
 #include <opencv2/core.hpp>
 #include <opencv2/core/utils/logger.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -135,6 +136,25 @@ PixelGrid<float> to_depth_grid(const cv::Mat& image, const fs::path& image_path)
   return z_mm;
 }
 
+// Every key of `map` is one of `known`, once: a misspelt key would otherwise be ignored and
+// its default used (an origin of (0, 0) for a typo of origin_mm).
+void check_keys(const fs::path& sidecar, const YAML::Node& map, const std::string& prefix,
+                std::initializer_list<const char*> known) {
+  std::vector<std::string> seen;
+  for (const auto& entry : map) {
+    const std::string key = entry.first.IsScalar() ? entry.first.Scalar() : std::string("?");
+    const std::string dotted = prefix.empty() ? key : prefix + "." + key;
+    if (std::find(seen.begin(), seen.end(), key) != seen.end())
+      fail_key(sidecar, entry.first, dotted, "duplicate key");
+    seen.push_back(key);
+    if (std::none_of(known.begin(), known.end(), [&key](const char* k) { return key == k; })) {
+      std::string expected;
+      for (const char* k : known) expected.append(expected.empty() ? "" : ", ").append(k);
+      fail_key(sidecar, entry.first, dotted, "unknown key (expected " + expected + ")");
+    }
+  }
+}
+
 // Reads a YAML sequence of exactly N finite numbers.
 template <std::size_t N>
 std::array<double, N> read_numbers(const fs::path& sidecar, const YAML::Node& node,
@@ -159,6 +179,7 @@ std::array<double, N> read_numbers(const fs::path& sidecar, const YAML::Node& no
 
 GroundTruthPose read_ground_truth(const fs::path& sidecar, const YAML::Node& node) {
   if (!node.IsMap()) fail_key(sidecar, node, "ground_truth", "expected a mapping");
+  check_keys(sidecar, node, "ground_truth", {"part", "rotation", "translation_mm"});
   GroundTruthPose pose;
   const YAML::Node part = node["part"];
   if (!part.IsDefined()) fail_key(sidecar, node, "ground_truth.part", "missing");
@@ -204,6 +225,7 @@ void read_sidecar(const fs::path& image_path, RangeImage& image) {
     fail(where, "malformed YAML: " + exception.msg);
   }
   if (!root.IsMap()) fail(sidecar, "expected a YAML mapping with pixel_size_mm: [dx, dy]");
+  check_keys(sidecar, root, "", {"pixel_size_mm", "origin_mm", "ground_truth"});
 
   const YAML::Node pixel_size = root["pixel_size_mm"];
   if (!pixel_size.IsDefined()) fail(sidecar, "pixel_size_mm: missing (required, [dx, dy] in mm)");

@@ -1,5 +1,6 @@
 #include "realtime/lcm/lcm_message_conversion.hpp"
 
+#include <cmath>
 #include <cstddef>
 
 namespace cosmos {
@@ -104,6 +105,10 @@ bool from_message(const cosmos_lcm::range_profile_t& message, Profile& profile) 
   // Generated decode() leaves z_mm as it was when width is 0, so only the first `width`
   // entries are this message's.
   if (message.width < 0 || message.z_mm.size() < static_cast<std::size_t>(message.width))
+    return false;
+  // Written as "not inside" so that NaN fails too.
+  if (!(message.dx_mm >= kMinProfileSpacingMm && message.dx_mm <= kMaxProfileSpacingMm) ||
+      !(std::abs(message.x0_mm) <= kMaxProfileOriginMm))
     return false;
   profile.seq = static_cast<std::uint64_t>(message.seq);
   profile.encoder_ticks = message.encoder_ticks;

@@ -11,7 +11,30 @@ ProfileConditioner::ProfileConditioner(const ConditioningParameters& parameters)
       width_(std::max(1, static_cast<int>(std::floor((parameters.x_max_mm - parameters.x_min_mm) /
                                                      parameters.grid_mm)))) {}
 
-void ProfileConditioner::condition(const Profile& profile, float* out_z_mm) const {
+namespace {
+
+// A sample position (in samples) as an int within [-2, samples + 1]: positions outside the
+// profile only need to stay outside it, and a far x0_mm or a tiny dx_mm would exceed int.
+int sample_index(double position, int samples) {
+  return static_cast<int>(std::clamp(position, -2.0, samples + 1.0));
+}
+
+// Sample spacings a scanner can have (a 10..5000 mm field of view over 16..8192 points, with
+// a margin of ten either way) and sample 0 within a kilometre: anything else is a damaged
+// record, not a profile.
+constexpr double kMinSpacingMm = 1e-4;
+constexpr double kMaxSpacingMm = 3e3;
+constexpr double kMaxOriginMm = 1e6;
+
+}  // namespace
+
+bool ProfileConditioner::condition(const Profile& profile, float* out_z_mm) const {
+  // Written as "not inside" so that NaN fails too.
+  if (!(profile.dx_mm >= kMinSpacingMm && profile.dx_mm <= kMaxSpacingMm) ||
+      !(std::abs(profile.x0_mm) <= kMaxOriginMm)) {
+    std::fill(out_z_mm, out_z_mm + width_, std::numeric_limits<float>::quiet_NaN());
+    return false;
+  }
   if (profile.dx_mm < parameters_.grid_mm) {
     box_average(profile, out_z_mm);
   } else {
@@ -25,6 +48,7 @@ void ProfileConditioner::condition(const Profile& profile, float* out_z_mm) cons
         out_z_mm[k] - static_cast<float>(parameters_.belt_height_mm + parameters_.belt_slope_x * x);
     out_z_mm[k] = height >= threshold ? height : nan;  // NaN compares false: stays NaN
   }
+  return true;
 }
 
 // The valid samples of each grid cell [x_k - g/2, x_k + g/2); a cell whose samples straddle a
@@ -36,10 +60,10 @@ void ProfileConditioner::box_average(const Profile& profile, float* out_z_mm) co
   for (int k = 0; k < width_; ++k) {
     const double x_center = parameters_.x_min_mm + k * g;
     const int first = std::max(
-        0, static_cast<int>(std::ceil((x_center - 0.5 * g - profile.x0_mm) / profile.dx_mm)));
+        0, sample_index(std::ceil((x_center - 0.5 * g - profile.x0_mm) / profile.dx_mm), samples));
     const int last = std::min(
         samples - 1,
-        static_cast<int>(std::ceil((x_center + 0.5 * g - profile.x0_mm) / profile.dx_mm)) - 1);
+        sample_index(std::ceil((x_center + 0.5 * g - profile.x0_mm) / profile.dx_mm), samples) - 1);
     float top = -std::numeric_limits<float>::infinity();
     for (int i = first; i <= last; ++i)
       if (!std::isnan(profile.z_mm[i])) top = std::max(top, profile.z_mm[i]);
@@ -74,7 +98,7 @@ void ProfileConditioner::interpolate(const Profile& profile, float* out_z_mm) co
   for (int k = 0; k < width_; ++k) {
     const double u =
         (parameters_.x_min_mm + k * parameters_.grid_mm - profile.x0_mm) / profile.dx_mm;
-    const int i = static_cast<int>(std::floor(u));
+    const int i = sample_index(std::floor(u), samples);
     const float t = static_cast<float>(u - i);
     float z = std::numeric_limits<float>::quiet_NaN();
     if (i >= 0 && i + 1 < samples) {

@@ -17,7 +17,9 @@ class ProfileConditioner {
   int width() const { return width_; }
   double x0_mm() const { return parameters_.x_min_mm; }
   // Writes width() heights above the belt (NaN = background or no data) into out_z_mm.
-  void condition(const Profile& profile, float* out_z_mm) const;
+  // False, and no data at all, for a profile whose dx_mm is no scanner's spacing (0, 1e-300,
+  // NaN: the sample index divides by it) or whose x0_mm is not within a kilometre.
+  bool condition(const Profile& profile, float* out_z_mm) const;
 
  private:
   void box_average(const Profile& profile, float* out_z_mm) const;

@@ -18,8 +18,9 @@ SourceStatus ReplaySource::start() {
   started_ = false;
   next_ = 0;
   dropped_ = 0;
+  LoggedProfiles logged;
   try {
-    profiles_ = read_logged_profiles(file_, settings_.channel);
+    logged = read_logged_profiles(file_, settings_.channel, settings_.max_profile_width);
   } catch (const InputError& error) {
     error_.set("%s", error.what());  // already names the file
     return SourceStatus::kError;
@@ -27,9 +28,26 @@ SourceStatus ReplaySource::start() {
     error_.set("%s: %s", file_.c_str(), error.what());
     return SourceStatus::kError;
   }
+  profiles_ = std::move(logged.profiles);
+  if (logged.damaged_bytes > 0) {
+    // A cut or damaged recording loses an unknown number of profiles: a replay of what is
+    // left would pass for the whole run.
+    error_.set("%s: truncated or damaged at byte %lld (%lld bytes are no whole LCM event)",
+               file_.c_str(), static_cast<long long>(logged.first_damage_offset),
+               static_cast<long long>(logged.damaged_bytes));
+    return SourceStatus::kError;
+  }
+  // Out-of-bounds profiles are skipped and counted, as a live overload would be.
+  dropped_ = static_cast<std::uint64_t>(logged.rejected_profiles);
   if (profiles_.empty()) {
     // An empty replay is a wrong file or channel, never a useful run.
-    error_.set("%s: no %s events to replay", file_.c_str(), settings_.channel.c_str());
+    if (logged.rejected_profiles > 0) {
+      error_.set("%s: no %s events to replay (%lld rejected, first: %s)", file_.c_str(),
+                 settings_.channel.c_str(), static_cast<long long>(logged.rejected_profiles),
+                 logged.first_rejection.c_str());
+    } else {
+      error_.set("%s: no %s events to replay", file_.c_str(), settings_.channel.c_str());
+    }
     return SourceStatus::kError;
   }
   started_ = true;

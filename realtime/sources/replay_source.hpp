@@ -7,7 +7,9 @@
 // start() reads the whole log (set-up, not real-time: it may allocate and take a while), so
 // next() only copies a stored profile into the caller's slot. A profile wider than the slot
 // (or than max_profile_width) would make the slot allocate: it is skipped and counted in
-// dropped_profiles() instead, as a live overload would be.
+// dropped_profiles() instead, as a live overload would be; so is a profile event that does not
+// decode or is out of bounds. A truncated or damaged log is refused (it would replay as a
+// shorter run).
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -35,7 +37,7 @@ class ReplaySource final : public ScannerSource {
   explicit ReplaySource(std::filesystem::path log_file, const ReplaySourceSettings& settings = {});
 
   // Reads the log. kError with one line naming the file when it is missing, not an LCM log,
-  // holds an undecodable COSMOS_PROFILE event, or holds no profile at all. Rewinds a
+  // truncated or damaged, or holds no profile at all. Rewinds a
   // replay that was already started.
   SourceStatus start() override;
   void reserve(Profile& profile) const override;

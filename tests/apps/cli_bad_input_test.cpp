@@ -181,5 +181,16 @@ TEST_F(CliBadInput, SynthOptionsReachTheSurface) {
   EXPECT_EQ(image.ground_truth->rotation, expected.range.ground_truth->rotation);
 }
 
+// The option sets sim_source.parts and is checked against its declared range before the
+// config is read: 0 and -3 used to run the config's parts.
+TEST_F(CliBadInput, CellRejectsAPartCountOutOfRange) {
+  expect_one_line_failure("cell --parts 0 --config '" + file("absent.yaml").string() + "'",
+                          "--parts: sim_source.parts must be in [1, 1000000], got 0");
+  expect_one_line_failure("cell --parts -3 --config '" + file("absent.yaml").string() + "'",
+                          "--parts: sim_source.parts must be in [1, 1000000], got -3");
+  expect_one_line_failure("cell --parts many --config '" + file("absent.yaml").string() + "'",
+                          "--parts");
+}
+
 }  // namespace
 }  // namespace cosmos

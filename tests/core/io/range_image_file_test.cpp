@@ -263,6 +263,19 @@ TEST_F(RangeImageFile, BadGroundTruthIsRejected) {
   expect_rejected(file("pose.tiff"), {"pose.yaml:2: origin_mm:", "2 numbers"});
 }
 
+TEST_F(RangeImageFile, UnknownAndDuplicateSidecarKeysAreRejected) {
+  write_range_image(sample_image(), file("keys.tiff"));
+  // A typo of origin_mm used to be ignored: the image was read at origin (0, 0).
+  write_sidecar(file("keys.tiff"), "pixel_size_mm: [1, 1]\norigin_nm: [5, 6]\n");
+  expect_rejected(file("keys.tiff"), {"keys.yaml:2: origin_nm: unknown key", "origin_mm"});
+  write_sidecar(file("keys.tiff"), "pixel_size_mm: [1, 1]\norigin_mm: [5, 6]\norigin_mm: [7, 8]\n");
+  expect_rejected(file("keys.tiff"), {"keys.yaml:3: origin_mm: duplicate key"});
+  write_sidecar(file("keys.tiff"),
+                "pixel_size_mm: [1, 1]\nground_truth:\n  part: gear\n  part_name: gear\n"
+                "  rotation: [1, 0, 0, 0, 1, 0, 0, 0, 1]\n  translation_mm: [0, 0, 0]\n");
+  expect_rejected(file("keys.tiff"), {"keys.yaml:4: ground_truth.part_name: unknown key"});
+}
+
 TEST_F(RangeImageFile, UnwritablePathIsReported) {
   try {
     write_range_image(sample_image(), file("no_such_dir") / "scan.tiff");

@@ -2,8 +2,11 @@
 // gives them back unchanged, and bytes that are not the expected type are refused, not thrown.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "realtime/lcm/lcm_codec.hpp"
@@ -24,7 +27,11 @@ std::vector<std::uint8_t> encoded(const Input& input, Message message) {
 template <class Message>
 std::vector<std::uint8_t> reencoded(const std::vector<std::uint8_t>& bytes) {
   Message message{};
-  EXPECT_TRUE(decode_message(bytes.data(), bytes.size(), message));
+  if constexpr (std::is_same_v<Message, cosmos_lcm::range_profile_t>) {
+    EXPECT_TRUE(decode_message(bytes.data(), bytes.size(), kMaxProfileWidth, message));
+  } else {
+    EXPECT_TRUE(decode_message(bytes.data(), bytes.size(), message));
+  }
   std::vector<std::uint8_t> again;
   EXPECT_TRUE(encode_message(message, again));
   return again;
@@ -73,7 +80,8 @@ TEST(LcmEncoding, ProfileBytesDependOnlyOnTheInputNaNsIncluded) {
 TEST(LcmEncoding, ForeignAndDamagedBytesAreRefused) {
   const auto pose_bytes = encoded(testing::sample_pose(1), cosmos_lcm::part_pose_t{});
   cosmos_lcm::range_profile_t profile{};
-  EXPECT_FALSE(decode_message(pose_bytes.data(), pose_bytes.size(), profile));  // type hash differs
+  EXPECT_FALSE(decode_message(pose_bytes.data(), pose_bytes.size(), kMaxProfileWidth,
+                              profile));  // type hash differs
 
   cosmos_lcm::part_pose_t pose{};
   EXPECT_FALSE(decode_message(pose_bytes.data(), pose_bytes.size() - 1, pose));  // truncated
@@ -83,7 +91,53 @@ TEST(LcmEncoding, ForeignAndDamagedBytesAreRefused) {
   const std::size_t width_offset = 8 + 24 + 16;
   const std::uint8_t minus_two[] = {0xFF, 0xFF, 0xFF, 0xFE};  // big-endian int32
   std::memcpy(profile_bytes.data() + width_offset, minus_two, sizeof minus_two);
-  EXPECT_FALSE(decode_message(profile_bytes.data(), profile_bytes.size(), profile));
+  EXPECT_FALSE(
+      decode_message(profile_bytes.data(), profile_bytes.size(), kMaxProfileWidth, profile));
+}
+
+void set_width(std::vector<std::uint8_t>& bytes, std::uint32_t width) {
+  const std::uint8_t big_endian[] = {
+      static_cast<std::uint8_t>(width >> 24), static_cast<std::uint8_t>(width >> 16),
+      static_cast<std::uint8_t>(width >> 8), static_cast<std::uint8_t>(width)};
+  std::memcpy(bytes.data() + kRangeProfileWidthOffset, big_endian, sizeof big_endian);
+}
+
+TEST(LcmEncoding, AProfileWidthBeyondTheBoundOrTheBytesIsRefusedBeforeDecoding) {
+  // 139 bytes as a hostile datagram: 4 * 2^29 wraps the generated decode's int size check,
+  // which then read gigabytes past the message.
+  auto bytes = encoded(testing::sample_profile(1, 22), cosmos_lcm::range_profile_t{});
+  ASSERT_EQ(bytes.size(), 52U + 4U * 22U);
+  bytes.resize(139);
+  set_width(bytes, 1U << 29);
+  cosmos_lcm::range_profile_t message{};
+  EXPECT_EQ(encoded_profile_width(bytes.data(), bytes.size()), 1 << 29);
+  EXPECT_FALSE(decode_message(bytes.data(), bytes.size(), kMaxProfileWidth, message));
+  EXPECT_LT(message.z_mm.capacity(), 1000U);  // refused before the generated resize
+
+  // A width the bytes hold but wider than the reader's profiles.
+  auto wide = encoded(testing::sample_profile(1, 300), cosmos_lcm::range_profile_t{});
+  EXPECT_FALSE(decode_message(wide.data(), wide.size(), 256, message));
+  EXPECT_TRUE(decode_message(wide.data(), wide.size(), 300, message));
+  EXPECT_EQ(message.width, 300);
+  // Short by one sample.
+  EXPECT_FALSE(decode_message(wide.data(), wide.size() - 4, 300, message));
+  EXPECT_EQ(encoded_profile_width(wide.data(), kRangeProfileWidthOffset + 3), -1);
+}
+
+TEST(LcmEncoding, AProfileWithoutAUsableSpacingOrOriginDoesNotConvert) {
+  cosmos_lcm::range_profile_t message{};
+  to_message(testing::sample_profile(1, 8), message);
+  Profile profile;
+  ASSERT_TRUE(from_message(message, profile));
+  for (const double dx_mm : {0.0, 1e-300, -0.5, 1e300, std::nan("")}) {
+    message.dx_mm = dx_mm;
+    profile.seq = 77;
+    EXPECT_FALSE(from_message(message, profile)) << dx_mm;
+    EXPECT_EQ(profile.seq, 77U);  // untouched
+  }
+  message.dx_mm = 0.5;
+  message.x0_mm = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(from_message(message, profile));
 }
 
 }  // namespace

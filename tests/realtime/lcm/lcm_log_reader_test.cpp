@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <lcm/lcm-cpp.hpp>
@@ -174,6 +175,103 @@ TEST_F(LcmLogRoundTrip, WrongTypeOnAChannelNamesTheEvent) {
     EXPECT_EQ(std::string(error.what()),
               path.string() + ": event 1 on COSMOS_POSE does not decode as part_pose_t");
   }
+}
+
+TEST_F(LcmLogRoundTrip, ProfilesOutOfBoundsAreSkippedAndCounted) {
+  const fs::path path = dir_ / "hostile.lcmlog";
+  {
+    lcm::LogFile log(path.string(), "w");
+    write(log, kProfileChannel, testing::sample_profile(0, 64), cosmos_lcm::range_profile_t{});
+    // A 139-byte profile claiming 2^29 samples (4 * width wraps the generated decode's int).
+    cosmos_lcm::range_profile_t message{};
+    to_message(testing::sample_profile(1, 22), message);
+    std::vector<std::uint8_t> bytes;
+    ASSERT_TRUE(encode_message(message, bytes));
+    bytes.resize(139);
+    const std::uint8_t two_to_the_29[] = {0x20, 0x00, 0x00, 0x00};
+    std::memcpy(bytes.data() + kRangeProfileWidthOffset, two_to_the_29, 4);
+    write_raw(log, kProfileChannel, bytes);
+    Profile no_spacing = testing::sample_profile(2, 64);
+    no_spacing.dx_mm = 1e-300;
+    write(log, kProfileChannel, no_spacing, cosmos_lcm::range_profile_t{});
+    write(log, kProfileChannel, testing::sample_profile(3, 64), cosmos_lcm::range_profile_t{});
+  }
+  LcmLogReader reader(path, {}, 640);
+  Profile profile;
+  ASSERT_TRUE(reader.next_profile(profile));
+  EXPECT_EQ(profile.seq, 0U);
+  ASSERT_TRUE(reader.next_profile(profile));
+  EXPECT_EQ(profile.seq, 3U);
+  EXPECT_FALSE(reader.next_profile(profile));
+  EXPECT_EQ(reader.rejected_profiles(), 2);
+  EXPECT_EQ(reader.first_rejection(),
+            "event 1 on COSMOS_PROFILE is wider than the profile width (536870912 > 640)");
+  EXPECT_EQ(reader.damaged_bytes(), 0);
+}
+
+// lcm_eventlog's framing, big-endian: sync, event number, time stamp, channel and data lengths.
+void append_event_header(std::vector<std::uint8_t>& file, std::int32_t channel_bytes,
+                         std::int32_t data_bytes) {
+  auto put = [&file](std::uint64_t value, int bytes) {
+    for (int i = bytes - 1; i >= 0; --i)
+      file.push_back(static_cast<std::uint8_t>(value >> (8 * i)));
+  };
+  put(0xEDA1DA01, 4);
+  put(7, 8);
+  put(1'700'000'000'000'000, 8);
+  put(static_cast<std::uint32_t>(channel_bytes), 4);
+  put(static_cast<std::uint32_t>(data_bytes), 4);
+}
+
+TEST_F(LcmLogRoundTrip, AnEventClaimingMoreThanTheFileIsSkippedAsDamage) {
+  const fs::path path = dir_ / "claims.lcmlog";
+  {
+    lcm::LogFile log(path.string(), "w");
+    write(log, kProfileChannel, testing::sample_profile(0, 16), cosmos_lcm::range_profile_t{});
+  }
+  const auto good_bytes = static_cast<std::int64_t>(fs::file_size(path));
+  // A header claiming 2 GB of data (lcm_eventlog allocates length + 1 in int: null, then
+  // reads into it), then a whole event after it.
+  std::vector<std::uint8_t> damage;
+  append_event_header(damage, 14, 0x7FFFFFFF);
+  for (const char c : std::string(kProfileChannel)) damage.push_back(static_cast<std::uint8_t>(c));
+  {
+    std::ofstream out(path, std::ios::binary | std::ios::app);
+    out.write(reinterpret_cast<const char*>(damage.data()),
+              static_cast<std::streamsize>(damage.size()));
+  }
+  {
+    lcm::LogFile log(path.string(), "a");
+    write(log, kProfileChannel, testing::sample_profile(1, 16), cosmos_lcm::range_profile_t{});
+  }
+  LcmLogReader reader(path);
+  Profile profile;
+  ASSERT_TRUE(reader.next_profile(profile));
+  ASSERT_TRUE(reader.next_profile(profile));
+  EXPECT_EQ(profile.seq, 1U);  // resynchronized on the event after the damage
+  EXPECT_FALSE(reader.next_profile(profile));
+  EXPECT_EQ(reader.first_damage_offset(), good_bytes);
+  EXPECT_EQ(reader.damaged_bytes(), static_cast<std::int64_t>(damage.size()));
+}
+
+TEST_F(LcmLogRoundTrip, ATruncatedLastEventIsCountedAsDamage) {
+  const fs::path path = dir_ / "cut.lcmlog";
+  {
+    lcm::LogFile log(path.string(), "w");
+    write(log, kProfileChannel, testing::sample_profile(0, 16), cosmos_lcm::range_profile_t{});
+  }
+  const auto one_event = static_cast<std::int64_t>(fs::file_size(path));
+  {
+    lcm::LogFile log(path.string(), "a");
+    write(log, kProfileChannel, testing::sample_profile(1, 16), cosmos_lcm::range_profile_t{});
+  }
+  fs::resize_file(path, static_cast<std::uintmax_t>(one_event + 40));
+  LcmLogReader reader(path);
+  Profile profile;
+  ASSERT_TRUE(reader.next_profile(profile));
+  EXPECT_FALSE(reader.next_profile(profile));
+  EXPECT_EQ(reader.first_damage_offset(), one_event);
+  EXPECT_EQ(reader.damaged_bytes(), 40);
 }
 
 }  // namespace

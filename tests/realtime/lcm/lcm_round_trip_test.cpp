@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <lcm/lcm-cpp.hpp>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "realtime/lcm/lcm_codec.hpp"
@@ -50,8 +51,12 @@ class LcmMemqRoundTrip : public ::testing::Test {
   Message decoded(std::size_t arrival, const char* channel) const {
     EXPECT_EQ(arrivals_[arrival].channel, channel);
     Message message{};
-    EXPECT_TRUE(
-        decode_message(arrivals_[arrival].bytes.data(), arrivals_[arrival].bytes.size(), message));
+    const auto& bytes = arrivals_[arrival].bytes;
+    if constexpr (std::is_same_v<Message, cosmos_lcm::range_profile_t>) {
+      EXPECT_TRUE(decode_message(bytes.data(), bytes.size(), kMaxProfileWidth, message));
+    } else {
+      EXPECT_TRUE(decode_message(bytes.data(), bytes.size(), message));
+    }
     return message;
   }
 

@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace cosmos {
@@ -77,6 +79,40 @@ TEST(ProfileConditioner, NeverInterpolatesAcrossAJumpOrAGap) {
   const double gap_x = profile.x_mm(250);
   const int k_gap = static_cast<int>(std::lround((gap_x + 128.0) / 0.4));
   EXPECT_TRUE(std::isnan(z[k_gap]));
+}
+
+TEST(ProfileConditioner, AProfileWithoutUsableSpacingOrOriginGivesNoData) {
+  const ProfileConditioner conditioner(belt_at_2mm());
+  const double infinity = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const double dx_mm : {0.0, 1e-300, -0.5, infinity, nan}) {
+    Profile profile = sensor_profile(1280);
+    profile.dx_mm = dx_mm;
+    std::vector<float> z(static_cast<std::size_t>(conditioner.width()), 1.0F);
+    EXPECT_FALSE(conditioner.condition(profile, z.data())) << dx_mm;
+    EXPECT_EQ(std::count_if(z.begin(), z.end(), [](float v) { return !std::isnan(v); }), 0)
+        << dx_mm;
+  }
+  for (const double x0_mm : {1e300, -infinity, nan}) {
+    Profile profile = sensor_profile(64);
+    profile.x0_mm = x0_mm;
+    std::vector<float> z(static_cast<std::size_t>(conditioner.width()), 1.0F);
+    EXPECT_FALSE(conditioner.condition(profile, z.data())) << x0_mm;
+    EXPECT_EQ(std::count_if(z.begin(), z.end(), [](float v) { return !std::isnan(v); }), 0)
+        << x0_mm;
+  }
+  // Finite but far: the sample indices exceed int; nothing falls on the grid.
+  for (const bool fine : {true, false}) {
+    Profile profile = sensor_profile(fine ? 1280 : 64);
+    profile.x0_mm = 9e5;
+    if (fine) profile.dx_mm = 1e-4;
+    std::vector<float> z(static_cast<std::size_t>(conditioner.width()), 1.0F);
+    EXPECT_TRUE(conditioner.condition(profile, z.data()));
+    EXPECT_EQ(std::count_if(z.begin(), z.end(), [](float v) { return !std::isnan(v); }), 0);
+  }
+  std::vector<float> z(static_cast<std::size_t>(conditioner.width()));
+  EXPECT_TRUE(conditioner.condition(sensor_profile(1280), z.data()));
+  expect_ramp(z, conditioner);
 }
 
 }  // namespace

@@ -122,6 +122,40 @@ TEST_F(ReplaySourceTest, ProfilesWiderThanTheSlotAreDroppedAndCounted) {
   EXPECT_EQ(source.dropped_profiles(), 3u);
 }
 
+TEST_F(ReplaySourceTest, ProfilesWithoutAUsableSpacingAreDroppedAndCounted) {
+  std::vector<Profile> recorded = {testing::sample_profile(0, 100), testing::sample_profile(1, 100),
+                                   testing::sample_profile(2, 100)};
+  recorded[1].dx_mm = 0.0;  // the conditioner divides by it
+  ReplaySource source(write_log(recorded));
+  ASSERT_EQ(source.start(), SourceStatus::kOk) << source.last_error();
+  EXPECT_EQ(source.dropped_profiles(), 1u);
+  Profile slot;
+  source.reserve(slot);
+  ASSERT_EQ(source.next(slot), SourceStatus::kOk);
+  ASSERT_EQ(source.next(slot), SourceStatus::kOk);
+  EXPECT_EQ(slot.seq, 2u);
+  EXPECT_EQ(source.next(slot), SourceStatus::kEndOfStream);
+
+  // Nothing usable at all: refused, naming the first bad event.
+  ReplaySource none(write_log({recorded[1]}));
+  EXPECT_EQ(none.start(), SourceStatus::kError);
+  EXPECT_EQ(none.last_error(), (dir_ / "scan.lcmlog").string() +
+                                   ": no COSMOS_PROFILE events to replay (1 rejected, first: "
+                                   "event 0 on COSMOS_PROFILE has x0_mm or dx_mm out of range)");
+}
+
+TEST_F(ReplaySourceTest, ATruncatedLogIsRefusedNotReplayedShort) {
+  const fs::path full = write_log({testing::sample_profile(0), testing::sample_profile(1)});
+  const fs::path cut = dir_ / "cut.lcmlog";
+  fs::copy_file(full, cut);
+  fs::resize_file(cut, fs::file_size(full) - 100);
+  ReplaySource source(cut);
+  EXPECT_EQ(source.start(), SourceStatus::kError);
+  EXPECT_NE(source.last_error().find(cut.string() + ": truncated or damaged at byte "),
+            std::string_view::npos)
+      << source.last_error();
+}
+
 TEST_F(ReplaySourceTest, AConfiguredProfileChannelIsTheOneReplayed) {
   const fs::path log =
       write_log({testing::sample_profile(0), testing::sample_profile(1)}, "CELL2_PROFILE");
