@@ -1,8 +1,8 @@
+#include "apps/cell_replay_source.hpp"
 #include "apps/cell_world.hpp"
 #include "core/input_error.hpp"
 #include "realtime/config/hardware_config.hpp"
 #include "realtime/sources/hardware_source.hpp"
-#include "realtime/sources/replay_source.hpp"
 
 namespace cosmos::cli {
 
@@ -22,11 +22,7 @@ CellWorld::~CellWorld() = default;
 ScannerSource& CellWorld::open_source(const CellSourceChoice& choice) {
   const CellConfig& config = state_->config;
   if (!choice.replay.empty()) {
-    ReplaySourceSettings settings;
-    settings.max_profile_width = static_cast<std::size_t>(config.scanner.points_per_profile);
-    settings.mm_per_profile = config.scanner.profile_step_mm();
-    settings.channel = config.lcm.profile_channel;
-    state_->source = std::make_unique<ReplaySource>(choice.replay, settings);
+    state_->source = make_cell_replay_source(choice.replay, config);
     return *state_->source;
   }
   if (choice.source != "hardware")

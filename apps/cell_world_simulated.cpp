@@ -1,6 +1,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "apps/cell_replay_source.hpp"
 #include "apps/cell_world.hpp"
 #include "apps/model_base_progress.hpp"
 #include "core/input_error.hpp"
@@ -8,7 +9,6 @@
 #include "core/io/xxh64.hpp"
 #include "realtime/config/hardware_config.hpp"
 #include "realtime/sources/hardware_source.hpp"
-#include "realtime/sources/replay_source.hpp"
 #include "sim/model_base_build/catalog_content_hash.hpp"
 #include "sim/model_base_build/model_base_builder.hpp"
 #include "sim/model_base_build/model_base_parameters.hpp"
@@ -62,11 +62,7 @@ CellWorld::~CellWorld() = default;
 ScannerSource& CellWorld::open_source(const CellSourceChoice& choice) {
   const CellConfig& config = state_->config;
   if (!choice.replay.empty()) {
-    ReplaySourceSettings settings;
-    settings.max_profile_width = static_cast<std::size_t>(config.scanner.points_per_profile);
-    settings.mm_per_profile = config.scanner.profile_step_mm();
-    settings.channel = config.lcm.profile_channel;
-    state_->source = std::make_unique<ReplaySource>(choice.replay, settings);
+    state_->source = make_cell_replay_source(choice.replay, config);
   } else if (choice.source == "hardware") {
     if (choice.hardware.empty()) {
       throw InputError(
