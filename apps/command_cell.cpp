@@ -69,7 +69,6 @@ void run(const CellOptions& options) {
                                  .part_queue_slots = config.realtime.part_queue_slots,
                                  .wait_for_recognizer = unpaced};
   // The grid is never interpolated across an edge the fit treats as one.
-  loop_settings.conditioning.depth_jump_mm = cosmos.fit.depth_jump_mm;
   ScanLoop loop(loop_settings);
 
   PartRecognitionContext context;

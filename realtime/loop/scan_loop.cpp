@@ -21,7 +21,7 @@ bool PartBuilder::owns(std::int64_t id) const {
 
 ScanLoop::ScanLoop(const ScanLoopSettings& settings)
     : settings_(settings),
-      conditioner_(settings.conditioning),
+      conditioner_(settings.conditioning, settings.cosmos.fit),
       tracker_(settings.tracking, conditioner_.width()),
       completed_(static_cast<std::size_t>(std::max(settings.part_queue_slots, 1))),
       returned_(static_cast<std::size_t>(std::max(settings.builders, 1))),

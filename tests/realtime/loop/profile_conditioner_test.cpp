@@ -47,7 +47,7 @@ void expect_ramp(const std::vector<float>& z, const ProfileConditioner& conditio
 }
 
 TEST(ProfileConditioner, FineSensorIsBoxAveragedOntoTheGrid) {
-  const ProfileConditioner conditioner(belt_at_2mm());
+  const ProfileConditioner conditioner(belt_at_2mm(), SurfaceFitParameters{});
   ASSERT_EQ(conditioner.width(), 640);
   std::vector<float> z(conditioner.width());
   conditioner.condition(sensor_profile(3200), z.data());
@@ -55,14 +55,14 @@ TEST(ProfileConditioner, FineSensorIsBoxAveragedOntoTheGrid) {
 }
 
 TEST(ProfileConditioner, CoarseSensorIsInterpolated) {
-  const ProfileConditioner conditioner(belt_at_2mm());
+  const ProfileConditioner conditioner(belt_at_2mm(), SurfaceFitParameters{});
   std::vector<float> z(conditioner.width());
   conditioner.condition(sensor_profile(320), z.data());
   expect_ramp(z, conditioner);
 }
 
 TEST(ProfileConditioner, NeverInterpolatesAcrossAJumpOrAGap) {
-  const ProfileConditioner conditioner(belt_at_2mm());
+  const ProfileConditioner conditioner(belt_at_2mm(), SurfaceFitParameters{});
   Profile profile = sensor_profile(320);  // 0.8 mm samples
   for (int i = 0; i < 320; ++i) profile.z_mm[i] = profile.x_mm(i) < 0 ? 10.0f : 20.0f;
   profile.z_mm[250] = Profile::kNoData;
@@ -77,6 +77,21 @@ TEST(ProfileConditioner, NeverInterpolatesAcrossAJumpOrAGap) {
   const double gap_x = profile.x_mm(250);
   const int k_gap = static_cast<int>(std::lround((gap_x + 128.0) / 0.4));
   EXPECT_TRUE(std::isnan(z[k_gap]));
+}
+
+// The jump is the COSMOS fit's: with a fit that takes a 10 mm step as one surface, the grid
+// is interpolated across it too.
+TEST(ProfileConditioner, TakesTheDepthJumpFromTheFit) {
+  SurfaceFitParameters fit;
+  fit.depth_jump_mm = 15.0;
+  const ProfileConditioner conditioner(belt_at_2mm(), fit);
+  Profile profile = sensor_profile(320);  // 0.8 mm samples, the step between two of them
+  for (int i = 0; i < 320; ++i) profile.z_mm[i] = profile.x_mm(i) < 0 ? 10.0f : 20.0f;
+  std::vector<float> z(conditioner.width());
+  conditioner.condition(profile, z.data());
+  int between = 0;
+  for (int k = 0; k < conditioner.width(); ++k) between += z[k] > 8.5f && z[k] < 17.5f ? 1 : 0;
+  EXPECT_EQ(between, 2);  // the grid points x = ±0.2 mm, between the samples at ±0.4 mm
 }
 
 }  // namespace
