@@ -62,11 +62,8 @@ void run(const CellOptions& options) {
                                  .tracking = config.tracking.tracker,
                                  .cosmos = cosmos,
                                  .max_part_rows = config.max_part_rows(),
-                                 .builders = config.realtime.part_builders,
-                                 .part_queue_slots = config.realtime.part_queue_slots,
+                                 .parts = config.realtime.parts,
                                  .wait_for_recognizer = unpaced};
-  // The grid is never interpolated across an edge the fit treats as one.
-  loop_settings.conditioning.depth_jump_mm = cosmos.fit.depth_jump_mm;
   ScanLoop loop(loop_settings);
 
   PartRecognitionContext context;
@@ -83,11 +80,8 @@ void run(const CellOptions& options) {
   settings.line_rate_hz = config.scanner.line_rate_hz;
   settings.paced = !unpaced;
   settings.deterministic_output = !options.replay.empty();
-  settings.realtime = config.realtime.thread;
-  settings.status_period_s = config.lcm.status_period_s;
-  settings.pose_queue_slots = config.realtime.pose_queue_slots;
-  settings.profile_ring_slots = config.realtime.profile_ring_slots;
-  settings.publish_profiles = config.lcm.publish_profiles;
+  settings.threads = config.realtime.threads;
+  settings.publishing = config.lcm.publishing;
   settings.duration_s = options.duration_s;
 
   std::vector<double> latencies_ms;

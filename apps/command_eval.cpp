@@ -44,6 +44,7 @@ struct EvalOptions {
 std::vector<EvaluationRecord> run_tests(const std::vector<EvaluationTest>& plan,
                                         const std::vector<EvaluationPart>& parts,
                                         const ScannerParameters& scanner,
+                                        const ConditioningParameters& conditioning,
                                         const Recognizer& recognizer, const ModelBase& base,
                                         int threads) {
   std::vector<EvaluationRecord> records(plan.size());
@@ -53,7 +54,7 @@ std::vector<EvaluationRecord> run_tests(const std::vector<EvaluationTest>& plan,
   const auto work = [&] {
     try {
       for (std::size_t i = next++; i < plan.size(); i = next++) {
-        records[i] = run_evaluation_test(plan[i], parts, scanner, recognizer, base);
+        records[i] = run_evaluation_test(plan[i], parts, scanner, conditioning, recognizer, base);
         const std::size_t finished = ++done;
         if (finished % 10 == 0 || finished == plan.size())
           std::fprintf(stderr, "eval: %zu/%zu scans recognized\n", finished, plan.size());
@@ -99,8 +100,10 @@ void run(const EvalOptions& options) {
   ScannerParameters scanner =
       options.config.empty() ? ScannerParameters{} : read_scanner_config(options.config);
   if (options.noise_mm >= 0) scanner.z_noise_mm = options.noise_mm;
-  // The scans lose the belt as the base's views did.
-  scanner.background_height_mm =
+  // The test scans are conditioned as the base's views were: they lose the belt at its
+  // recorded threshold.
+  ConditioningParameters conditioning;
+  conditioning.height_threshold_mm =
       model_base_view_conditioning(base, options.model_base).height_threshold_mm;
 
   const std::vector<EvaluationPart> parts = evaluation_parts(base, catalog, options.unknown);
@@ -108,7 +111,7 @@ void run(const EvalOptions& options) {
   if (!options.only.empty()) plan = chosen_tests(plan, options.only);
   const Recognizer recognizer(base, cosmos, RecognitionParameters{});
   const std::vector<EvaluationRecord> records =
-      run_tests(plan, parts, scanner, recognizer, base, options.threads);
+      run_tests(plan, parts, scanner, conditioning, recognizer, base, options.threads);
 
   std::vector<std::vector<Eigen::Vector3d>> points_by_catalog(catalog.parts.size());
   for (const EvaluationPart& part : parts)

@@ -90,15 +90,21 @@ LoadedPart load_part(const std::string& command, const SimOptions& options) {
   return {entry.name, load_mesh(entry.mesh_path, entry.size_mm)};
 }
 
-ScannerParameters scanner_parameters(const std::string& command, const SimOptions& options,
-                                     std::uint64_t seed) {
-  ScannerParameters parameters;
+// The scanner and the conditioning of a cell (--config, else the defaults): range images lose
+// the belt at the cell's threshold, as its model views and live scans do.
+struct SimScanSetup {
+  ScannerParameters scanner;
+  ConditioningParameters conditioning;
+};
+
+SimScanSetup scan_setup(const std::string& command, const SimOptions& options, std::uint64_t seed) {
+  SimScanSetup setup;
   if (!options.config.empty()) {
     const CellConfig config = load_cell_config(options.config);
-    parameters = config.scanner;
-    // Range images lose the belt at the cell's threshold, as its model views and scans do.
-    parameters.background_height_mm = config.conditioning.height_threshold_mm;
+    setup.scanner = config.scanner;
+    setup.conditioning = config.conditioning;
   }
+  ScannerParameters& parameters = setup.scanner;
   parameters.seed = seed;
   if (!options.noise_mm.empty()) {
     parameters.z_noise_mm =
@@ -111,7 +117,7 @@ ScannerParameters scanner_parameters(const std::string& command, const SimOption
   } catch (const std::invalid_argument& error) {
     fail(command, error.what());
   }
-  return parameters;
+  return setup;
 }
 
 void check_output_image(const std::string& command, const fs::path& out) {
@@ -157,7 +163,8 @@ void run_scan(const SimOptions& options) {
     fail("scan", "--frames needs --mode camera");
   const auto seed =
       parse_number<std::uint64_t>("scan", "--seed", options.seed, "a non-negative integer");
-  const ScannerParameters parameters = scanner_parameters("scan", options, seed);
+  const SimScanSetup setup = scan_setup("scan", options, seed);
+  const ScannerParameters& parameters = setup.scanner;
   const LoadedPart part = load_part("scan", options);
   const Eigen::Matrix3d R_belt_part = part_rotation(options, part.mesh, seed);
 
@@ -173,8 +180,8 @@ void run_scan(const SimOptions& options) {
       frames->write(profile.seq, scanner.last_frame(), scanner.last_peaks());
     };
   }
-  const RangeImage image =
-      scan_single_part(part.mesh, part.name, R_belt_part, parameters, mode, observer);
+  const RangeImage image = scan_single_part(part.mesh, part.name, R_belt_part, parameters,
+                                            setup.conditioning, mode, observer);
   if (image.width() == 0) {
     fail("scan",
          "the scanner measured nothing of '" + part.name + "' (out of the measuring range?)");
@@ -209,14 +216,14 @@ void run_views(const SimOptions& options) {
   const int count = parse_number<int>("views", "--count", options.count, "an integer");
   if (count < 1 || count > 320)
     fail("views", "--count '" + options.count + "': must be in [1, 320]");
-  const ScannerParameters parameters = scanner_parameters("views", options, seed);
+  const SimScanSetup setup = scan_setup("views", options, seed);
   const LoadedPart part = load_part("views", options);
   const fs::path out = options.out;
   std::error_code error;
   fs::create_directories(out, error);
   if (!fs::is_directory(out, error)) fail("views", out.string() + ": cannot create the directory");
 
-  ModelViewRenderer renderer(part.mesh, part.name, parameters);
+  ModelViewRenderer renderer(part.mesh, part.name, setup.scanner, setup.conditioning);
   int empty = 0;
   for (int index = 0; index < count; ++index) {
     const ModelView view = renderer.scan_view(index);

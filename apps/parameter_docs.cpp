@@ -4,6 +4,7 @@
 #include "core/io/parameter_table.hpp"
 #include "core/recognition/recognizer.hpp"
 #include "realtime/config/cell_config.hpp"
+#include "realtime/config/hardware_config.hpp"
 #include "sim/model_base_build/model_base_builder.hpp"
 
 namespace cosmos {
@@ -43,6 +44,22 @@ std::string parameters_markdown() {
   const CellConfig cell;
   SectionDocs cell_sections(text);
   visit_parameters(cell_sections, cell);
+
+  text.append(
+      "\n## Hardware configuration (config/hardware-example.yaml)\n\n"
+      "The real cell's camera and GPIO lines (`cosmos cell --source hardware --hardware FILE`), "
+      "read and refused as the cell configuration is; `gpio.encoder_a` is required, "
+      "`gpio.encoder_b` too in quadrature mode. A line is a name (`ENC_A`), an offset (`17`) "
+      "or a map `{name: ENC_A | offset: 17, active_low: true}`. `camera.device: simulated` with "
+      "`gpio.chip: simulated` selects the hardware twins (config/hardware-sim.yaml), whose chip "
+      "takes no line keys. The `stripe:` section (method, threshold, min_peak_intensity, "
+      "window_half_width_px) is in the camera's grey levels, its defaults scaled to the pixel "
+      "format: see realtime/config/hardware_config.hpp.\n");
+  HardwareConfig hardware;
+  SectionDocs hardware_sections(text);
+  hardware_sections("camera", camera_section(hardware),
+                    "the V4L2 camera that images the laser line");
+  hardware_sections("gpio", hardware.gpio, "the conveyor encoder, the photo eye and the outputs");
 
   text.append(
       "\n## Model base\n\n"

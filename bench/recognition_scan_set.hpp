@@ -164,7 +164,7 @@ class RecognitionScanSet {
       TestScan scan;
       scan.part_name = part.name;
       scan.true_part = part.base_index;
-      scan.image = scan_evaluation_test(test, parts, scanner);
+      scan.image = scan_evaluation_test(test, parts, scanner, ConditioningParameters{});
       if (scan.image.width() == 0 || scan.image.count_valid() == 0) continue;
       prepare_stages(scan);
       if (scan.scene_points.size() < parameters_.min_scene_points || scan.selected.empty())

@@ -183,7 +183,7 @@ void Conditioning(benchmark::State& state) {
     state.SkipWithError(stream.error.c_str());
     return;
   }
-  const ProfileConditioner conditioner{ConditioningParameters{}};
+  const ProfileConditioner conditioner{ConditioningParameters{}, SurfaceFitParameters{}};
   std::vector<float> row_z_mm(static_cast<std::size_t>(conditioner.width()));
   std::int64_t input_points = 0;
   std::size_t next = 0;

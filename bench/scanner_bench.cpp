@@ -13,6 +13,7 @@
 #include <optional>
 #include <string>
 
+#include "scanner/conditioning_parameters.hpp"
 #include "sim/conveyor_scene.hpp"
 #include "sim/mesh.hpp"
 #include "sim/model_views.hpp"
@@ -74,10 +75,11 @@ void scan_profiles(benchmark::State& state, const ScannerParameters& parameters,
   scanner.reserve(profile);
   const ProfileRange range = profiles_covering(*scene, parameters, 2.0);
   // Samples above the belt (the work is where the part is), counted outside the timed loop.
+  const double belt_threshold_mm = ConditioningParameters{}.height_threshold_mm;
   double part_samples = 0.0;
   for (std::int64_t k = range.first; k <= range.last; ++k) {
     scanner.acquire(k, profile);
-    for (const float z : profile.z_mm) part_samples += z > parameters.background_height_mm;
+    for (const float z : profile.z_mm) part_samples += z > belt_threshold_mm;
   }
   std::int64_t k = range.first;
   for (auto _ : state) {
@@ -126,7 +128,7 @@ void ModelViewScan(benchmark::State& state) {
     state.SkipWithError("catalog meshes missing: run scripts/fetch_catalog.sh");
     return;
   }
-  ModelViewRenderer renderer(*bench_mesh(), kPart, ScannerParameters{});
+  ModelViewRenderer renderer(*bench_mesh(), kPart, ScannerParameters{}, ConditioningParameters{});
   int index = 0;
   for (auto _ : state) {
     const ModelView view = renderer.scan_view(index);

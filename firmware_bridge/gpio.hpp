@@ -5,8 +5,8 @@
 // SimulatedGpioLines (sim/twins/) emits the simulated conveyor's edges into the same decoder.
 //
 // The outputs as HardwareSource uses them: laser_enable is on while the source streams;
-// result_ready pulses once per result announced to it (a published pose); camera_trigger is
-// requested and held inactive but driven by nothing, since the camera runs free.
+// result_ready pulses once per result announced to it (a published pose). There is no camera
+// trigger: the camera runs free.
 #include <cstdint>
 #include <string_view>
 
@@ -20,7 +20,7 @@ enum class GpioStatus : std::uint8_t {
   kError,          // see last_error()
 };
 
-enum class GpioOutput : std::uint8_t { kLaserEnable, kCameraTrigger, kResultReady };
+enum class GpioOutput : std::uint8_t { kLaserEnable, kResultReady };
 
 struct EncoderReading {
   std::int64_t ticks = 0;

@@ -15,8 +15,7 @@ namespace {
 
 constexpr std::array<const char*, kGpioInputCount> kInputRoles = {"encoder_a", "encoder_b",
                                                                   "photo_eye"};
-constexpr std::array<const char*, 3> kOutputRoles = {"laser_enable", "camera_trigger",
-                                                     "result_ready"};
+constexpr std::array<const char*, 2> kOutputRoles = {"laser_enable", "result_ready"};
 
 // libgpiod reads at most this many events per call: the kernel FIFO depth.
 constexpr unsigned kEventBatch = 16;
@@ -42,9 +41,9 @@ struct LineLabel {
 LibgpiodLines::LibgpiodLines(GpioConfig config)
     : config_(std::move(config)),
       decoder_(GpioInputParameters{
-          {config_.encoder_mode, config_.encoder_debounce_ns, config_.encoder_b.configured()},
-          {config_.photo_eye_debounce_ns, config_.photo_eye_min_on_ns,
-           config_.photo_eye_min_off_ns}}) {}
+          {config_.encoder_mode, config_.encoder_debounce_ns(), config_.encoder_b.configured()},
+          {config_.photo_eye_debounce_ns(), config_.photo_eye_min_on_ns(),
+           config_.photo_eye_min_off_ns()}}) {}
 
 LibgpiodLines::~LibgpiodLines() { stop(); }
 
@@ -55,8 +54,8 @@ const GpioLineRef& LibgpiodLines::input_ref(std::size_t input) const noexcept {
 }
 
 const GpioLineRef& LibgpiodLines::output_ref(std::size_t output) const noexcept {
-  const std::array<const GpioLineRef*, kOutputCount> refs = {
-      &config_.laser_enable, &config_.camera_trigger, &config_.result_ready};
+  const std::array<const GpioLineRef*, kOutputCount> refs = {&config_.laser_enable,
+                                                             &config_.result_ready};
   return *refs[output];
 }
 

@@ -2,8 +2,8 @@
 // The work cell's GPIO lines through libgpiod 1.6 (the character-device API: /dev/gpiochipN).
 //
 // start() opens the chip, finds each configured line by name or offset, requests the inputs
-// (encoder A/B, photo eye) for both-edge events and the outputs (laser enable, camera
-// trigger, result ready) driven inactive, and reads the inputs' levels to start decoding
+// (encoder A/B, photo eye) for both-edge events and the outputs (laser enable, result
+// ready) driven inactive, and reads the inputs' levels to start decoding
 // from. A missing chip or line, a busy line, a bad offset: one line naming chip, line, role
 // and reason.
 //
@@ -52,7 +52,7 @@ class LibgpiodLines final : public GpioLines {
   std::uint64_t lost_edges() const noexcept { return merger_.overflowed(); }
 
  private:
-  static constexpr std::size_t kOutputCount = 3;
+  static constexpr std::size_t kOutputCount = 2;
 
   const GpioLineRef& input_ref(std::size_t input) const noexcept;
   const GpioLineRef& output_ref(std::size_t output) const noexcept;

@@ -4,7 +4,6 @@
 // beside the scanner because the model-base build needs it too: the model views are cut from
 // the belt at the same height threshold as live scans, and the base records that threshold and
 // its views' grid, which a cell's conditioning must match.
-#include "core/cosmos_parameters.hpp"
 #include "core/parameter_visitor.hpp"
 
 namespace cosmos {
@@ -20,10 +19,9 @@ struct ConditioningParameters {
   // Above the belt: part; below: background. The one belt threshold of live scans and of the
   // model views (the model-base build scans them with it).
   double height_threshold_mm = 0.5;
-  // No interpolation between samples further apart in z. Not a key of its own: it is the
-  // COSMOS fit's depth jump (cosmos.fit.depth_jump_mm), which the cell takes from its model
-  // base, so the grid is never interpolated across an edge that the fit treats as one.
-  double depth_jump_mm = SurfaceFitParameters{}.depth_jump_mm;
+  // The depth jump across which samples are never interpolated is not a parameter of the
+  // conditioning: it is the COSMOS fit's (cosmos.fit.depth_jump_mm, recorded in the model
+  // base), given to the ProfileConditioner beside these.
 
   template <class Visitor>
   void visit(Visitor& v) {

@@ -25,7 +25,6 @@
 #include <span>
 
 #include "core/parameter_visitor.hpp"
-#include "scanner/conditioning_parameters.hpp"
 #include "scanner/triangulation_geometry.hpp"
 
 namespace cosmos {
@@ -116,10 +115,6 @@ struct ScannerParameters {
   // its seed.
   double z_noise_mm = 0.02;
   std::uint64_t seed = 1;
-  // The belt threshold of simulated range images (sim/range_image_scan.hpp). Not a key of
-  // its own: it is the cell's conditioning.height_threshold_mm, which the model-base build
-  // sets here for its views, so model views and live scans lose the same belt.
-  double background_height_mm = ConditioningParameters{}.height_threshold_mm;
 
   CameraFrameParameters camera;
 

@@ -9,10 +9,12 @@
 namespace cosmos {
 
 ModelViewRenderer::ModelViewRenderer(const TriangleMesh& mesh, std::string part_name,
-                                     const ScannerParameters& parameters, int subdivisions)
+                                     const ScannerParameters& parameters,
+                                     const ConditioningParameters& conditioning, int subdivisions)
     : mesh_(mesh),
       part_name_(std::move(part_name)),
       parameters_(parameters),
+      conditioning_(conditioning),
       directions_(view_directions(subdivisions)) {
   const int mesh_index = scene_.add_mesh(mesh_);
   scene_.add_part(part_name_, mesh_index, view_pose(0));
@@ -38,7 +40,7 @@ ModelView ModelViewRenderer::scan_view(int index) {
   view.index = index;
   view.direction_part = direction(index).normalized();
   view.T_scanner_part = scene_.parts().front().T_belt_part;
-  view.image = scan_range_image(scene_, *scanner_);
+  view.image = scan_range_image(scene_, *scanner_, conditioning_);
   if (view.image.width() > 0) {
     view.image.ground_truth = GroundTruthPose{part_name_, view.T_scanner_part.linear(),
                                               view.T_scanner_part.translation()};

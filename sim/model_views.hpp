@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/range_image.hpp"
+#include "scanner/conditioning_parameters.hpp"
 #include "scanner/scanner_model.hpp"
 #include "sim/conveyor_scene.hpp"
 #include "sim/mesh.hpp"
@@ -31,7 +32,8 @@ class ModelViewRenderer {
  public:
   // `mesh` in the part frame (mm). Directions: view_directions(subdivisions).
   ModelViewRenderer(const TriangleMesh& mesh, std::string part_name,
-                    const ScannerParameters& parameters, int subdivisions = 2);
+                    const ScannerParameters& parameters, const ConditioningParameters& conditioning,
+                    int subdivisions = 2);
   ~ModelViewRenderer();
 
   int view_count() const { return static_cast<int>(directions_.size()); }
@@ -53,6 +55,7 @@ class ModelViewRenderer {
   TriangleMesh mesh_;
   std::string part_name_;
   ScannerParameters parameters_;
+  ConditioningParameters conditioning_;  // the belt threshold of the views
   std::vector<Eigen::Vector3d> directions_;
   ConveyorScene scene_{true};  // movable: one part turned through every view
   std::unique_ptr<SimulatedScanner> scanner_;

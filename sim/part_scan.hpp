@@ -17,6 +17,7 @@ namespace cosmos {
 // Empty image (width 0) when the scanner measured nothing of the part.
 RangeImage scan_single_part(const TriangleMesh& mesh, const std::string& part_name,
                             const Eigen::Matrix3d& R_belt_part, const ScannerParameters& parameters,
+                            const ConditioningParameters& conditioning,
                             ScanMode mode = ScanMode::kProfile,
                             const ProfileObserver& observer = {});
 

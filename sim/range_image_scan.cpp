@@ -6,6 +6,7 @@
 namespace cosmos {
 
 RangeImage scan_range_image(const ConveyorScene& scene, SimulatedScanner& scanner,
+                            const ConditioningParameters& conditioning,
                             const RangeScanOptions& options, const ProfileObserver& observer) {
   const ScannerParameters& parameters = scanner.parameters();
   const ProfileRange range = profiles_covering(scene, parameters, options.scan_margin_mm);
@@ -15,7 +16,7 @@ RangeImage scan_range_image(const ConveyorScene& scene, SimulatedScanner& scanne
   PixelGrid<float> exposed(width, rows);  // row r = profile range.first + r
   Profile profile;
   scanner.reserve(profile);
-  const auto background_mm = static_cast<float>(parameters.background_height_mm);
+  const auto background_mm = static_cast<float>(conditioning.height_threshold_mm);
   int first_row = rows;
   int last_row = -1;
   int first_column = width;

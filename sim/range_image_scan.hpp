@@ -9,15 +9,17 @@
 // x = x0 + i·dx, y = y0 + j·dy with positive dx, dy, as every range-image consumer expects;
 // rows in exposure order would mirror the part.
 //
-// The belt is background: every sample below background_height_mm (the visible belt at
-// z ≈ 0, and the lowest rim of the parts) becomes NaN, the height threshold a real cell uses
-// to separate parts from the belt. The image is cropped to the measured part pixels plus a
-// margin.
+// The belt is background: every sample below the conditioning's height_threshold_mm (the
+// visible belt at z ≈ 0, and the lowest rim of the parts) becomes NaN, the threshold the cell
+// uses to separate live parts from the belt; the caller passes its one ConditioningParameters
+// so model views, test scans and live scans lose the same belt. The image is cropped to the
+// measured part pixels plus a margin.
 #include <cstdint>
 #include <functional>
 
 #include "core/profile.hpp"
 #include "core/range_image.hpp"
+#include "scanner/conditioning_parameters.hpp"
 #include "sim/conveyor_scene.hpp"
 #include "sim/simulated_scanner.hpp"
 
@@ -35,6 +37,7 @@ using ProfileObserver = std::function<void(std::int64_t profile_index, const Pro
 // Scans every profile covering the scene. Returns an image without ground truth (the caller
 // knows which part it is), or an empty image (width 0) when no part pixel was measured.
 RangeImage scan_range_image(const ConveyorScene& scene, SimulatedScanner& scanner,
+                            const ConditioningParameters& conditioning,
                             const RangeScanOptions& options = {},
                             const ProfileObserver& observer = {});
 

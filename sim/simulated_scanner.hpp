@@ -10,7 +10,7 @@
 //             triangulation and resampling turn the frame into the profile. The noise then
 //             comes from the image (speckle, shot and read noise), not from z_noise_mm.
 // Both give z = 0 on the visible belt, as a real scanner does; consumers remove the belt by
-// a height threshold (background_height_mm).
+// a height threshold (ConditioningParameters::height_threshold_mm, range_image_scan.hpp).
 //
 // acquire() allocates nothing once the Profile was reserved: buffers are sized at
 // construction.

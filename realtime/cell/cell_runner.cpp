@@ -80,7 +80,7 @@ void run_publisher(ScanLoop& loop, Publisher& publisher, SpscRing<CompletedPose>
                    SpscRing<Profile>& profiles, SharedStatus& shared,
                    const CellRunSettings& settings, const PoseObserver& observer,
                    CellRunSummary& summary) {
-  const auto period = std::chrono::duration<double>(settings.status_period_s);
+  const auto period = std::chrono::duration<double>(settings.publishing.status_period_s);
   auto next_status = std::chrono::steady_clock::now();
   std::int64_t last_data_us = 0;
   for (;;) {
@@ -119,21 +119,25 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
                         const CellRunSettings& settings, const PoseObserver& observer) {
   CellRunSummary summary;
   SharedStatus shared;
-  SpscRing<CompletedPose> poses(static_cast<std::size_t>(std::max(settings.pose_queue_slots, 1)));
-  SpscRing<Profile> recorded(static_cast<std::size_t>(std::max(settings.profile_ring_slots, 1)),
-                             [&source](Profile& slot) { source.reserve(slot); });
+  SpscRing<CompletedPose> poses(
+      static_cast<std::size_t>(std::max(settings.threads.pose_queue_slots, 1)));
+  SpscRing<Profile> recorded(
+      static_cast<std::size_t>(std::max(settings.threads.profile_ring_slots, 1)),
+      [&source](Profile& slot) { source.reserve(slot); });
   std::thread recognizer(run_recognizer, std::ref(loop), std::cref(recognition), std::ref(poses),
                          std::ref(shared), std::cref(settings));
   std::thread publishing(run_publisher, std::ref(loop), std::ref(publisher), std::ref(poses),
                          std::ref(recorded), std::ref(shared), std::cref(settings),
                          std::cref(observer), std::ref(summary));
 
-  summary.realtime_report = describe_realtime_report(apply_realtime_settings(settings.realtime));
+  summary.realtime_report =
+      describe_realtime_report(apply_realtime_settings(settings.threads.thread));
   Profile profile;
   source.reserve(profile);
   DeadlinePacer pacer(settings.paced ? static_cast<std::int64_t>(1e9 / settings.line_rate_hz) : 0);
   LatencyHistogram processing, processing_period;
-  const auto status_period_ns = static_cast<std::int64_t>(settings.status_period_s * 1e9);
+  const auto status_period_ns =
+      static_cast<std::int64_t>(settings.publishing.status_period_s * 1e9);
   std::int64_t next_snapshot_ns = monotonic_now_ns() + status_period_ns;
   std::int64_t first_t_us = -1;
   for (;;) {
@@ -150,7 +154,7 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
       break;
     }
     loop.process(profile);
-    if (settings.publish_profiles) {
+    if (settings.publishing.publish_profiles) {
       Profile* slot = recorded.try_begin_push();
       // Unpaced runs (replays, log recording) lose nothing: they wait for the publisher,
       // which a loaded machine may starve for longer than the ring lasts.

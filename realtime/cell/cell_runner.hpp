@@ -19,6 +19,7 @@
 #include <functional>
 #include <string>
 
+#include "core/parameter_visitor.hpp"
 #include "realtime/cell/cell_status.hpp"
 #include "realtime/cell/part_recognition.hpp"
 #include "realtime/lcm/pose_publisher.hpp"
@@ -28,15 +29,40 @@
 
 namespace cosmos {
 
+// The acquisition thread and the queues between the cell's threads (keys of the cell's
+// `realtime:`, beside the scan loop's PartQueueSettings).
+struct CellThreadSettings {
+  RealtimeSettings thread;        // the acquisition thread: SCHED_FIFO, cpu, mlockall
+  int profile_ring_slots = 4096;  // loop -> publisher recorded profiles (1.6 s at 2,500/s)
+  int pose_queue_slots = 32;      // recognizer -> publisher poses
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v.fields(thread);
+    v("profile_ring_slots", profile_ring_slots, "recorded profiles queued for publishing",
+      Range{1, 1 << 20});
+    v("pose_queue_slots", pose_queue_slots, "poses queued for the publisher", Range{1, 4096});
+  }
+};
+
+// What the publisher thread sends besides poses (keys of the cell's `lcm:`).
+struct CellPublishSettings {
+  bool publish_profiles = false;  // every profile on profile_channel, for record/replay
+  double status_period_s = 1.0;   // cell_status_t period
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("publish_profiles", publish_profiles, "every profile on profile_channel");
+    v("status_period_s", status_period_s, "cell_status_t period, s", Range::above(0, 3600));
+  }
+};
+
 struct CellRunSettings {
   double line_rate_hz = 2500;  // pacing of the acquisition loop
   bool paced = true;
   bool deterministic_output = false;
-  RealtimeSettings realtime;
-  double status_period_s = 1.0;
-  int pose_queue_slots = 32;
-  int profile_ring_slots = 4096;
-  bool publish_profiles = false;
+  CellThreadSettings threads;
+  CellPublishSettings publishing;
   double duration_s = 0;  // stop after this much (data time); 0 = until the source ends
   // Test hook: extra time the recognizer spends per part (a slow worker must not change
   // the output in deterministic mode).

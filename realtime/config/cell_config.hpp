@@ -19,9 +19,11 @@
 
 #include "core/parameter_visitor.hpp"
 #include "core/rigid_transform.hpp"
+#include "realtime/cell/cell_runner.hpp"
 #include "realtime/config/sim_source_settings.hpp"
 #include "realtime/lcm/lcm_channels.hpp"
 #include "realtime/loop/part_tracker.hpp"
+#include "realtime/loop/scan_loop.hpp"
 #include "realtime/rt/realtime_settings.hpp"
 #include "scanner/conditioning_parameters.hpp"
 #include "scanner/scanner_model.hpp"
@@ -70,8 +72,7 @@ struct LcmSettings {
   std::string pose_channel = kPoseChannel;
   std::string status_channel = kStatusChannel;
   std::string profile_channel = kProfileChannel;
-  bool publish_profiles = false;  // every profile on profile_channel, for record/replay
-  double status_period_s = 1.0;   // cell_status_t period
+  CellPublishSettings publishing;  // profiles and status besides the poses (CellRunSettings)
 
   LcmChannelNames channels() const { return {pose_channel, status_channel, profile_channel}; }
 
@@ -81,28 +82,21 @@ struct LcmSettings {
     v("pose_channel", pose_channel, "part_pose_t, one per part");
     v("status_channel", status_channel, "cell_status_t, every status_period_s");
     v("profile_channel", profile_channel, "range_profile_t, for record and replay");
-    v("publish_profiles", publish_profiles, "every profile on profile_channel");
-    v("status_period_s", status_period_s, "cell_status_t period, s", Range::above(0, 3600));
+    v.fields(publishing);
   }
 };
 
+// The structs the cell's threads take as they are: the acquisition thread and the rings
+// between threads (CellRunSettings::threads), the scan loop's builders and its queue to the
+// recognizer (ScanLoopSettings::parts).
 struct RealtimeQueueSettings {
-  RealtimeSettings thread;        // the acquisition thread: SCHED_FIFO, cpu, mlockall
-  int profile_ring_slots = 4096;  // loop -> publisher recorded profiles (1.6 s at 2,500/s)
-  int part_builders = 8;          // parts in flight (ScanLoopSettings::builders)
-  int part_queue_slots = 8;       // loop -> recognizer completed parts
-  int pose_queue_slots = 32;      // recognizer -> publisher poses
+  CellThreadSettings threads;
+  PartQueueSettings parts;
 
   template <class Visitor>
   void visit(Visitor& v) {
-    v.fields(thread);
-    v("profile_ring_slots", profile_ring_slots, "recorded profiles queued for publishing",
-      Range{1, 1 << 20});
-    v("part_builders", part_builders, "parts in flight (open, queued, being recognized)",
-      Range{1, 64});
-    v("part_queue_slots", part_queue_slots, "completed parts queued for the recognizer",
-      Range{1, 1024});
-    v("pose_queue_slots", pose_queue_slots, "poses queued for the publisher", Range{1, 4096});
+    v.fields(threads);
+    v.fields(parts);
   }
 };
 

@@ -5,11 +5,13 @@
 #include <cmath>
 #include <set>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "core/input_error.hpp"
 #include "core/io/yaml_input_errors.hpp"
+#include "core/io/yaml_parameter_reader.hpp"
 #include "core/io/yaml_section_reader.hpp"
 #include "firmware_bridge/pixel_format.hpp"
 #include "firmware_bridge/v4l2_camera.hpp"
@@ -20,8 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kMaxLineOffset = 65535;
-constexpr std::int64_t kMaxMicroseconds = 10'000'000;
-constexpr std::int64_t kNanosecondsPerMicrosecond = 1000;
+static_assert(kMaxCameraBuffers == V4l2Camera::kMaxBuffers);
 
 // One of `choices` (text), stored as its index in the enum.
 template <class Enum>
@@ -38,13 +39,6 @@ void read_choice(YamlSectionReader& section, const std::string& key,
   std::string list;
   for (const std::string& choice : choices) list += (list.empty() ? "" : " or ") + choice;
   section.fail(key, "expected " + list + ", got " + describe_yaml_node(node));
-}
-
-void read_microseconds_as_ns(YamlSectionReader& section, const std::string& key,
-                             std::int64_t& field_ns) {
-  std::int64_t value_us = field_ns / kNanosecondsPerMicrosecond;
-  section.read(key, value_us, 0, kMaxMicroseconds);
-  field_ns = value_us * kNanosecondsPerMicrosecond;
 }
 
 // A GPIO line: a name (`ENC_A`), an offset (`17`) or {name | offset, active_low}.
@@ -73,56 +67,45 @@ void read_line(const YamlInputErrors& errors, YamlSectionReader& section, const 
   line.reject_unknown_keys();
 }
 
-void read_camera(YamlSectionReader& section, HardwareConfig& config) {
-  CameraConfig& camera = config.camera;
-  section.read("device", camera.device);
-  if (section.has("pixel_format")) {
-    std::string name;
-    section.read("pixel_format", name);
-    const auto format = parse_pixel_format(name);
-    if (!format) section.fail("pixel_format", "expected GREY, Y10, Y12 or Y16, got '" + name + "'");
-    camera.pixel_format = *format;
-  }
-  section.read("width", camera.width_px, 16, 8192);
-  section.read("height", camera.height_px, 1, 8192);
-  section.read("roi_top", camera.roi_top_px, 0, 8191);
-  section.read("roi_left", camera.roi_left_px, 0, 8191);
-  section.read("exposure_us", camera.exposure_us, 0, static_cast<int>(kMaxMicroseconds));
-  section.read("gain", camera.gain, 0, 1'000'000);
-  section.read("buffer_count", camera.buffer_count, 2, V4l2Camera::kMaxBuffers);
-  section.read("frame_timeout_us", config.frame_timeout_us, 100, kMaxMicroseconds);
-  section.reject_unknown_keys();
-}
+// read_yaml_parameters with one more field type, the GPIO line (a name, an offset or a map),
+// which a simulated chip refuses: it has every line.
+class GpioSectionReader {
+ public:
+  GpioSectionReader(const YamlInputErrors& errors, YamlSectionReader& section,
+                    const GpioConfig& gpio)
+      : errors_(errors), section_(section), gpio_(gpio), fields_(section) {}
 
-constexpr const char* kLineKeys[] = {"encoder_a",    "encoder_b",      "photo_eye",
-                                     "laser_enable", "camera_trigger", "result_ready"};
-
-void read_gpio(const YamlInputErrors& errors, YamlSectionReader& section, GpioConfig& gpio) {
-  section.read("chip", gpio.chip);
-  section.read("consumer", gpio.consumer);
-  const bool simulated = gpio.chip == kSimulatedDevice;
-  if (simulated) {
-    for (const char* key : kLineKeys) {
-      if (section.has(key)) {
-        section.fail(key,
-                     "the simulated chip has every line (encoder A and B, photo eye, "
-                     "laser_enable, camera_trigger, result_ready): remove the key");
+  template <class T>
+  void operator()(const char* key, T& field, const char* description, const Range& range = {}) {
+    if constexpr (std::is_same_v<T, GpioLineRef>) {
+      if (gpio_.chip == kSimulatedDevice && section_.has(key)) {
+        section_.fail(key,
+                      "the simulated chip has every line (encoder A and B, photo eye, "
+                      "laser_enable, result_ready): remove the key");
       }
+      read_line(errors_, section_, key, field);
+    } else {
+      fields_(key, field, description, range);
     }
   }
-  read_line(errors, section, "encoder_a", gpio.encoder_a);
-  read_line(errors, section, "encoder_b", gpio.encoder_b);
-  read_line(errors, section, "photo_eye", gpio.photo_eye);
-  read_line(errors, section, "laser_enable", gpio.laser_enable);
-  read_line(errors, section, "camera_trigger", gpio.camera_trigger);
-  read_line(errors, section, "result_ready", gpio.result_ready);
-  read_choice(section, "encoder_mode", {"quadrature", "step"}, gpio.encoder_mode);
-  read_microseconds_as_ns(section, "debounce_us", gpio.encoder_debounce_ns);
-  read_microseconds_as_ns(section, "photo_eye_debounce_us", gpio.photo_eye_debounce_ns);
-  read_microseconds_as_ns(section, "photo_eye_min_on_us", gpio.photo_eye_min_on_ns);
-  read_microseconds_as_ns(section, "photo_eye_min_off_us", gpio.photo_eye_min_off_ns);
+  template <class T>
+  void fields(T& nested) {
+    visit_parameters(*this, nested);
+  }
+  void retired(const char* key, const char* replacement) { fields_.retired(key, replacement); }
+
+ private:
+  const YamlInputErrors& errors_;
+  YamlSectionReader& section_;
+  const GpioConfig& gpio_;  // its chip is read before its lines
+  YamlParameterReader fields_;
+};
+
+void read_gpio(const YamlInputErrors& errors, YamlSectionReader& section, GpioConfig& gpio) {
+  GpioSectionReader reader(errors, section, gpio);
+  visit_parameters(reader, gpio);
   section.reject_unknown_keys();
-  if (simulated) return;
+  if (gpio.chip == kSimulatedDevice) return;
   if (!gpio.encoder_a.configured())
     section.fail("encoder_a", "missing: the conveyor encoder's line");
   if (gpio.encoder_mode == EncoderMode::kQuadrature && !gpio.encoder_b.configured()) {
@@ -179,7 +162,8 @@ HardwareConfig read_hardware_config(const fs::path& yaml_path) {
   HardwareConfig config;
   config.file = yaml_path;
   YamlSectionReader camera(errors, root["camera"], "camera");
-  read_camera(camera, config);
+  HardwareCameraSection camera_keys = camera_section(config);
+  read_yaml_parameters(camera, camera_keys);
   YamlSectionReader gpio(errors, root["gpio"], "gpio");
   read_gpio(errors, gpio, config.gpio);
   YamlSectionReader stripe(errors, root["stripe"], "stripe");

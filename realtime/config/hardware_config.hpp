@@ -5,14 +5,11 @@
 // configuration (scanner/scanner_config.hpp), shared with the simulated cell, so a simulated and
 // a live cell with one cell.yaml produce profiles on the same grid.
 //
-//   camera:   device, pixel_format (GREY|Y10|Y12|Y16), width, height, roi_top, roi_left,
-//             exposure_us, gain, buffer_count, frame_timeout_us
-//   gpio:     chip, consumer, encoder_a (required), encoder_b (required for quadrature),
-//             encoder_mode (quadrature|step), photo_eye, laser_enable, camera_trigger,
-//             result_ready, debounce_us, photo_eye_debounce_us, photo_eye_min_on_us,
-//             photo_eye_min_off_us
+//   camera:   CameraConfig's visit() keys and frame_timeout_us (HardwareCameraSection)
+//   gpio:     GpioConfig's visit() keys; encoder_a is required, encoder_b too in quadrature
 //   stripe:   method (centre_of_gravity|gaussian_three_point), threshold,
-//             min_peak_intensity, window_half_width_px
+//             min_peak_intensity, window_half_width_px (ranges in the pixel format's levels)
+// docs/parameters.md lists the camera and gpio keys with their defaults and ranges.
 //
 // A line is a name (`ENC_A`), an offset (`17`) or a map {name: ENC_A | offset: 17,
 // active_low: true}. Every section and key but gpio.encoder_a (and encoder_b in quadrature
@@ -53,6 +50,24 @@ struct HardwareConfig {
   bool camera_simulated() const { return camera.device == kSimulatedDevice; }
   bool gpio_simulated() const { return gpio.chip == kSimulatedDevice; }
 };
+
+// The `camera:` section: the camera's keys and the watchdog of a wait for its frames, which
+// the source keeps beside the camera's settings.
+struct HardwareCameraSection {
+  CameraConfig& camera;
+  std::int64_t& frame_timeout_us;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v.fields(camera);
+    v("frame_timeout_us", frame_timeout_us, "the longest wait for a frame, us",
+      Range{100, 10'000'000});
+  }
+};
+
+inline HardwareCameraSection camera_section(HardwareConfig& config) {
+  return {config.camera, config.frame_timeout_us};
+}
 
 HardwareConfig read_hardware_config(const std::filesystem::path& yaml_path);
 

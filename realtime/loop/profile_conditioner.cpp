@@ -6,8 +6,10 @@
 
 namespace cosmos {
 
-ProfileConditioner::ProfileConditioner(const ConditioningParameters& parameters)
+ProfileConditioner::ProfileConditioner(const ConditioningParameters& parameters,
+                                       const SurfaceFitParameters& fit)
     : parameters_(parameters),
+      depth_jump_mm_(static_cast<float>(fit.depth_jump_mm)),
       width_(std::max(1, static_cast<int>(std::floor((parameters.x_max_mm - parameters.x_min_mm) /
                                                      parameters.grid_mm)))) {}
 
@@ -56,7 +58,7 @@ bool ProfileConditioner::condition(const Profile& profile, float* out_z_mm) cons
 void ProfileConditioner::box_average(const Profile& profile, float* out_z_mm) const {
   const int samples = static_cast<int>(profile.width());
   const double g = parameters_.grid_mm;
-  const float jump = static_cast<float>(parameters_.depth_jump_mm);
+  const float jump = depth_jump_mm_;
   for (int k = 0; k < width_; ++k) {
     const double x_center = parameters_.x_min_mm + k * g;
     const int first = std::max(
@@ -94,7 +96,7 @@ void ProfileConditioner::box_average(const Profile& profile, float* out_z_mm) co
 
 void ProfileConditioner::interpolate(const Profile& profile, float* out_z_mm) const {
   const int samples = static_cast<int>(profile.width());
-  const float jump = static_cast<float>(parameters_.depth_jump_mm);
+  const float jump = depth_jump_mm_;
   for (int k = 0; k < width_; ++k) {
     const double u =
         (parameters_.x_min_mm + k * parameters_.grid_mm - profile.x0_mm) / profile.dx_mm;

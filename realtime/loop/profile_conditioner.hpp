@@ -3,8 +3,10 @@
 // deliver up to 3,200 points; COSMOS runs on grid_mm, default 0.4 mm), removal of the belt
 // plane and a height threshold that turns the belt into background (NaN). Box-averages when
 // the sensor is finer than the grid (no aliasing of its noise), interpolates linearly when it
-// is coarser, and never across a depth jump or a gap. No allocation, no branches on the
-// per-point path beyond the validity tests.
+// is coarser, and never across a depth jump or a gap: the COSMOS fit's depth_jump_mm, so the
+// grid is never interpolated across an edge that the fit (§3.5.1) treats as one. No allocation, no
+// branches on the per-point path beyond the validity tests.
+#include "core/cosmos_parameters.hpp"  // SurfaceFitParameters
 #include "core/profile.hpp"
 #include "scanner/conditioning_parameters.hpp"  // ConditioningParameters
 
@@ -12,7 +14,8 @@ namespace cosmos {
 
 class ProfileConditioner {
  public:
-  explicit ProfileConditioner(const ConditioningParameters& parameters);
+  // `fit`: the COSMOS fit the conditioned rows go to (the model base's), for its depth jump.
+  ProfileConditioner(const ConditioningParameters& parameters, const SurfaceFitParameters& fit);
 
   int width() const { return width_; }
   double x0_mm() const { return parameters_.x_min_mm; }
@@ -26,6 +29,7 @@ class ProfileConditioner {
   void interpolate(const Profile& profile, float* out_z_mm) const;
 
   ConditioningParameters parameters_;
+  float depth_jump_mm_;
   int width_;
 };
 

@@ -21,13 +21,13 @@ bool PartBuilder::owns(std::int64_t id) const {
 
 ScanLoop::ScanLoop(const ScanLoopSettings& settings)
     : settings_(settings),
-      conditioner_(settings.conditioning),
+      conditioner_(settings.conditioning, settings.cosmos.fit),
       tracker_(settings.tracking, conditioner_.width()),
-      completed_(static_cast<std::size_t>(std::max(settings.part_queue_slots, 1))),
-      returned_(static_cast<std::size_t>(std::max(settings.builders, 1))),
+      completed_(static_cast<std::size_t>(std::max(settings.parts.part_queue_slots, 1))),
+      returned_(static_cast<std::size_t>(std::max(settings.parts.builders, 1))),
       row_belt_(static_cast<std::size_t>(conditioner_.width())),
       row_loop_(static_cast<std::size_t>(conditioner_.width())) {
-  for (int b = 0; b < std::max(settings.builders, 1); ++b) {
+  for (int b = 0; b < std::max(settings.parts.builders, 1); ++b) {
     builders_.push_back(std::make_unique<PartBuilder>(settings.cosmos, conditioner_.width(),
                                                       settings.max_part_rows,
                                                       settings.conditioning.grid_mm));

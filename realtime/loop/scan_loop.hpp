@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "core/cosmos_parameters.hpp"
+#include "core/parameter_visitor.hpp"
 #include "core/profile.hpp"
 #include "realtime/loop/incremental_cosmos.hpp"
 #include "realtime/loop/part_tracker.hpp"
@@ -55,17 +56,29 @@ struct PartBuilder {
   bool owns(std::int64_t id) const;
 };
 
-struct ScanLoopSettings {
-  ConditioningParameters conditioning;
-  PartTrackerParameters tracking = cell_part_tracking();
-  CosmosParameters cosmos;
-  int max_part_rows = 750;  // 300 mm at 0.4 mm
+// The loop's part builders and its queue to the recognizer (keys of the cell's `realtime:`).
+struct PartQueueSettings {
   // Parts in flight (open, queued and being recognized). A part that starts while every
   // builder is taken is dropped, so there must be enough for the parts that arrive during
   // the slowest recognitions, not just the typical ones (PacedReplayLatency in
   // bench/scan_loop_bench.cpp counts parts_dropped at the default cell's pace).
   int builders = 8;
-  int part_queue_slots = 8;
+  int part_queue_slots = 8;  // loop -> recognizer completed parts
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("part_builders", builders, "parts in flight (open, queued, being recognized)", Range{1, 64});
+    v("part_queue_slots", part_queue_slots, "completed parts queued for the recognizer",
+      Range{1, 1024});
+  }
+};
+
+struct ScanLoopSettings {
+  ConditioningParameters conditioning;
+  PartTrackerParameters tracking = cell_part_tracking();
+  CosmosParameters cosmos;
+  int max_part_rows = 750;  // 300 mm at 0.4 mm
+  PartQueueSettings parts;
   // false (paced and hardware sources): a part that finds no free builder or queue slot is
   // dropped and counted. true (unpaced test and replay runs, no deadlines to keep): the loop
   // waits for the recognizer instead, so every part is recognized whatever the timing.

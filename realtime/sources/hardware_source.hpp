@@ -29,7 +29,7 @@
 // each announcement into one pulse of result_ready: raised at the next frame, lowered at the
 // frame after, and low for at least a frame before the next pulse. Pulses still owed when
 // the stream ends are not sent.
-// camera_trigger is not driven: the camera runs free.
+// The camera runs free: no output triggers it.
 #include <atomic>
 #include <cstdint>
 #include <memory>

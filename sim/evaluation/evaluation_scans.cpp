@@ -86,19 +86,22 @@ std::vector<EvaluationTest> evaluation_plan(const std::vector<EvaluationPart>& p
 
 RangeImage scan_evaluation_test(const EvaluationTest& test,
                                 const std::vector<EvaluationPart>& parts,
-                                const ScannerParameters& scanner) {
+                                const ScannerParameters& scanner,
+                                const ConditioningParameters& conditioning) {
   const EvaluationPart& part = parts[static_cast<std::size_t>(test.part)];
   ScannerParameters noisy = scanner;
   noisy.seed = mix_seed(test.seed, 1);
-  return scan_single_part(part.mesh, part.name, random_rotation(mix_seed(test.seed, 0)), noisy);
+  return scan_single_part(part.mesh, part.name, random_rotation(mix_seed(test.seed, 0)), noisy,
+                          conditioning);
 }
 
 EvaluationRecord run_evaluation_test(const EvaluationTest& test,
                                      const std::vector<EvaluationPart>& parts,
-                                     const ScannerParameters& scanner, const Recognizer& recognizer,
-                                     const ModelBase& base) {
+                                     const ScannerParameters& scanner,
+                                     const ConditioningParameters& conditioning,
+                                     const Recognizer& recognizer, const ModelBase& base) {
   const EvaluationPart& part = parts[static_cast<std::size_t>(test.part)];
-  const RangeImage image = scan_evaluation_test(test, parts, scanner);
+  const RangeImage image = scan_evaluation_test(test, parts, scanner, conditioning);
   const RecognitionResult result = recognizer.recognize(image);
 
   EvaluationRecord record;

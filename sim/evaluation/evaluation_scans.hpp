@@ -15,6 +15,7 @@
 
 #include "core/modelbase/model_base.hpp"
 #include "core/recognition/recognizer.hpp"
+#include "scanner/conditioning_parameters.hpp"
 #include "scanner/scanner_model.hpp"
 #include "sim/evaluation/evaluation_metrics.hpp"
 #include "sim/mesh.hpp"
@@ -47,15 +48,18 @@ std::vector<EvaluationPart> evaluation_parts(const ModelBase& base, const PartCa
 std::vector<EvaluationTest> evaluation_plan(const std::vector<EvaluationPart>& parts, int tests,
                                             std::uint64_t seed);
 
-// The test's scan: its part in the test's random pose, with the test's noise.
+// The test's scan: its part in the test's random pose, with the test's noise, losing the belt
+// at the conditioning's threshold (that of the base's views).
 RangeImage scan_evaluation_test(const EvaluationTest& test,
                                 const std::vector<EvaluationPart>& parts,
-                                const ScannerParameters& scanner);
+                                const ScannerParameters& scanner,
+                                const ConditioningParameters& conditioning);
 
 // Scans the test's part and recognizes it. Thread-safe: everything shared is read-only.
 EvaluationRecord run_evaluation_test(const EvaluationTest& test,
                                      const std::vector<EvaluationPart>& parts,
-                                     const ScannerParameters& scanner, const Recognizer& recognizer,
-                                     const ModelBase& base);
+                                     const ScannerParameters& scanner,
+                                     const ConditioningParameters& conditioning,
+                                     const Recognizer& recognizer, const ModelBase& base);
 
 }  // namespace cosmos

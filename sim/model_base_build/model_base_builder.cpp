@@ -109,7 +109,7 @@ void run_worker(BuildJobs& jobs) {
         renderer = std::make_unique<ModelViewRenderer>(
             jobs.meshes[static_cast<std::size_t>(part)],
             jobs.catalog.parts[static_cast<std::size_t>(part)].name, jobs.scanner,
-            kViewSphereSubdivisions);
+            jobs.settings.conditioning, kViewSphereSubdivisions);
         renderer_part = part;
       }
       analyze_job(jobs.settings, *renderer, part, view_index, jobs.results[job]);
@@ -184,10 +184,7 @@ ModelBase build_model_base(const PartCatalog& catalog, const ScannerParameters& 
                           mesh_diameter_mm(meshes.back()), entry.symmetric});
   }
 
-  // Model views are cut from the belt like live scans: at the conditioning's threshold.
-  ScannerParameters view_scanner = scanner;
-  view_scanner.background_height_mm = settings.conditioning.height_threshold_mm;
-  BuildJobs jobs(catalog, meshes, view_scanner, settings);
+  BuildJobs jobs(catalog, meshes, scanner, settings);
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const int threads = std::clamp(settings.threads > 0 ? settings.threads : cores, 1,
                                  std::max(1, static_cast<int>(jobs.results.size())));

@@ -39,9 +39,9 @@ SimulatedGpioLines::SimulatedGpioLines(const SimulatedConveyor& conveyor,
       config_(config),
       beam_(beam_interruptions_of(conveyor, settings.photo_eye_y_mm)),
       decoder_(GpioInputParameters{
-          {config.encoder_mode, config.encoder_debounce_ns, /*has_direction_line=*/true},
-          {config.photo_eye_debounce_ns, config.photo_eye_min_on_ns,
-           config.photo_eye_min_off_ns}}) {
+          {config.encoder_mode, config.encoder_debounce_ns(), /*has_direction_line=*/true},
+          {config.photo_eye_debounce_ns(), config.photo_eye_min_on_ns(),
+           config.photo_eye_min_off_ns()}}) {
   // Parts that overlap along the belt interrupt the beam as one.
   for (const BeamInterruption& interruption : beam_) {
     if (!beam_edges_.empty() && interruption.enter_tick <= beam_edges_.back().tick) {

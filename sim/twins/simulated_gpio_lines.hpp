@@ -17,8 +17,8 @@
 // a placed part's bounding box spans it. At the default 0 the beam lies in the laser sheet,
 // so a part is present exactly over the ticks of the profiles that scan it.
 //
-// Outputs: the simulated chip has every line (encoder A/B, photo eye, laser enable, camera
-// trigger, result ready), so set_output() is kOk once started; each write is recorded with
+// Outputs: the simulated chip has every line (encoder A/B, photo eye, laser enable, result
+// ready), so set_output() is kOk once started; each write is recorded with
 // the clock's time and frame. The line names of a GpioConfig are not used.
 //
 // Deterministic: everything follows from the conveyor and the clock, nothing from the wall
@@ -86,7 +86,7 @@ class SimulatedGpioLines final : public GpioLines {
   void clear_output_writes() noexcept { writes_.clear(); }
 
  private:
-  static constexpr std::size_t kOutputCount = 3;
+  static constexpr std::size_t kOutputCount = 2;
 
   struct BeamEdge {
     std::int64_t tick = 0;

@@ -26,11 +26,14 @@ TEST(ParameterDocs, TheCommittedFileIsWhatTheStructsDeclare) {
   EXPECT_EQ(run.out, committed)
       << "docs/parameters.md is stale: build/apps/cosmos config docs > docs/parameters.md";
   // Every section of the cell config and of the model base has its table.
-  for (const char* section :
-       {"`scanner`", "`cell`", "`conditioning`", "`tracking`", "`lcm`", "`realtime`",
-        "`sim_source`", "`cosmos`", "`registration`", "`grouping`", "`recognition`"})
+  for (const char* section : {"`scanner`", "`cell`", "`conditioning`", "`tracking`", "`lcm`",
+                              "`realtime`", "`sim_source`", "`camera`", "`gpio`", "`cosmos`",
+                              "`registration`", "`grouping`", "`recognition`"})
     EXPECT_NE(run.out.find(std::string("### ") + section), std::string::npos) << section;
   EXPECT_NE(run.out.find("| `smoothing.iterations` | `15` |"), std::string::npos);
+  EXPECT_NE(run.out.find("| `buffer_count` | `4` | driver buffers | [2, 16] |"), std::string::npos);
+  EXPECT_NE(run.out.find("| `photo_eye_min_off_us` | `20000` |"), std::string::npos);
+  EXPECT_EQ(run.out.find("camera_trigger"), std::string::npos);
   EXPECT_NE(run.out.find("Retired: `depth_jump_mm`, replaced by cosmos.fit.depth_jump_mm"),
             std::string::npos);
 }

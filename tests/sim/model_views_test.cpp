@@ -16,7 +16,7 @@ namespace {
 TEST(ModelViews, ViewsFaceTheScannerAndMatchTheIdealRender) {
   const TriangleMesh box = make_box(30.0, 20.0, 12.0);
   ScannerParameters parameters;
-  ModelViewRenderer renderer(box, "box", parameters);
+  ModelViewRenderer renderer(box, "box", parameters, ConditioningParameters{});
   ASSERT_EQ(renderer.view_count(), 320);
   for (const int index : {0, 57, 190, 319}) {
     SCOPED_TRACE(index);
@@ -35,7 +35,9 @@ TEST(ModelViews, ViewsFaceTheScannerAndMatchTheIdealRender) {
     double sum_squares = 0.0;
     for (int j = 0; j < ideal.height(); ++j) {
       for (int i = 0; i < ideal.width(); ++i) {
-        if (!ideal.has_data(i, j) || ideal.z_mm(i, j) < parameters.background_height_mm) continue;
+        if (!ideal.has_data(i, j) ||
+            ideal.z_mm(i, j) < ConditioningParameters{}.height_threshold_mm)
+          continue;
         ++ideal_part;
         if (!view.image.has_data(i, j)) continue;
         ++both;
@@ -55,7 +57,8 @@ TEST(ModelViews, ViewsFaceTheScannerAndMatchTheIdealRender) {
 }
 
 TEST(ModelViews, ViewsRepeatByteForByte) {
-  ModelViewRenderer renderer(make_icosphere(10.0, 3), "ball", ScannerParameters{}, 1);
+  ModelViewRenderer renderer(make_icosphere(10.0, 3), "ball", ScannerParameters{},
+                             ConditioningParameters{}, 1);
   ASSERT_EQ(renderer.view_count(), 80);
   const ModelView a = renderer.scan_view(3);
   const ModelView again = renderer.scan_view(3);

@@ -29,7 +29,7 @@ inline std::unique_ptr<ConveyorScene> single_part_scene(const TriangleMesh& mesh
 inline RangeImage scan(const ConveyorScene& scene, const ScannerParameters& parameters,
                        ScanMode mode = ScanMode::kProfile) {
   SimulatedScanner scanner(scene, parameters, mode);
-  return scan_range_image(scene, scanner);
+  return scan_range_image(scene, scanner, ConditioningParameters{});
 }
 
 // Raw profiles (belt included, no background removal) in exposure order, with the belt-frame

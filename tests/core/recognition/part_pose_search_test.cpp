@@ -44,7 +44,8 @@ class PartPoseSearch : public ::testing::Test {
     const PartEntry& entry = catalog_->at(name);
     const TriangleMesh mesh = load_mesh(entry.mesh_path, entry.size_mm);
     Scan result;
-    result.image = scan_single_part(mesh, name, random_rotation(seed), ScannerParameters{});
+    result.image = scan_single_part(mesh, name, random_rotation(seed), ScannerParameters{},
+                                    ConditioningParameters{});
     const ViewAnalysis analysis = analyze_view(result.image, CosmosParameters{});
     RegistrationPointParameters points = RecognitionParameters{}.scene_points;
     points.stride_px = 2;

@@ -50,7 +50,7 @@ class RecognizerOnRegressionBase : public ::testing::Test {
     const TriangleMesh mesh = mesh_of(name);
     ScannerParameters scanner;
     scanner.seed = seed;
-    return scan_single_part(mesh, name, random_rotation(seed), scanner);
+    return scan_single_part(mesh, name, random_rotation(seed), scanner, ConditioningParameters{});
   }
 
   static double degrees(double radians) { return radians * 180 / std::numbers::pi; }

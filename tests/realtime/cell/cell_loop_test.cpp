@@ -106,8 +106,8 @@ TEST_F(CellLoop, ReplayedStreamGivesByteIdenticalPosesWithASlowWorker) {
     ASSERT_EQ(source.start(), SourceStatus::kOk);
     ScanLoop loop(loop_settings());
     CellRunSettings settings = unpaced(true);
-    settings.publish_profiles = true;
-    settings.profile_ring_slots = 8;  // a publisher far behind must still lose no profile
+    settings.publishing.publish_profiles = true;
+    settings.threads.profile_ring_slots = 8;  // a publisher far behind must still lose no profile
     const CellRunSummary summary = run_cell(source, loop, context(loop), live, settings);
     ASSERT_EQ(summary.profiles_dropped, 0);
     ASSERT_EQ(static_cast<std::int64_t>(live.profiles.size()), summary.profiles);
@@ -211,7 +211,7 @@ TEST_F(CellLoop, ProcessingAProfileAllocatesNothingAfterWarmUp) {
   ASSERT_EQ(source.start(), SourceStatus::kOk);
   ScanLoopSettings settings = loop_settings();
   settings.wait_for_recognizer = false;
-  settings.builders = 2;
+  settings.parts.builders = 2;
   ScanLoop loop(settings);
   Profile profile;
   source.reserve(profile);

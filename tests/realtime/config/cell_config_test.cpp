@@ -72,16 +72,16 @@ TEST_F(CellConfigFile, ShippedConfigHoldsTheDocumentedDefaults) {
   EXPECT_EQ(config.lcm.pose_channel, "COSMOS_POSE");
   EXPECT_EQ(config.lcm.status_channel, "COSMOS_STATUS");
   EXPECT_EQ(config.lcm.profile_channel, "COSMOS_PROFILE");
-  EXPECT_FALSE(config.lcm.publish_profiles);
-  EXPECT_EQ(config.lcm.status_period_s, 1.0);
+  EXPECT_FALSE(config.lcm.publishing.publish_profiles);
+  EXPECT_EQ(config.lcm.publishing.status_period_s, 1.0);
 
-  EXPECT_EQ(config.realtime.thread.sched_fifo_priority, 0);
-  EXPECT_EQ(config.realtime.thread.cpu, -1);
-  EXPECT_FALSE(config.realtime.thread.lock_memory);
-  EXPECT_EQ(config.realtime.profile_ring_slots, 4096);
-  EXPECT_EQ(config.realtime.part_builders, 8);
-  EXPECT_EQ(config.realtime.part_queue_slots, 8);
-  EXPECT_EQ(config.realtime.pose_queue_slots, 32);
+  EXPECT_EQ(config.realtime.threads.thread.sched_fifo_priority, 0);
+  EXPECT_EQ(config.realtime.threads.thread.cpu, -1);
+  EXPECT_FALSE(config.realtime.threads.thread.lock_memory);
+  EXPECT_EQ(config.realtime.threads.profile_ring_slots, 4096);
+  EXPECT_EQ(config.realtime.parts.builders, 8);
+  EXPECT_EQ(config.realtime.parts.part_queue_slots, 8);
+  EXPECT_EQ(config.realtime.threads.pose_queue_slots, 32);
 
   EXPECT_EQ(config.sim_source.parts, 20);
   EXPECT_EQ(config.sim_source.seed, 7u);
@@ -116,7 +116,7 @@ TEST_F(CellConfigFile, EveryFieldOfEverySectionRoundTrips) {
 TEST_F(CellConfigFile, EmptyFileGivesTheDefaultsWithTheCatalogBesideIt) {
   const CellConfig config = load_cell_config(write(""));
   EXPECT_EQ(config.cell.catalog, dir_ / "parts.yaml");
-  EXPECT_EQ(config.realtime.profile_ring_slots, 4096);
+  EXPECT_EQ(config.realtime.threads.profile_ring_slots, 4096);
   EXPECT_EQ(config.scanner.points_per_profile, 640);
 }
 
@@ -159,13 +159,13 @@ TEST_F(CellConfigFile, ReadsEveryKindOfValue) {
   EXPECT_EQ(config.lcm.url, "udpm://239.255.76.67:7667?ttl=1");
   EXPECT_EQ(config.lcm.pose_channel, "POSES");
   EXPECT_EQ(config.lcm.status_channel, "COSMOS_STATUS");
-  EXPECT_TRUE(config.lcm.publish_profiles);
-  EXPECT_EQ(config.lcm.status_period_s, 0.5);
-  EXPECT_EQ(config.realtime.thread.sched_fifo_priority, 80);
-  EXPECT_EQ(config.realtime.thread.cpu, 1);
-  EXPECT_TRUE(config.realtime.thread.lock_memory);
-  EXPECT_EQ(config.realtime.part_builders, 3);
-  EXPECT_EQ(config.realtime.part_queue_slots, 4);
+  EXPECT_TRUE(config.lcm.publishing.publish_profiles);
+  EXPECT_EQ(config.lcm.publishing.status_period_s, 0.5);
+  EXPECT_EQ(config.realtime.threads.thread.sched_fifo_priority, 80);
+  EXPECT_EQ(config.realtime.threads.thread.cpu, 1);
+  EXPECT_TRUE(config.realtime.threads.thread.lock_memory);
+  EXPECT_EQ(config.realtime.parts.builders, 3);
+  EXPECT_EQ(config.realtime.parts.part_queue_slots, 4);
   EXPECT_EQ(config.sim_source.parts, 3);
   EXPECT_EQ(config.sim_source.seed, 18446744073709551615ULL);
   EXPECT_EQ(config.sim_source.pose, PoseMode::kResting);

@@ -50,10 +50,9 @@ TEST_F(HardwareConfigTest, TheExampleFileReadsAsItReads) {
   EXPECT_TRUE(config.gpio.photo_eye.name.empty());
   EXPECT_EQ(config.gpio.photo_eye.offset, 17);
   EXPECT_EQ(config.gpio.laser_enable.name, "LASER_EN");
-  EXPECT_EQ(config.gpio.camera_trigger.name, "CAM_TRIG");
   EXPECT_EQ(config.gpio.result_ready.name, "RESULT_RDY");
-  EXPECT_EQ(config.gpio.encoder_debounce_ns, 2000);
-  EXPECT_EQ(config.gpio.photo_eye_debounce_ns, 1'000'000);
+  EXPECT_EQ(config.gpio.encoder_debounce_ns(), 2000);
+  EXPECT_EQ(config.gpio.photo_eye_debounce_ns(), 1'000'000);
   EXPECT_EQ(config.stripe.threshold, 20);
   EXPECT_EQ(config.stripe.min_peak_intensity, 40);
   EXPECT_EQ(config.stripe.saturation_level, 255);
@@ -73,7 +72,7 @@ TEST_F(HardwareConfigTest, LinesStripeAndDeepPixelFormats) {
   EXPECT_EQ(config.gpio.encoder_mode, EncoderMode::kStep);
   EXPECT_EQ(config.gpio.photo_eye.name, "EYE");
   EXPECT_FALSE(config.gpio.photo_eye.active_low);
-  EXPECT_EQ(config.gpio.photo_eye_min_off_ns, 7000);
+  EXPECT_EQ(config.gpio.photo_eye_min_off_ns(), 7000);
   EXPECT_EQ(config.stripe.method, StripePeakMethod::kGaussianThreePoint);
   EXPECT_EQ(config.stripe.window_half_width_px, 5);
   // 8-bit defaults 20 and 40 of 255, as the same fractions of 4095.
@@ -94,7 +93,7 @@ TEST_F(HardwareConfigTest, TheSimulatedTwinsFileReadsAsItReads) {
   EXPECT_EQ(config.camera.roi_left_px, 0);
   EXPECT_EQ(config.gpio.encoder_mode, EncoderMode::kQuadrature);
   EXPECT_FALSE(config.gpio.encoder_a.configured());  // the simulated chip names no lines
-  EXPECT_EQ(config.gpio.encoder_debounce_ns, 2000);
+  EXPECT_EQ(config.gpio.encoder_debounce_ns(), 2000);
   EXPECT_EQ(config.stripe.method, StripePeakMethod::kCentreOfGravity);
   EXPECT_EQ(config.stripe.threshold, 20);
   EXPECT_EQ(config.stripe.min_peak_intensity, 43);
@@ -114,7 +113,7 @@ TEST_F(HardwareConfigTest, HalfSimulatedFilesAndLinesOfTheSimulatedChipAreRefuse
                      "  photo_eye: 17\n"),
             at(5) +
                 ": gpio.photo_eye: the simulated chip has every line (encoder A and B, photo "
-                "eye, laser_enable, camera_trigger, result_ready): remove the key");
+                "eye, laser_enable, result_ready): remove the key");
   const HardwareConfig both = read_hardware_config(
       write("camera:\n  device: simulated\ngpio:\n  chip: simulated\n  encoder_mode: step\n"));
   EXPECT_TRUE(both.camera_simulated());
@@ -152,6 +151,12 @@ TEST_F(HardwareConfigTest, BadKeysTypesAndRangesNameFileLineAndKey) {
             at(5) + ": stripe.threshold: min_peak_intensity (40) must exceed threshold (60)");
   EXPECT_EQ(error_of(gpio + "stripe:\n  threshold: 255\n"),
             at(5) + ": stripe.threshold: must be in [0, 254], got 255");
+  // The camera runs free: an old file's trigger line is a key the section does not have.
+  EXPECT_EQ(error_of(gpio + "  camera_trigger: CAM_TRIG\n"),
+            at(4) +
+                ": gpio.camera_trigger: unknown key (known: chip, consumer, debounce_us, "
+                "encoder_a, encoder_b, encoder_mode, laser_enable, photo_eye, "
+                "photo_eye_debounce_us, photo_eye_min_off_us, photo_eye_min_on_us, result_ready)");
   EXPECT_EQ(error_of(gpio + "lights: on\n"),
             at(4) + ": lights: unknown section (known: camera, gpio, stripe)");
   EXPECT_EQ(error_of("camera: [1, 2]\n" + gpio), at(1) + ": camera: expected a map, got a list");

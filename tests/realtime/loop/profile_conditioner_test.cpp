@@ -49,7 +49,7 @@ void expect_ramp(const std::vector<float>& z, const ProfileConditioner& conditio
 }
 
 TEST(ProfileConditioner, FineSensorIsBoxAveragedOntoTheGrid) {
-  const ProfileConditioner conditioner(belt_at_2mm());
+  const ProfileConditioner conditioner(belt_at_2mm(), SurfaceFitParameters{});
   ASSERT_EQ(conditioner.width(), 640);
   std::vector<float> z(conditioner.width());
   conditioner.condition(sensor_profile(3200), z.data());
@@ -57,14 +57,14 @@ TEST(ProfileConditioner, FineSensorIsBoxAveragedOntoTheGrid) {
 }
 
 TEST(ProfileConditioner, CoarseSensorIsInterpolated) {
-  const ProfileConditioner conditioner(belt_at_2mm());
+  const ProfileConditioner conditioner(belt_at_2mm(), SurfaceFitParameters{});
   std::vector<float> z(conditioner.width());
   conditioner.condition(sensor_profile(320), z.data());
   expect_ramp(z, conditioner);
 }
 
 TEST(ProfileConditioner, NeverInterpolatesAcrossAJumpOrAGap) {
-  const ProfileConditioner conditioner(belt_at_2mm());
+  const ProfileConditioner conditioner(belt_at_2mm(), SurfaceFitParameters{});
   Profile profile = sensor_profile(320);  // 0.8 mm samples
   for (int i = 0; i < 320; ++i) profile.z_mm[i] = profile.x_mm(i) < 0 ? 10.0f : 20.0f;
   profile.z_mm[250] = Profile::kNoData;
@@ -82,7 +82,7 @@ TEST(ProfileConditioner, NeverInterpolatesAcrossAJumpOrAGap) {
 }
 
 TEST(ProfileConditioner, AProfileWithoutUsableSpacingOrOriginGivesNoData) {
-  const ProfileConditioner conditioner(belt_at_2mm());
+  const ProfileConditioner conditioner(belt_at_2mm(), SurfaceFitParameters{});
   const double infinity = std::numeric_limits<double>::infinity();
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (const double dx_mm : {0.0, 1e-300, -0.5, infinity, nan}) {
@@ -113,6 +113,21 @@ TEST(ProfileConditioner, AProfileWithoutUsableSpacingOrOriginGivesNoData) {
   std::vector<float> z(static_cast<std::size_t>(conditioner.width()));
   EXPECT_TRUE(conditioner.condition(sensor_profile(1280), z.data()));
   expect_ramp(z, conditioner);
+}
+
+// The jump is the COSMOS fit's: with a fit that takes a 10 mm step as one surface, the grid
+// is interpolated across it too.
+TEST(ProfileConditioner, TakesTheDepthJumpFromTheFit) {
+  SurfaceFitParameters fit;
+  fit.depth_jump_mm = 15.0;
+  const ProfileConditioner conditioner(belt_at_2mm(), fit);
+  Profile profile = sensor_profile(320);  // 0.8 mm samples, the step between two of them
+  for (int i = 0; i < 320; ++i) profile.z_mm[i] = profile.x_mm(i) < 0 ? 10.0f : 20.0f;
+  std::vector<float> z(conditioner.width());
+  conditioner.condition(profile, z.data());
+  int between = 0;
+  for (int k = 0; k < conditioner.width(); ++k) between += z[k] > 8.5f && z[k] < 17.5f ? 1 : 0;
+  EXPECT_EQ(between, 2);  // the grid points x = ±0.2 mm, between the samples at ±0.4 mm
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/input_error.hpp"
+#include "scanner/conditioning_parameters.hpp"
 #include "sim/procedural_meshes.hpp"
 #include "tests/realtime/lcm_test_messages.hpp"
 #include "tests/realtime/source_stream.hpp"
@@ -111,7 +112,7 @@ TEST(SimulatedSource, PartsAppearInTheAnnouncedRangesWithEmptyBeltBetween) {
   std::vector<std::int64_t> first_data(parts.size(), -1);
   std::vector<std::int64_t> last_data(parts.size(), -1);
   for (std::size_t k = 0; k < profiles.size(); ++k) {
-    const int above = samples_above_belt(profiles[k], parameters.background_height_mm);
+    const int above = samples_above_belt(profiles[k], ConditioningParameters{}.height_threshold_mm);
     const auto index = static_cast<std::int64_t>(k);
     int owner = -1;
     for (std::size_t i = 0; i < parts.size(); ++i) {
@@ -203,7 +204,7 @@ TEST(SimulatedSource, CameraModeRunsTheFramePath) {
   int on_top = 0;
   for (const float z : middle.z_mm) on_top += std::abs(z - top_mm) < 0.2 ? 1 : 0;
   EXPECT_GT(on_top, 10) << "the brick's top face at " << top_mm << " mm";
-  EXPECT_EQ(samples_above_belt(profiles.front(), parameters.background_height_mm), 0);
+  EXPECT_EQ(samples_above_belt(profiles.front(), ConditioningParameters{}.height_threshold_mm), 0);
 }
 
 // A catalog of two small OFF meshes written here and one whose file does not exist: only
