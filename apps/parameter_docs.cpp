@@ -52,14 +52,15 @@ std::string parameters_markdown() {
       "`gpio.encoder_b` too in quadrature mode. A line is a name (`ENC_A`), an offset (`17`) "
       "or a map `{name: ENC_A | offset: 17, active_low: true}`. `camera.device: simulated` with "
       "`gpio.chip: simulated` selects the hardware twins (config/hardware-sim.yaml), whose chip "
-      "takes no line keys. The `stripe:` section (method, threshold, min_peak_intensity, "
-      "window_half_width_px) is in the camera's grey levels, its defaults scaled to the pixel "
-      "format: see realtime/config/hardware_config.hpp.\n");
+      "takes no line keys. The `stripe:` levels are the camera's grey levels: the defaults "
+      "below are 8-bit levels, scaled to the pixel format's full scale, which also bounds "
+      "them.\n");
   HardwareConfig hardware;
   SectionDocs hardware_sections(text);
   hardware_sections("camera", camera_section(hardware),
                     "the V4L2 camera that images the laser line");
   hardware_sections("gpio", hardware.gpio, "the conveyor encoder, the photo eye and the outputs");
+  hardware_sections("stripe", hardware.stripe, "the laser stripe's extraction from each frame");
 
   text.append(
       "\n## Model base\n\n"

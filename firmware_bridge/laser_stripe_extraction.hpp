@@ -9,7 +9,10 @@
 // acquisition thread: no allocation after the first frame, no exceptions.
 #include <cstdint>
 #include <opencv2/core/mat.hpp>
+#include <span>
 #include <vector>
+
+#include "core/parameter_visitor.hpp"
 
 namespace cosmos {
 
@@ -21,6 +24,13 @@ enum class StripePeakMethod : std::uint8_t {
   // without background, uses three pixels only.
   kGaussianThreePoint,
 };
+
+inline std::span<const ParameterChoice<StripePeakMethod>> parameter_choices(StripePeakMethod) {
+  static constexpr ParameterChoice<StripePeakMethod> kChoices[] = {
+      {StripePeakMethod::kCentreOfGravity, "centre_of_gravity"},
+      {StripePeakMethod::kGaussianThreePoint, "gaussian_three_point"}};
+  return kChoices;
+}
 
 struct StripeExtractionParameters {
   StripePeakMethod method = StripePeakMethod::kCentreOfGravity;
@@ -35,6 +45,19 @@ struct StripeExtractionParameters {
   // Intensity at which the sensor clips. 0 = the maximum of the frame's type (255 or 65535);
   // a 10- or 12-bit sensor delivered in 16-bit words sets 1023 or 4095.
   int saturation_level = 0;
+
+  // The keys of a hardware YAML's `stripe:` section. The ranges are a 16-bit frame's; the
+  // reader narrows them to its pixel format's full scale, from which saturation_level comes.
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("method", method, "centre_of_gravity, or gaussian_three_point (exact for a Gaussian)");
+    v("threshold", threshold, "grey level at or below which a pixel has no weight",
+      Range{0, 65534});
+    v("min_peak_intensity", min_peak_intensity, "a dimmer column maximum is no stripe",
+      Range{1, 65535});
+    v("window_half_width_px", window_half_width_px,
+      "rows either side of the maximum the peak may use", Range{1, 64});
+  }
 };
 
 // Sensor coordinates of pixel (0, 0) of a frame: cameras deliver region-of-interest frames,

@@ -24,23 +24,6 @@ namespace fs = std::filesystem;
 constexpr int kMaxLineOffset = 65535;
 static_assert(kMaxCameraBuffers == V4l2Camera::kMaxBuffers);
 
-// One of `choices` (text), stored as its index in the enum.
-template <class Enum>
-void read_choice(YamlSectionReader& section, const std::string& key,
-                 const std::vector<std::string>& choices, Enum& field) {
-  const YAML::Node node = section.value(key);
-  if (!node.IsDefined()) return;
-  for (std::size_t i = 0; i < choices.size(); ++i) {
-    if (node.IsScalar() && node.Scalar() == choices[i]) {
-      field = static_cast<Enum>(i);
-      return;
-    }
-  }
-  std::string list;
-  for (const std::string& choice : choices) list += (list.empty() ? "" : " or ") + choice;
-  section.fail(key, "expected " + list + ", got " + describe_yaml_node(node));
-}
-
 // A GPIO line: a name (`ENC_A`), an offset (`17`) or {name | offset, active_low}.
 void read_line(const YamlInputErrors& errors, YamlSectionReader& section, const std::string& key,
                GpioLineRef& ref) {
@@ -123,11 +106,16 @@ void read_stripe(YamlSectionReader& section, PixelFormat format,
   stripe.threshold = scaled(stripe.threshold);
   stripe.min_peak_intensity = scaled(stripe.min_peak_intensity);
   stripe.saturation_level = full_scale;
-  read_choice(section, "method", {"centre_of_gravity", "gaussian_three_point"}, stripe.method);
-  section.read("threshold", stripe.threshold, 0, full_scale - 1);
-  section.read("min_peak_intensity", stripe.min_peak_intensity, 1, full_scale);
-  section.read("window_half_width_px", stripe.window_half_width_px, 1, 64);
-  section.reject_unknown_keys();
+  read_yaml_parameters(section, stripe);
+  // The declared ranges are a 16-bit frame's; this format's full scale bounds them further.
+  const auto within_full_scale = [&](const char* key, int value, int low, int high) {
+    if (value < low || value > high)
+      section.fail(key, "must be in [" + std::to_string(low) + ", " + std::to_string(high) +
+                            "] for " + std::string(pixel_format_name(format)) + ", got " +
+                            std::to_string(value));
+  };
+  within_full_scale("threshold", stripe.threshold, 0, full_scale - 1);
+  within_full_scale("min_peak_intensity", stripe.min_peak_intensity, 1, full_scale);
   if (stripe.min_peak_intensity <= stripe.threshold) {
     section.fail(section.has("min_peak_intensity") ? "min_peak_intensity" : "threshold",
                  "min_peak_intensity (" + std::to_string(stripe.min_peak_intensity) +

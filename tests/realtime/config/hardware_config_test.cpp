@@ -150,7 +150,7 @@ TEST_F(HardwareConfigTest, BadKeysTypesAndRangesNameFileLineAndKey) {
   EXPECT_EQ(error_of(gpio + "stripe:\n  threshold: 60\n"),
             at(5) + ": stripe.threshold: min_peak_intensity (40) must exceed threshold (60)");
   EXPECT_EQ(error_of(gpio + "stripe:\n  threshold: 255\n"),
-            at(5) + ": stripe.threshold: must be in [0, 254], got 255");
+            at(5) + ": stripe.threshold: must be in [0, 254] for GREY, got 255");
   // The camera runs free: an old file's trigger line is a key the section does not have.
   EXPECT_EQ(error_of(gpio + "  camera_trigger: CAM_TRIG\n"),
             at(4) +
