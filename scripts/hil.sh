@@ -11,14 +11,16 @@
 # Exits 0 only when the guest booted and every check passed; when the guest cannot boot it
 # says why in one line and fails.
 #
-# Environment: HIL_STEPS (comma-separated guest steps, default all: loop,gpio),
+# Environment: HIL_STEPS (comma-separated guest steps, default all: loop,gpio,cell),
+# HIL_PARTS (parts on the cell's conveyor, default 10),
 # HIL_TIMEOUT_S (the guest's wall-clock limit, default 900).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build_dir=${COSMOS_BUILD_DIR:-$root/build}
 hil_cache=${COSMOS_CACHE_DIR:-$HOME/.cache/cosmos-cell}/hil
 work=$build_dir/hil
-steps=${HIL_STEPS:-loop,gpio}
+steps=${HIL_STEPS:-loop,gpio,cell}
+parts=${HIL_PARTS:-10}
 timeout_s=${HIL_TIMEOUT_S:-900}
 mkdir -p "$work" "$hil_cache"
 log=$work/hil.log
@@ -36,7 +38,7 @@ elapsed() { echo $(($(date +%s) - started)); }
 "$root/scripts/setup.sh" >> "$log" 2>&1 || fail "scripts/setup.sh failed (see $log)"
 cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release >> "$log" 2>&1 ||
   fail "configuring $build_dir failed (see $log)"
-cmake --build "$build_dir" --parallel "$(nproc)" --target cosmos hil_probe >> "$log" 2>&1 ||
+cmake --build "$build_dir" --parallel "$(nproc)" --target cosmos hil_probe hil_player hil_render hil_check >> "$log" 2>&1 ||
   fail "building cosmos and the HIL tools failed (see $log)"
 say "built cosmos and the HIL tools ($(elapsed) s)"
 
@@ -50,7 +52,24 @@ if [[ ! -f $base ]]; then
     --views 80 --out "$base.partial" >> "$log" 2>&1 || fail "building the model base failed (see $log)"
   mv "$base.partial" "$base"
 fi
-"$root/scripts/hil/make_initramfs.sh" "$work/initramfs.cpio" "$kernel_dir" "$build_dir" "$base"
+# The conveyors the guest plays, recorded here: the guest would draw them far too slowly.
+render() {
+  local tape=$1 parts=$2
+  local inputs=("$build_dir/tests/hil/hil_render" "$root/config/cell-hil.yaml"
+    "$root/config/hardware-hil.yaml" "$root/config/parts-regression.yaml")
+  local input
+  if [[ -f $tape ]]; then
+    for input in "${inputs[@]}"; do [[ $input -nt $tape ]] && rm -f "$tape"; done
+  fi
+  [[ -f $tape ]] && return 0
+  "$build_dir/tests/hil/hil_render" --config "$root/config/cell-hil.yaml" \
+    --hardware "$root/config/hardware-hil.yaml" --parts "$parts" --out "$tape" >> "$log" 2>&1 ||
+    fail "recording the conveyor of $parts parts failed (see $log)"
+}
+render "$work/cell-$parts.tape" "$parts"
+render "$work/probe-2.tape" 2
+"$root/scripts/hil/make_initramfs.sh" "$work/initramfs.cpio" "$kernel_dir" "$build_dir" "$base" \
+  "$work/cell-$parts.tape" "$work/probe-2.tape"
 say "initramfs $(($(stat -c %s "$work/initramfs.cpio") / 1048576)) MiB ($(elapsed) s)"
 
 # The binaries use AVX2 and FMA (COSMOS_AVX2): qemu's TCG emulates them when asked.
@@ -61,8 +80,8 @@ set +e
 timeout --kill-after=10 "$timeout_s" qemu-system-x86_64 -accel tcg -cpu "$cpu" -smp 2 -m 3072 \
   -display none -monitor none -serial stdio -no-reboot -nic none \
   -kernel "$kernel_dir/vmlinuz" -initrd "$work/initramfs.cpio" \
-  -append "console=ttyS0 quiet panic=-1 hil_steps=$steps" < /dev/null 2>&1 |
-  tr -d '\r' | tee "$console" | grep --line-buffered '^hil: '
+  -append "console=ttyS0 quiet panic=-1 hil_steps=$steps hil_parts=$parts" < /dev/null 2>&1 |
+  tr -d '\r' | tee "$console" | grep --line-buffered -E '^(hil|cell): '
 qemu_status=${PIPESTATUS[0]}
 set -e
 say "guest ran $(($(date +%s) - boot_started)) s (whole run $(elapsed) s)"

@@ -74,11 +74,46 @@ run_step() {
   fi
 }
 
-steps=${hil_steps:-loop,gpio}
+# The cell's run: the player plays the conveyor (with the cell's faults), lcm-logger records
+# what the cell publishes, and the cell scans for as long as the player's plan says.
+cell_run() {
+  rm -f /tmp/plan /tmp/player.log /tmp/cell.lcm
+  hil_player --tape /opt/cosmos/tapes/cell.tape --hardware "$hardware" --faults cell \
+    --plan /tmp/plan --log /tmp/player.log > /tmp/player.out 2>&1 &
+  player=$!
+  waited=0
+  while [ ! -f /tmp/plan ] && [ $waited -lt 600 ] && kill -0 $player 2> /dev/null; do
+    sleep 0.1
+    waited=$((waited + 1))
+  done
+  if [ ! -f /tmp/plan ]; then
+    say "FAIL the player made no plan: $(cat /tmp/player.out)"
+    return 1
+  fi
+  duration=$(awk '{print $7}' /tmp/plan)
+  say "player: $(cat /tmp/plan) (cell runs $duration s of data time)"
+  lcm-logger -q -f /tmp/cell.lcm &
+  logger=$!
+  cosmos cell --config "$config/cell-hil.yaml" --source hardware --hardware "$hardware" \
+    --parts "$parts" --unpaced --duration-s "$duration" 2>&1 | sed 's/^/cell: /'
+  wait $player
+  player_status=$?
+  cat /tmp/player.out
+  sleep 1
+  kill $logger
+  wait $logger
+  [ $player_status -eq 0 ] || return 1
+  hil_check --config "$config/cell-hil.yaml" --tape /opt/cosmos/tapes/cell.tape \
+    --player-log /tmp/player.log --lcm-log /tmp/cell.lcm
+}
+
+parts=${hil_parts:-10}
+steps=${hil_steps:-loop,gpio,cell}
 for step in $(echo "$steps" | tr ',' ' '); do
   case $step in
     loop) run_step loop hil_probe loop --hardware "$hardware" --output /dev/video1 ;;
     gpio) run_step gpio hil_probe gpio --hardware "$hardware" --gpio-sim "$gpio_sim" ;;
+    cell) run_step cell cell_run ;;
     *)
       say "FAIL unknown step $step"
       failed=$((failed + 1))

@@ -3,14 +3,17 @@
 # would decompress it under TCG): busybox as the shell and init's tools, the kernel modules
 # (vivid's chain, configfs, irq_sim and gpio-sim), the project's `cosmos` binary and the
 # HIL tools with every shared library they load (ldd), lcm-logger, the HIL configuration with
-# the regression catalog, its meshes and its model base, and the test script as /init.
+# the regression catalog, its meshes and its model base, the recorded conveyors (hil_render)
+# and the test script as /init.
 #
-# Usage: make_initramfs.sh OUT_FILE KERNEL_DIR BUILD_DIR MODEL_BASE
+# Usage: make_initramfs.sh OUT_FILE KERNEL_DIR BUILD_DIR MODEL_BASE CELL_TAPE PROBE_TAPE
 set -euo pipefail
 out=$1
 kernel_dir=$2
 build_dir=$3
 model_base=$4
+cell_tape=$5
+probe_tape=$6
 root=$(cd "$(dirname "$0")/../.." && pwd)
 
 fail() {
@@ -20,7 +23,7 @@ fail() {
 
 staging=$(mktemp -d "${TMPDIR:-/tmp}/cosmos-hil-initramfs.XXXXXX")
 trap 'rm -rf "$staging"' EXIT
-mkdir -p "$staging"/{bin,dev,proc,sys,tmp,run,etc,lib/modules/hil,opt/cosmos/bin,opt/cosmos/config}
+mkdir -p "$staging"/{bin,dev,proc,sys,tmp,run,etc,lib/modules/hil,opt/cosmos/bin,opt/cosmos/config,opt/cosmos/tapes}
 cp "$kernel_dir/busybox" "$staging/bin/busybox"
 cp "$kernel_dir"/modules/*.ko "$kernel_dir/gpio-sim"/*.ko "$staging/lib/modules/hil/"
 {
@@ -29,7 +32,8 @@ cp "$kernel_dir"/modules/*.ko "$kernel_dir/gpio-sim"/*.ko "$staging/lib/modules/
   echo gpio-sim.ko
 } > "$staging/lib/modules/hil/load-order"
 
-binaries=("$build_dir/apps/cosmos" "$build_dir/tests/hil/hil_probe")
+binaries=("$build_dir/apps/cosmos" "$build_dir/tests/hil/hil_probe" "$build_dir/tests/hil/hil_player"
+  "$build_dir/tests/hil/hil_check")
 lcm_logger=$(command -v lcm-logger) || fail "lcm-logger not found (Debian package liblcm-bin)"
 binaries+=("$lcm_logger")
 for binary in "${binaries[@]}"; do
@@ -47,6 +51,8 @@ done
 cp "$root/config/cell-hil.yaml" "$root/config/hardware-hil.yaml" "$root/config/parts-regression.yaml" \
   "$staging/opt/cosmos/config/"
 cp "$model_base" "$staging/opt/cosmos/config/regression-80.cmb"
+cp "$cell_tape" "$staging/opt/cosmos/tapes/cell.tape"
+cp "$probe_tape" "$staging/opt/cosmos/tapes/probe.tape"
 mesh_dir=${COSMOS_CACHE_DIR:-$HOME/.cache/cosmos-cell}/meshes
 mkdir -p "$staging/opt/cosmos/cache/meshes"
 for mesh in $(sed -n 's/.*mesh: *\([^,}]*\).*/\1/p' "$root/config/parts-regression.yaml"); do

@@ -3,6 +3,7 @@
 #include <poll.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
@@ -10,8 +11,20 @@
 
 namespace cosmos::hil {
 
-CaptureTicks::CaptureTicks(const V4l2Node& node)
-    : node_(node), control_id_(node.control_id("Read-Only Integer 32 Bits")) {
+std::int64_t unwrap_sequence(std::int64_t low_bits, std::int64_t t_ns, std::int64_t t0_ns,
+                             double frame_period_ns) {
+  const auto elapsed =
+      static_cast<std::int64_t>(std::llround(static_cast<double>(t_ns - t0_ns) / frame_period_ns));
+  std::int64_t sequence = elapsed - ((elapsed - low_bits) % 256 + 256) % 256;
+  if (elapsed - sequence > 128) sequence += 256;
+  return sequence;
+}
+
+CaptureTicks::CaptureTicks(const V4l2Node& node, double frame_period_ns)
+    : node_(node),
+      control_id_(node.control_id("Read-Only Integer 32 Bits")),
+      frame_period_ns_(frame_period_ns),
+      initial_value_(node.control("Read-Only Integer 32 Bits") & 0xff) {
   v4l2_event_subscription subscription{};
   subscription.type = V4L2_EVENT_CTRL;
   subscription.id = control_id_;
@@ -34,19 +47,17 @@ bool CaptureTicks::wait(int timeout_ms, CaptureTick& tick) {
           (event.u.ctrl.changes & V4L2_EVENT_CTRL_CH_VALUE) == 0) {
         continue;
       }
-      const auto value = static_cast<std::uint32_t>(event.u.ctrl.value) & 0xffu;
-      tick.missed_events = 0;
-      if (have_previous_) {
-        sequence_ += static_cast<std::int64_t>((value - previous_value_) & 0xffu);
-        tick.missed_events = event.sequence - previous_event_sequence_ - 1;
-      } else {
-        sequence_ = value;
+      const auto value = static_cast<std::int64_t>(event.u.ctrl.value & 0xff);
+      const std::int64_t t_ns = timespec_to_ns(event.timestamp);
+      // Events merged away while this one waited (the subscription keeps one) are fills too.
+      tick.missed_events = event.sequence - previous_event_sequence_ - 1;
+      if (!have_previous_) {
+        t0_ns_ = t_ns - static_cast<std::int64_t>(static_cast<double>(value) * frame_period_ns_);
       }
       have_previous_ = true;
-      previous_value_ = value;
       previous_event_sequence_ = event.sequence;
-      tick.sequence = sequence_;
-      tick.t_ns = timespec_to_ns(event.timestamp);
+      tick.sequence = unwrap_sequence(value, t_ns, t0_ns_, frame_period_ns_);
+      tick.t_ns = t_ns;
       ++events_;
       return true;
     }

@@ -19,12 +19,6 @@ void drain(LibgpiodLines& lines) {
   }
 }
 
-ProbeCheck check(bool ok, const char* format, auto... values) {
-  char line[384];
-  std::snprintf(line, sizeof line, format, values...);
-  return {ok, line};
-}
-
 // Moves the encoder from `from` to `to` one Gray step at a time, reading events every
 // `poll_every` steps as the cell's loop does between frames.
 void move_encoder(GpioSimLines& sim, int a, int b, LibgpiodLines& lines, long long from,
@@ -61,9 +55,9 @@ std::vector<ProbeCheck> probe_gpio(const GpioConfig& config, const std::string& 
 
     LibgpiodLines lines(config);
     if (lines.start() != GpioStatus::kOk) {
-      checks.push_back(check(false, "gpio: start on %s: %.*s", sim.chip_name().c_str(),
-                             static_cast<int>(lines.last_error().size()),
-                             lines.last_error().data()));
+      checks.push_back(check_line(false, "gpio: start on %s: %.*s", sim.chip_name().c_str(),
+                                  static_cast<int>(lines.last_error().size()),
+                                  lines.last_error().data()));
       return checks;
     }
     sim.find_interrupt_threads();
@@ -73,36 +67,36 @@ std::vector<ProbeCheck> probe_gpio(const GpioConfig& config, const std::string& 
     const bool driven = sim.value(laser) && sim.value(result);
     lines.set_output(GpioOutput::kResultReady, false);
     const bool released = sim.value(laser) && !sim.value(result);
-    checks.push_back(check(idle && driven && released,
-                           "gpio outputs on %s: inactive after start %s, laser_enable and "
-                           "result_ready driven %s, result_ready released %s",
-                           sim.chip_name().c_str(), idle ? "yes" : "no", driven ? "yes" : "no",
-                           released ? "yes" : "no"));
+    checks.push_back(check_line(idle && driven && released,
+                                "gpio outputs on %s: inactive after start %s, laser_enable and "
+                                "result_ready driven %s, result_ready released %s",
+                                sim.chip_name().c_str(), idle ? "yes" : "no", driven ? "yes" : "no",
+                                released ? "yes" : "no"));
 
     const std::int64_t before_ns = monotonic_now_ns();
     move_encoder(sim, a, b, lines, 0, 400, 16);
     const EncoderReading forward = lines.encoder();
     const bool stamped =
         forward.last_step_t_ns >= before_ns && forward.last_step_t_ns <= monotonic_now_ns();
-    checks.push_back(
-        check(forward.ticks == 400 && forward.invalid_transitions == 0 && forward.reversals == 0 &&
-                  stamped && lines.lost_edges() == 0 && sim.unacknowledged_edges() == 0,
-              "gpio encoder forward: 400 quadrature steps driven, %lld counted, "
-              "%llu invalid, %llu reversals, %llu edges lost, CLOCK_MONOTONIC "
-              "time stamps %s",
-              static_cast<long long>(forward.ticks),
-              static_cast<unsigned long long>(forward.invalid_transitions),
-              static_cast<unsigned long long>(forward.reversals),
-              static_cast<unsigned long long>(lines.lost_edges()), stamped ? "yes" : "no"));
+    checks.push_back(check_line(
+        forward.ticks == 400 && forward.invalid_transitions == 0 && forward.reversals == 0 &&
+            stamped && lines.lost_edges() == 0 && sim.unacknowledged_edges() == 0,
+        "gpio encoder forward: 400 quadrature steps driven, %lld counted, "
+        "%llu invalid, %llu reversals, %llu edges lost, CLOCK_MONOTONIC "
+        "time stamps %s",
+        static_cast<long long>(forward.ticks),
+        static_cast<unsigned long long>(forward.invalid_transitions),
+        static_cast<unsigned long long>(forward.reversals),
+        static_cast<unsigned long long>(lines.lost_edges()), stamped ? "yes" : "no"));
 
     move_encoder(sim, a, b, lines, 400, 300, 16);
     const EncoderReading back = lines.encoder();
-    checks.push_back(
-        check(back.ticks == 300 && back.reversals == 1 && back.invalid_transitions == 0,
-              "gpio encoder backward: 100 steps back, count %lld (300 expected), "
-              "%llu reversals, %llu invalid",
-              static_cast<long long>(back.ticks), static_cast<unsigned long long>(back.reversals),
-              static_cast<unsigned long long>(back.invalid_transitions)));
+    checks.push_back(check_line(
+        back.ticks == 300 && back.reversals == 1 && back.invalid_transitions == 0,
+        "gpio encoder backward: 100 steps back, count %lld (300 expected), "
+        "%llu reversals, %llu invalid",
+        static_cast<long long>(back.ticks), static_cast<unsigned long long>(back.reversals),
+        static_cast<unsigned long long>(back.invalid_transitions)));
 
     // Edges made without waiting for the interrupt thread (gpio_sim_lines.hpp), then as many
     // back with it: gpio-cdev's v1 line events (libgpiod 1.6) come from a one-shot threaded
@@ -116,15 +110,13 @@ std::vector<ProbeCheck> probe_gpio(const GpioConfig& config, const std::string& 
     }
     move_encoder(sim, a, b, lines, 324, 300, 48);
     const EncoderReading now = lines.encoder();
-    checks.push_back(
-        check(true,
-              "gpio hasty edges: 24 steps forward without waiting for gpio-cdev's "
-              "interrupt thread and back waiting: count off by %lld, %llu invalid, "
-              "%llu reversals (2 if none lost)",
-              static_cast<long long>(now.ticks - was.ticks),
-              static_cast<unsigned long long>(now.invalid_transitions - was.invalid_transitions),
-              static_cast<unsigned long long>(now.reversals - was.reversals)));
-    checks.back().info = true;
+    checks.push_back(info_line(
+        "gpio hasty edges: 24 steps forward without waiting for gpio-cdev's "
+        "interrupt thread and back waiting: count off by %lld, %llu invalid, "
+        "%llu reversals (2 if none lost)",
+        static_cast<long long>(now.ticks - was.ticks),
+        static_cast<unsigned long long>(now.invalid_transitions - was.invalid_transitions),
+        static_cast<unsigned long long>(now.reversals - was.reversals)));
     // Put the count back where the checks below expect it.
     lines.stop();
     sim.drive(a, false);
@@ -149,13 +141,13 @@ std::vector<ProbeCheck> probe_gpio(const GpioConfig& config, const std::string& 
         ++departures;
       }
     }
-    checks.push_back(check(arrivals == 1 && departures == 1 && arrival_ticks == 300,
-                           "gpio photo eye: a 20 ms interruption gives %d arrival(s) and %d "
-                           "departure(s), the arrival at encoder count %lld (300 expected)",
-                           arrivals, departures, arrival_ticks));
+    checks.push_back(check_line(arrivals == 1 && departures == 1 && arrival_ticks == 300,
+                                "gpio photo eye: a 20 ms interruption gives %d arrival(s) and %d "
+                                "departure(s), the arrival at encoder count %lld (300 expected)",
+                                arrivals, departures, arrival_ticks));
     lines.stop();
-    checks.push_back(check(!sim.value(laser), "gpio stop: laser_enable %s after stop",
-                           sim.value(laser) ? "still on" : "off"));
+    checks.push_back(check_line(!sim.value(laser), "gpio stop: laser_enable %s after stop",
+                                sim.value(laser) ? "still on" : "off"));
   } catch (const std::exception& error) {
     checks.push_back({false, std::string("gpio: ") + error.what()});
   }

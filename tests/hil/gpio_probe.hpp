@@ -6,14 +6,9 @@
 #include <vector>
 
 #include "firmware_bridge/gpio_config.hpp"
+#include "tests/hil/check_line.hpp"
 
 namespace cosmos::hil {
-
-struct ProbeCheck {
-  bool ok = false;
-  std::string line;
-  bool info = false;  // a measured fact, not a pass/fail check
-};
 
 // `device_dir`: the live gpio-sim configfs device whose lines config names.
 std::vector<ProbeCheck> probe_gpio(const GpioConfig& config, const std::string& device_dir);

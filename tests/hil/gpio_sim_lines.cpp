@@ -122,16 +122,30 @@ bool GpioSimLines::wait_for_thread(Line& line, long long switches_before) {
   return false;
 }
 
-void GpioSimLines::drive(int offset, bool high) {
-  Line& line = lines_[static_cast<std::size_t>(offset)];
-  if (line.level == (high ? 1 : 0)) return;
-  const long long before = line.thread_status.empty() ? -1 : voluntary_switches(line.thread_status);
+void GpioSimLines::write_pull(const Line& line, int offset, bool high) const {
   const char* text = high ? "pull-up" : "pull-down";
   if (::pwrite(line.pull_fd, text, std::strlen(text), 0) < 0) {
     throw std::runtime_error("gpio-sim chip " + chip_name_ + ": line " + std::to_string(offset) +
                              ": pull: " + std::strerror(errno));
   }
+}
+
+void GpioSimLines::drive(int offset, bool high) {
+  Line& line = lines_[static_cast<std::size_t>(offset)];
+  if (line.level == (high ? 1 : 0)) return;
+  const long long before = line.thread_status.empty() ? -1 : voluntary_switches(line.thread_status);
+  write_pull(line, offset, high);
   line.level = high ? 1 : 0;
+  if (before >= 0 && !wait_for_thread(line, before)) ++unacknowledged_;
+}
+
+void GpioSimLines::pulse(int offset) {
+  Line& line = lines_[static_cast<std::size_t>(offset)];
+  const bool level = line.level == 1;
+  const long long before = line.thread_status.empty() ? -1 : voluntary_switches(line.thread_status);
+  write_pull(line, offset, !level);
+  write_pull(line, offset, level);
+  line.level = level ? 1 : 0;
   if (before >= 0 && !wait_for_thread(line, before)) ++unacknowledged_;
 }
 

@@ -41,6 +41,9 @@ class GpioSimLines {
   // Pulls the line up or down (nothing when it is there already); an input requested by the
   // cell sees the edge, and the call returns once its event is queued (see above).
   void drive(int offset, bool high);
+  // A pulse shorter than the interrupt thread can resolve: the line flips and flips back
+  // without waiting between, then the call waits as drive() does.
+  void pulse(int offset);
   // The line's current level (an output's driven value, an input's pull).
   bool value(int offset) const;
   const std::string& chip_name() const { return chip_name_; }
@@ -48,6 +51,9 @@ class GpioSimLines {
   // Finds the interrupt threads of the lines requested for edges now; call after the cell
   // (re)requested its lines. Lines without one are driven without waiting.
   void find_interrupt_threads();
+  bool has_interrupt_thread(int offset) const {
+    return !lines_[static_cast<std::size_t>(offset)].thread_status.empty();
+  }
   // Edges whose interrupt thread did not run within the wait (each waited 100 ms).
   std::uint64_t unacknowledged_edges() const { return unacknowledged_; }
 
@@ -60,6 +66,7 @@ class GpioSimLines {
     std::string thread_status;  // /proc/PID/status of its interrupt thread, empty if none
   };
   bool wait_for_thread(Line& line, long long switches_before);
+  void write_pull(const Line& line, int offset, bool high) const;
 
   std::vector<Line> lines_;
   std::string chip_name_;

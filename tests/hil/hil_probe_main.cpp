@@ -19,8 +19,8 @@ namespace {
 struct LoopOptions {
   std::string hardware;
   std::string output = "/dev/video1";
-  std::string capture_timings = "1280x768p60";
-  std::string output_timings = "1280x768p120rb";
+  std::string capture_timings = "1280x720p24";
+  std::string output_timings = "1280x720p60";
   int frames = 5;
 };
 

@@ -36,6 +36,7 @@ class OutputStream {
   // Dequeues one retired buffer without waiting; false when none is done.
   bool dequeue(Retired& retired);
   int queued() const;
+  bool is_queued(int index) const { return buffers_[static_cast<std::size_t>(index)].queued; }
 
  private:
   struct Buffer {

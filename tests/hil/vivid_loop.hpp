@@ -31,8 +31,8 @@ v4l2_dv_timings dv_timings_preset(const std::string& name);
 double frame_rate_hz(const v4l2_dv_timings& timings);
 
 struct VividLoopSettings {
-  std::string capture_timings = "1280x768p60";
-  std::string output_timings = "1280x768p120rb";
+  std::string capture_timings = "1280x720p24";
+  std::string output_timings = "1280x720p60";
   PixelFormat pixel_format = PixelFormat::kGrey8;
 };
 
