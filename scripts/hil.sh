@@ -11,7 +11,8 @@
 # Exits 0 only when the guest booted and every check passed; when the guest cannot boot it
 # says why in one line and fails.
 #
-# Environment: HIL_STEPS (comma-separated guest steps, default all: loop,gpio,cell),
+# Environment: HIL_STEPS (comma-separated guest steps, default all:
+# loop,lifecycle,formats,gpio,faults,cell),
 # HIL_PARTS (parts on the cell's conveyor, default 10),
 # HIL_TIMEOUT_S (the guest's wall-clock limit, default 900).
 set -euo pipefail
@@ -19,7 +20,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build_dir=${COSMOS_BUILD_DIR:-$root/build}
 hil_cache=${COSMOS_CACHE_DIR:-$HOME/.cache/cosmos-cell}/hil
 work=$build_dir/hil
-steps=${HIL_STEPS:-loop,gpio,cell}
+steps=${HIL_STEPS:-loop,lifecycle,formats,gpio,faults,cell}
 parts=${HIL_PARTS:-10}
 timeout_s=${HIL_TIMEOUT_S:-900}
 mkdir -p "$work" "$hil_cache"
@@ -81,19 +82,19 @@ timeout --kill-after=10 "$timeout_s" qemu-system-x86_64 -accel tcg -cpu "$cpu" -
   -display none -monitor none -serial stdio -no-reboot -nic none \
   -kernel "$kernel_dir/vmlinuz" -initrd "$work/initramfs.cpio" \
   -append "console=ttyS0 quiet panic=-1 hil_steps=$steps hil_parts=$parts" < /dev/null 2>&1 |
-  tr -d '\r' | tee "$console" | grep --line-buffered -E '^(hil|cell): '
+  tr -d '\r' | tee "$console" | grep -a --line-buffered -E '^(hil|cell): '
 qemu_status=${PIPESTATUS[0]}
 set -e
 say "guest ran $(($(date +%s) - boot_started)) s (whole run $(elapsed) s)"
 
-if ! grep -q '^hil: guest up' "$console"; then
-  last=$(grep -v '^\s*$' "$console" | tail -n 1)
+if ! grep -aq '^hil: guest up' "$console"; then
+  last=$(grep -av '^\s*$' "$console" | tail -n 1)
   if ((qemu_status == 124)); then
     fail "the guest did not boot within ${timeout_s} s (last console line: ${last:-none})"
   fi
   fail "the guest did not boot: qemu exited with status $qemu_status (last console line: ${last:-none})"
 fi
-exit_line=$(grep '^hil: guest exit' "$console" | tail -n 1 || true)
+exit_line=$(grep -a '^hil: guest exit' "$console" | tail -n 1 || true)
 if [[ -z $exit_line ]]; then
   ((qemu_status == 124)) && fail "the guest did not finish within ${timeout_s} s (console: $console)"
   fail "the guest stopped before its checks finished (console: $console)"

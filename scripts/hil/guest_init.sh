@@ -74,6 +74,22 @@ run_step() {
   fi
 }
 
+# The bridge on the player's faults: a short conveyor, HardwareSource on devices the probe
+# holds, so that the camera's and the decoder's counters can be read.
+faults_run() {
+  rm -f /tmp/probe.plan /tmp/probe.log
+  hil_player --tape /opt/cosmos/tapes/probe.tape --hardware "$hardware" --faults probe \
+    --plan /tmp/probe.plan --log /tmp/probe.log > /tmp/probe.out 2>&1 &
+  player=$!
+  hil_probe faults --hardware "$hardware" --config "$config/cell-hil.yaml" \
+    --plan /tmp/probe.plan --player-log /tmp/probe.log
+  probe_status=$?
+  wait $player
+  player_status=$?
+  cat /tmp/probe.out
+  [ $probe_status -eq 0 ] && [ $player_status -eq 0 ]
+}
+
 # The cell's run: the player plays the conveyor (with the cell's faults), lcm-logger records
 # what the cell publishes, and the cell scans for as long as the player's plan says.
 cell_run() {
@@ -108,11 +124,14 @@ cell_run() {
 }
 
 parts=${hil_parts:-10}
-steps=${hil_steps:-loop,gpio,cell}
+steps=${hil_steps:-loop,lifecycle,formats,gpio,faults,cell}
 for step in $(echo "$steps" | tr ',' ' '); do
   case $step in
     loop) run_step loop hil_probe loop --hardware "$hardware" --output /dev/video1 ;;
+    lifecycle) run_step lifecycle hil_probe lifecycle --hardware "$hardware" ;;
+    formats) run_step formats hil_probe formats --hardware "$hardware" ;;
     gpio) run_step gpio hil_probe gpio --hardware "$hardware" --gpio-sim "$gpio_sim" ;;
+    faults) run_step faults faults_run ;;
     cell) run_step cell cell_run ;;
     *)
       say "FAIL unknown step $step"

@@ -43,10 +43,10 @@ class Player {
         result_line_(lines.offset(hardware.gpio.result_ready.name)),
         encoder_(lines, encoder_settings(lines)) {
     const TapeHeader& header = tape_.header();
-    const CameraConfig& camera = hardware_.camera;
-    if (header.width_px != camera.width_px || header.height_px != camera.height_px ||
-        header.bytes_per_pixel != bytes_per_pixel(camera.pixel_format)) {
-      throw std::runtime_error("the tape's frames are not the camera's ROI and format");
+    if (header.bytes_per_pixel != bytes_per_pixel(hardware.camera.pixel_format) ||
+        header.roi_left_px + header.width_px > format_.width_px ||
+        header.roi_top_px + header.height_px > format_.height_px) {
+      throw std::runtime_error("the tape's frames do not fit vivid's frame in the camera's format");
     }
     // Profile 0 is empty belt (the conveyor's own lead-in): it stands for every empty frame.
     row_bytes_ = static_cast<std::size_t>(header.width_px * header.bytes_per_pixel);
@@ -84,7 +84,7 @@ class Player {
     return profile >= 0 && profile <= tape_.header().last_profile ? profile : kEmpty;
   }
 
-  // The ROI rows of the content into an output buffer (the camera crops exactly those).
+  // The content's rows into an output buffer.
   void write_frame(int buffer, std::int64_t content);
   int free_buffer() const;  // not queued and not the prepared one
   void queue_frame(std::int64_t content);
@@ -118,16 +118,17 @@ class Player {
 };
 
 void Player::write_frame(int buffer, std::int64_t content) {
-  const CameraConfig& camera = hardware_.camera;
-  std::uint8_t* roi =
-      stream_.data(buffer) + static_cast<std::size_t>(camera.roi_top_px) * format_.bytes_per_line +
-      static_cast<std::size_t>(camera.roi_left_px) * bytes_per_pixel(camera.pixel_format);
+  // The tape's rows where they lie on the sensor: the camera crops its own band of them.
+  const TapeHeader& header = tape_.header();
+  std::uint8_t* roi = stream_.data(buffer) +
+                      static_cast<std::size_t>(header.roi_top_px) * format_.bytes_per_line +
+                      static_cast<std::size_t>(header.roi_left_px) * header.bytes_per_pixel;
   if (content > 0) {
     // The tape only goes forward: a profile is read once, when it is first needed.
     tape_.decode(content, roi, static_cast<std::size_t>(format_.bytes_per_line));
     return;
   }
-  for (int r = 0; r < camera.height_px; ++r) {
+  for (int r = 0; r < header.height_px; ++r) {
     std::memcpy(roi + static_cast<std::size_t>(r) * format_.bytes_per_line,
                 empty_.data() + static_cast<std::size_t>(r) * row_bytes_, row_bytes_);
   }

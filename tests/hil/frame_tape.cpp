@@ -97,7 +97,8 @@ void FrameTapeWriter::finish() {
     out.precision(17);
     out << kMagic << '\n'
         << "frame " << header_.width_px << ' ' << header_.height_px << ' '
-        << header_.bytes_per_pixel << '\n'
+        << header_.bytes_per_pixel << ' ' << header_.roi_top_px << ' ' << header_.roi_left_px
+        << '\n'
         << "conveyor " << header_.last_profile << ' ' << header_.ticks_per_profile << '\n';
     for (const BeamInterruption& beam : header_.beam)
       out << "beam " << beam.enter_tick << ' ' << beam.leave_tick << '\n';
@@ -136,7 +137,8 @@ FrameTapeReader::FrameTapeReader(const std::filesystem::path& file)
     std::string key;
     fields >> key;
     if (key == "frame") {
-      fields >> header_.width_px >> header_.height_px >> header_.bytes_per_pixel;
+      fields >> header_.width_px >> header_.height_px >> header_.bytes_per_pixel >>
+          header_.roi_top_px >> header_.roi_left_px;
     } else if (key == "conveyor") {
       fields >> header_.last_profile >> header_.ticks_per_profile;
     } else if (key == "beam") {

@@ -43,6 +43,8 @@ struct TapeHeader {
   int width_px = 0;
   int height_px = 0;  // the ROI's rows
   int bytes_per_pixel = 1;
+  int roi_top_px = 0;  // the sensor row of the frames' row 0
+  int roi_left_px = 0;
   std::int64_t last_profile = -1;
   int ticks_per_profile = 4;
   std::vector<BeamInterruption> beam;

@@ -30,6 +30,7 @@ TEST(FrameTape, GivesBackEveryFrameExactly) {
   TapeHeader header;
   header.width_px = hardware.camera.width_px;
   header.height_px = hardware.camera.height_px;
+  header.roi_top_px = hardware.camera.roi_top_px;
   header.last_profile = conveyor->last_profile();
   {
     ConveyorFrames frames(*conveyor, hardware);
@@ -43,6 +44,7 @@ TEST(FrameTape, GivesBackEveryFrameExactly) {
   }
   FrameTapeReader tape(file);
   ASSERT_EQ(tape.header().frames, conveyor->last_profile() + 1);
+  EXPECT_EQ(tape.header().roi_top_px, hardware.camera.roi_top_px);
   EXPECT_GE(tape.header().backgrounds, 1);
   EXPECT_LE(tape.header().backgrounds, 8);
   ASSERT_EQ(tape.header().parts.size(), conveyor->placed_parts().size());

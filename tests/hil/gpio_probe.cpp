@@ -14,8 +14,13 @@ namespace {
 
 constexpr std::int64_t kQuietNs = 50'000'000;  // no edge for this long: all are read
 
-void drain(LibgpiodLines& lines) {
-  while (lines.poll_inputs(kQuietNs) == GpioStatus::kOk) {
+// Reads edges until the count is `expected` and the lines have been quiet for a while, or a
+// second has passed: the edge reader thread and gpio-cdev's may be late under TCG.
+void drain(LibgpiodLines& lines, long long expected) {
+  const std::int64_t give_up_ns = monotonic_now_ns() + 1'000'000'000;
+  while (monotonic_now_ns() < give_up_ns) {
+    const bool quiet = lines.poll_inputs(kQuietNs) == GpioStatus::kTimeout;
+    if (quiet && lines.encoder().ticks == expected) return;
   }
 }
 
@@ -24,6 +29,7 @@ void drain(LibgpiodLines& lines) {
 void move_encoder(GpioSimLines& sim, int a, int b, LibgpiodLines& lines, long long from,
                   long long to, int poll_every) {
   const long long step = to > from ? 1 : -1;
+  const long long expected = lines.encoder().ticks + (to - from);
   int since_poll = 0;
   for (long long tick = from + step; tick != to + step; tick += step) {
     const QuadratureLevels before = quadrature_levels(tick - step);
@@ -35,7 +41,7 @@ void move_encoder(GpioSimLines& sim, int a, int b, LibgpiodLines& lines, long lo
       since_poll = 0;
     }
   }
-  drain(lines);
+  drain(lines, expected);
 }
 
 }  // namespace
@@ -126,10 +132,10 @@ std::vector<ProbeCheck> probe_gpio(const GpioConfig& config, const std::string& 
     move_encoder(sim, a, b, lines, 0, 300, 16);
     sim.drive(eye, true);
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    drain(lines);
+    drain(lines, lines.encoder().ticks);
     sim.drive(eye, false);
     std::this_thread::sleep_for(std::chrono::milliseconds(60));
-    drain(lines);
+    drain(lines, lines.encoder().ticks);
     int arrivals = 0, departures = 0;
     long long arrival_ticks = -1;
     PhotoEyeEvent event;

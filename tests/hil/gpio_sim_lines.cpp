@@ -28,16 +28,22 @@ std::string read_attribute(const fs::path& path) {
   return text;
 }
 
-// voluntary_ctxt_switches of a thread; -1 when it is gone.
-long long voluntary_switches(const std::string& status_path) {
+struct ThreadState {
+  long long voluntary_switches = -1;  // -1: the thread is gone
+  bool sleeping = false;              // "S": waiting for its next interrupt
+};
+
+ThreadState thread_state(const std::string& status_path) {
   std::ifstream file(status_path);
   std::string line;
+  ThreadState state;
   while (std::getline(file, line)) {
+    if (line.rfind("State:", 0) == 0) state.sleeping = line.find('S', 6) != std::string::npos;
     if (line.rfind("voluntary_ctxt_switches:", 0) == 0) {
-      return std::stoll(line.substr(line.find(':') + 1));
+      state.voluntary_switches = std::stoll(line.substr(line.find(':') + 1));
     }
   }
-  return -1;
+  return state;
 }
 
 }  // namespace
@@ -111,12 +117,14 @@ void GpioSimLines::find_interrupt_threads() {
 bool GpioSimLines::wait_for_thread(Line& line, long long switches_before) {
   const auto deadline = std::chrono::steady_clock::now() + kThreadWait;
   while (std::chrono::steady_clock::now() < deadline) {
-    const long long switches = voluntary_switches(line.thread_status);
-    if (switches < 0) {
+    const ThreadState state = thread_state(line.thread_status);
+    if (state.voluntary_switches < 0) {
       line.thread_status.clear();  // the cell released the line
       return true;
     }
-    if (switches > switches_before) return true;
+    // Asleep again after running: it may also have slept on gpio-sim's lock while reading the
+    // level (state D), which is not done.
+    if (state.voluntary_switches > switches_before && state.sleeping) return true;
     sched_yield();
   }
   return false;
@@ -133,7 +141,8 @@ void GpioSimLines::write_pull(const Line& line, int offset, bool high) const {
 void GpioSimLines::drive(int offset, bool high) {
   Line& line = lines_[static_cast<std::size_t>(offset)];
   if (line.level == (high ? 1 : 0)) return;
-  const long long before = line.thread_status.empty() ? -1 : voluntary_switches(line.thread_status);
+  const long long before =
+      line.thread_status.empty() ? -1 : thread_state(line.thread_status).voluntary_switches;
   write_pull(line, offset, high);
   line.level = high ? 1 : 0;
   if (before >= 0 && !wait_for_thread(line, before)) ++unacknowledged_;
@@ -142,7 +151,8 @@ void GpioSimLines::drive(int offset, bool high) {
 void GpioSimLines::pulse(int offset) {
   Line& line = lines_[static_cast<std::size_t>(offset)];
   const bool level = line.level == 1;
-  const long long before = line.thread_status.empty() ? -1 : voluntary_switches(line.thread_status);
+  const long long before =
+      line.thread_status.empty() ? -1 : thread_state(line.thread_status).voluntary_switches;
   write_pull(line, offset, !level);
   write_pull(line, offset, level);
   line.level = level ? 1 : 0;

@@ -1,63 +1,37 @@
 // `hil_probe`: the bridge's checks against the real kernel drivers inside the HIL guest.
-//   hil_probe loop --hardware FILE --output /dev/videoN [--frames N]
+//   hil_probe loop --hardware FILE [--output /dev/videoN] [--frames N]
 //     for each pixel format: a frame written to vivid's output comes back through V4l2Camera
-//   hil_probe gpio --hardware FILE --gpio-sim /sys/kernel/config/gpio-sim/NAME
+//   hil_probe lifecycle --hardware FILE     the camera's lifecycle twice, nothing leaked
+//   hil_probe formats --hardware FILE       what vivid offers, taken and refused
+//   hil_probe gpio --hardware FILE [--gpio-sim DIR]
 //     LibgpiodLines against gpio-sim: outputs, quadrature counting, the photo eye
-// Prints one line per check, "hil: PASS ...", "hil: FAIL ..." or "hil: INFO ..." (a measured
-// fact), and exits non-zero when any check failed.
+//   hil_probe faults --hardware FILE --config CELL.yaml --plan FILE --player-log FILE
+//     HardwareSource on the player's faults (bridge_probe.hpp)
+// Prints one line per check ("hil: PASS|FAIL|INFO …") and exits non-zero when one failed.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 #include <string>
 
+#include "realtime/config/cell_config.hpp"
 #include "realtime/config/hardware_config.hpp"
+#include "tests/hil/bridge_probe.hpp"
 #include "tests/hil/gpio_probe.hpp"
+#include "tests/hil/lifecycle_probe.hpp"
 #include "tests/hil/loop_probe.hpp"
 
 namespace {
 
-struct LoopOptions {
-  std::string hardware;
-  std::string output = "/dev/video1";
-  std::string capture_timings = "1280x720p24";
-  std::string output_timings = "1280x720p60";
-  int frames = 5;
-};
-
-int run_loop(const LoopOptions& options) {
-  const cosmos::HardwareConfig hardware = cosmos::read_hardware_config(options.hardware);
-  cosmos::hil::VividLoopSettings loop;
-  loop.capture_timings = options.capture_timings;
-  loop.output_timings = options.output_timings;
-  int failed = 0;
+int run_loop(const cosmos::HardwareConfig& hardware, const std::string& output, int frames) {
+  const cosmos::hil::VividLoopSettings loop;
+  std::vector<cosmos::hil::ProbeCheck> checks;
   for (const cosmos::PixelFormat format : {cosmos::PixelFormat::kGrey8, cosmos::PixelFormat::kY10,
                                            cosmos::PixelFormat::kY12, cosmos::PixelFormat::kY16}) {
     const cosmos::hil::LoopProbeResult result =
-        cosmos::hil::probe_loop(options.output, hardware.camera, loop, format, options.frames);
-    std::printf("hil: %s %s\n", result.ok ? "PASS" : "FAIL", result.line.c_str());
-    failed += result.ok ? 0 : 1;
+        cosmos::hil::probe_loop(output, hardware.camera, loop, format, frames);
+    checks.push_back({result.ok, result.line, false});
   }
-  return failed == 0 ? 0 : 1;
-}
-
-struct GpioOptions {
-  std::string hardware;
-  std::string gpio_sim = "/sys/kernel/config/gpio-sim/cosmos";
-};
-
-int run_gpio(const GpioOptions& options) {
-  const cosmos::HardwareConfig hardware = cosmos::read_hardware_config(options.hardware);
-  int failed = 0;
-  for (const cosmos::hil::ProbeCheck& check :
-       cosmos::hil::probe_gpio(hardware.gpio, options.gpio_sim)) {
-    std::printf("hil: %s %s\n",
-                check.info ? "INFO"
-                : check.ok ? "PASS"
-                           : "FAIL",
-                check.line.c_str());
-    failed += check.ok ? 0 : 1;
-  }
-  return failed == 0 ? 0 : 1;
+  return cosmos::hil::print_checks(checks);
 }
 
 }  // namespace
@@ -65,24 +39,45 @@ int run_gpio(const GpioOptions& options) {
 int main(int argc, char** argv) {
   CLI::App app("HIL bridge checks against vivid and gpio-sim");
   app.require_subcommand(1);
-  LoopOptions loop;
-  CLI::App* loop_command = app.add_subcommand("loop", "frames through vivid's loop and V4l2Camera");
-  loop_command->add_option("--hardware", loop.hardware, "hardware YAML")->required();
-  loop_command->add_option("--output", loop.output, "vivid output node");
-  loop_command->add_option("--capture-timings", loop.capture_timings, "capture DV timings");
-  loop_command->add_option("--output-timings", loop.output_timings, "output DV timings");
-  loop_command->add_option("--frames", loop.frames, "frames compared per format");
-  GpioOptions gpio;
-  CLI::App* gpio_command = app.add_subcommand("gpio", "LibgpiodLines against gpio-sim");
-  gpio_command->add_option("--hardware", gpio.hardware, "hardware YAML")->required();
-  gpio_command->add_option("--gpio-sim", gpio.gpio_sim, "gpio-sim configfs device");
+  std::string hardware_file, output = "/dev/video1",
+                             gpio_sim = "/sys/kernel/config/gpio-sim/cosmos";
+  std::string config_file, plan_file, player_log;
+  int frames = 5;
+  CLI::App* loop = app.add_subcommand("loop", "frames through vivid's loop and V4l2Camera");
+  CLI::App* lifecycle = app.add_subcommand("lifecycle", "the camera's lifecycle, twice");
+  CLI::App* formats = app.add_subcommand("formats", "format negotiation with vivid");
+  CLI::App* gpio = app.add_subcommand("gpio", "LibgpiodLines against gpio-sim");
+  CLI::App* faults = app.add_subcommand("faults", "HardwareSource on the player's faults");
+  for (CLI::App* command : {loop, lifecycle, formats, gpio, faults})
+    command->add_option("--hardware", hardware_file, "hardware YAML")->required();
+  loop->add_option("--output", output, "vivid output node");
+  loop->add_option("--frames", frames, "frames compared per format");
+  gpio->add_option("--gpio-sim", gpio_sim, "gpio-sim configfs device");
+  faults->add_option("--config", config_file, "cell YAML (the scanner section)")->required();
+  faults->add_option("--plan", plan_file, "the player's plan")->required();
+  faults->add_option("--player-log", player_log, "the player's log")->required();
   CLI11_PARSE(app, argc, argv);
   try {
-    if (loop_command->parsed()) return run_loop(loop);
-    if (gpio_command->parsed()) return run_gpio(gpio);
+    const cosmos::HardwareConfig hardware = cosmos::read_hardware_config(hardware_file);
+    int failed = 0;
+    if (loop->parsed()) failed = run_loop(hardware, output, frames);
+    if (lifecycle->parsed())
+      failed = cosmos::hil::print_checks(cosmos::hil::probe_lifecycle(hardware.camera));
+    if (formats->parsed())
+      failed = cosmos::hil::print_checks(cosmos::hil::probe_formats(hardware.camera));
+    if (gpio->parsed())
+      failed = cosmos::hil::print_checks(cosmos::hil::probe_gpio(hardware.gpio, gpio_sim));
+    if (faults->parsed()) {
+      cosmos::hil::BridgeProbeSettings settings;
+      settings.hardware = hardware;
+      settings.scanner = cosmos::load_cell_config(config_file).scanner;
+      settings.plan_file = plan_file;
+      settings.player_log = player_log;
+      failed = cosmos::hil::print_checks(cosmos::hil::probe_bridge(settings));
+    }
+    return failed == 0 ? 0 : 1;
   } catch (const std::exception& error) {
     std::printf("hil: FAIL %s\n", error.what());
     return 1;
   }
-  return 1;
 }

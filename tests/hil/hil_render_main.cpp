@@ -1,7 +1,7 @@
 // `hil_render`: records the simulated conveyor for the HIL guest, on the host (frame_tape.hpp):
 // the conveyor of the cell config's sim_source section (--parts overriding its count), its
-// camera-mode frames in the hardware config's ROI and pixel format, its photo-eye beam and
-// its parts' ground truth.
+// camera-mode frames (the simulator's measuring range, in the hardware config's pixel
+// format), its photo-eye beam and its parts' ground truth and model points.
 //   hil_render --config CELL.yaml --hardware HW.yaml [--parts N] --out FILE
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -12,6 +12,7 @@
 
 #include "realtime/config/cell_config.hpp"
 #include "realtime/config/hardware_config.hpp"
+#include "scanner/triangulation_geometry.hpp"
 #include "sim/mesh.hpp"
 #include "sim/part_catalog.hpp"
 #include "tests/hil/conveyor_frames.hpp"
@@ -50,11 +51,22 @@ int main(int argc, char** argv) {
     const cosmos::HardwareConfig hardware = cosmos::read_hardware_config(hardware_file);
     const cosmos::PartCatalog catalog = cosmos::read_part_catalog(config.cell.catalog);
     const auto conveyor = cosmos::hil::make_hil_conveyor(config, catalog, parts);
-    cosmos::hil::ConveyorFrames frames(*conveyor, hardware);
+    // The simulator's whole camera-mode frame (every sensor column, its measuring range's
+    // rows) in the camera's pixel format: the player writes it where it lies on the sensor,
+    // and the camera crops its own band out of it.
+    cosmos::HardwareConfig drawing = hardware;
+    const cosmos::TriangulationGeometry geometry =
+        cosmos::scanner_triangulation_geometry(config.scanner);
+    drawing.camera.width_px = config.scanner.sensor_width_px;
+    drawing.camera.roi_left_px = 0;
+    drawing.camera.roi_top_px = geometry.roi_row_offset_px;
+    drawing.camera.height_px = geometry.roi_height_px;
+    cosmos::hil::ConveyorFrames frames(*conveyor, drawing);
     cosmos::hil::TapeHeader header;
-    header.width_px = hardware.camera.width_px;
-    header.height_px = hardware.camera.height_px;
-    header.bytes_per_pixel = cosmos::bytes_per_pixel(hardware.camera.pixel_format);
+    header.width_px = drawing.camera.width_px;
+    header.height_px = drawing.camera.height_px;
+    header.roi_top_px = drawing.camera.roi_top_px;
+    header.bytes_per_pixel = cosmos::bytes_per_pixel(drawing.camera.pixel_format);
     header.last_profile = conveyor->last_profile();
     header.ticks_per_profile = frames.ticks_per_profile();
     header.beam = frames.beam_interruptions();
