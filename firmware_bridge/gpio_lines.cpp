@@ -17,13 +17,6 @@ constexpr std::array<const char*, kGpioInputCount> kInputRoles = {"encoder_a", "
                                                                   "photo_eye"};
 constexpr std::array<const char*, 2> kOutputRoles = {"laser_enable", "result_ready"};
 
-// libgpiod reads at most this many events per call: the kernel FIFO depth.
-constexpr unsigned kEventBatch = 16;
-
-// An event stamped this far after the cut cannot be CLOCK_MONOTONIC: kernels before 5.7
-// stamped GPIO events with CLOCK_REALTIME, which would hold every event back forever.
-constexpr std::int64_t kClockMismatchNs = 1'000'000'000;
-
 // "\"ENC_A\"" or "17": how the config named the line.
 struct LineLabel {
   char text[72] = {};
@@ -133,8 +126,18 @@ GpioStatus LibgpiodLines::open_lines() noexcept {
                   kOutputRoles[i], errno_text(errno));
     }
   }
-  merger_.clear();
   decoder_.reset(levels[0], levels[1], levels[2], monotonic_now_ns());
+  // The events since the levels were read are queued already: the pump reads from there.
+  std::array<GpioEventPump::Line, kGpioInputCount> watched{};
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < kGpioInputCount; ++i) {
+    if (inputs_[i] == nullptr) continue;
+    watched[count++] = {gpiod_line_event_get_fd(inputs_[i]), static_cast<GpioInput>(i),
+                        input_ref(i).active_low, kInputRoles[i]};
+  }
+  if (!pump_.start(watched.data(), count)) {
+    return fail("%.*s", static_cast<int>(pump_.error().size()), pump_.error().data());
+  }
   return GpioStatus::kOk;
 }
 
@@ -147,6 +150,7 @@ GpioStatus LibgpiodLines::start() noexcept {
 
 GpioStatus LibgpiodLines::stop() noexcept {
   if (!started()) return GpioStatus::kOk;
+  pump_.stop();  // before the lines (and their event fds) go
   // Releasing a line leaves it at its last level on most GPIO drivers: drive every output,
   // above all the laser enable, inactive before letting go.
   for (std::size_t i = 0; i < kOutputCount; ++i) {
@@ -181,51 +185,26 @@ GpioStatus LibgpiodLines::poll_inputs(std::int64_t timeout_ns) noexcept {
     fail("poll_inputs: lines not started");
     return GpioStatus::kWrongState;
   }
-  gpiod_line_bulk watched;
-  gpiod_line_bulk_init(&watched);
-  for (gpiod_line* line : inputs_) {
-    if (line != nullptr) gpiod_line_bulk_add(&watched, line);
+  // Read before popping: every edge up to it has been handed over (GpioEventPump).
+  std::int64_t known_ns = pump_.known_until_ns();
+  bool decoded = false;
+  GpioEdge edge;
+  while (pump_.pop(edge)) {
+    decoder_.on_edge(edge);
+    decoded = true;
   }
-  const timespec timeout = ns_to_timespec(timeout_ns);
-  const int woke = gpiod_line_event_wait_bulk(&watched, &timeout, nullptr);
-  if (woke < 0 && errno != EINTR) return fail("waiting for edge events: %s", errno_text(errno));
-  if (woke <= 0) {
-    decoder_.advance_to(monotonic_now_ns());
-    return GpioStatus::kTimeout;
-  }
-  // The cut is taken before the queues are read: see EdgeEventMerger.
-  const std::int64_t cut_ns = monotonic_now_ns();
-  gpiod_line_bulk ready;
-  gpiod_line_bulk_init(&ready);
-  const timespec no_wait{};
-  if (gpiod_line_event_wait_bulk(&watched, &no_wait, &ready) < 0) {
-    return fail("checking edge events: %s", errno_text(errno));
-  }
-  gpiod_line_event events[kEventBatch];
-  for (unsigned r = 0; r < gpiod_line_bulk_num_lines(&ready); ++r) {
-    gpiod_line* line = gpiod_line_bulk_get_line(&ready, r);
-    std::size_t input = 0;
-    while (input < kGpioInputCount && inputs_[input] != line) ++input;
-    if (input == kGpioInputCount) continue;
-    const int count = gpiod_line_event_read_multiple(line, events, kEventBatch);
-    if (count < 0) {
-      return fail("line %s (%s): reading edge events: %s", LineLabel(input_ref(input)).text,
-                  kInputRoles[input], errno_text(errno));
-    }
-    for (int e = 0; e < count; ++e) {
-      const std::int64_t t_ns = timespec_to_ns(events[e].ts);
-      if (t_ns > cut_ns + kClockMismatchNs) {
-        return fail(
-            "line %s (%s): event time stamps are not CLOCK_MONOTONIC (kernel older than 5.7?)",
-            LineLabel(input_ref(input)).text, kInputRoles[input]);
-      }
-      const bool rising = events[e].event_type == GPIOD_LINE_EVENT_RISING_EDGE;
-      merger_.push({t_ns, static_cast<GpioInput>(input), rising != input_ref(input).active_low});
+  if (!decoded && timeout_ns > 0) {
+    pump_.wait(timeout_ns);
+    known_ns = pump_.known_until_ns();
+    while (pump_.pop(edge)) {
+      decoder_.on_edge(edge);
+      decoded = true;
     }
   }
-  merger_.drain(cut_ns, [this](const GpioEdge& edge) { decoder_.on_edge(edge); });
-  decoder_.advance_to(cut_ns);
-  return GpioStatus::kOk;
+  if (pump_.failed()) {
+    return fail("%.*s", static_cast<int>(pump_.error().size()), pump_.error().data());
+  }
+  decoder_.advance_to(known_ns);
+  return decoded ? GpioStatus::kOk : GpioStatus::kTimeout;
 }
-
 }  // namespace cosmos

@@ -7,20 +7,21 @@
 // from. A missing chip or line, a busy line, a bad offset: one line naming chip, line, role
 // and reason.
 //
-// poll_inputs() waits for edges, reads every pending event with its kernel time stamp
-// (CLOCK_MONOTONIC on kernels ≥ 5.7), restores their order across lines (EdgeEventMerger) and
-// decodes them (GpioInputDecoder). libgpiod's wait, read and set-value calls use stack
-// arrays and plain syscalls (Debian's 1.6.3 binary calls only ppoll, read and ioctl in them),
-// so this runs on the acquisition thread without allocating. The kernel keeps only
-// 16 events per line: at 20 kHz of encoder edges that is 0.8 ms, which bounds how long the
-// loop may go without polling before edges are lost (and counted as invalid transitions).
+// The inputs' events are read as they come by a thread of the lines' own (GpioEventPump), with
+// their kernel time stamps (CLOCK_MONOTONIC on kernels ≥ 5.7) and in their order across lines:
+// the kernel keeps only 16 events per line, which at 20 kHz of encoder edges is 0.8 ms, and
+// the loop may be held up far longer (the cell starts its source before loading its model
+// base). poll_inputs() decodes the edges the pump has handed over (GpioInputDecoder), waiting
+// up to its timeout when there are none; it is lock-free and allocates nothing. libgpiod's
+// set-value calls use stack arrays and plain syscalls (Debian's 1.6.3 binary calls only ioctl
+// in them), so set_output() runs on the acquisition thread too.
 #include <array>
 #include <cstdint>
 
-#include "firmware_bridge/edge_event_merger.hpp"
 #include "firmware_bridge/error_line.hpp"
 #include "firmware_bridge/gpio.hpp"
 #include "firmware_bridge/gpio_config.hpp"
+#include "firmware_bridge/gpio_event_pump.hpp"
 #include "firmware_bridge/gpio_input_decoder.hpp"
 
 struct gpiod_chip;
@@ -48,8 +49,8 @@ class LibgpiodLines final : public GpioLines {
 
   bool started() const noexcept { return chip_ != nullptr; }
   const GpioInputDecoder& decoder() const noexcept { return decoder_; }
-  // Edges that found the merger full: the loop polled far too rarely.
-  std::uint64_t lost_edges() const noexcept { return merger_.overflowed(); }
+  // Edges the pump could not hold: the loop polled far too rarely.
+  std::uint64_t lost_edges() const noexcept { return pump_.lost_edges(); }
 
  private:
   static constexpr std::size_t kOutputCount = 2;
@@ -65,7 +66,7 @@ class LibgpiodLines final : public GpioLines {
   std::array<gpiod_line*, kGpioInputCount> inputs_{};
   std::array<gpiod_line*, kOutputCount> outputs_{};
   GpioInputDecoder decoder_;
-  EdgeEventMerger merger_;
+  GpioEventPump pump_;
   ErrorLine error_;
 };
 

@@ -116,8 +116,20 @@ CameraStatus V4l2Camera::set_format() noexcept {
                  static_cast<std::uint32_t>(config_.width_px),
                  static_cast<std::uint32_t>(config_.height_px)};
   if (io_.ioctl(fd_, VIDIOC_S_SELECTION, &selection) == 0) {
-    roi_top_px_ = selection.r.top;
-    roi_left_px_ = selection.r.left;
+    // Drivers move a crop rectangle inside their bounds (and to their alignment) instead of
+    // refusing it: frames of rows other than the configured band would reach triangulation.
+    const v4l2_rect& got = selection.r;
+    if (got.top != config_.roi_top_px || got.left != config_.roi_left_px ||
+        static_cast<int>(got.width) != config_.width_px ||
+        static_cast<int>(got.height) != config_.height_px) {
+      return fail_with(
+          "VIDIOC_S_SELECTION: ROI top %d left %d %dx%d not supported (driver offers top %d left "
+          "%d %ux%u)",
+          config_.roi_top_px, config_.roi_left_px, config_.width_px, config_.height_px, got.top,
+          got.left, got.width, got.height);
+    }
+    roi_top_px_ = got.top;
+    roi_left_px_ = got.left;
   } else if (roi_at_origin && (errno == ENOTTY || errno == EINVAL || errno == ENODATA)) {
     roi_top_px_ = 0;  // no cropping on this driver, and none needed
     roi_left_px_ = 0;

@@ -36,6 +36,7 @@ class FakeVideoDevice final : public VideoDeviceIo {
   std::uint32_t device_caps = V4L2_CAP_VIDEO_CAPTURE | V4L2_CAP_STREAMING;
   std::vector<std::uint32_t> pixel_formats = {V4L2_PIX_FMT_GREY, V4L2_PIX_FMT_Y16};
   bool supports_crop = true;
+  bool clamps_crop = false;  // moves a crop rectangle inside the sensor instead of taking it
   std::uint32_t sensor_width = 1280;
   std::uint32_t sensor_height = 1024;
   std::uint32_t row_padding_bytes = 0;
@@ -95,6 +96,14 @@ class FakeVideoDevice final : public VideoDeviceIo {
         record("VIDIOC_S_SELECTION");
         if (!supports_crop) return fail(ENOTTY);
         auto& selection = *static_cast<v4l2_selection*>(argument);
+        if (clamps_crop) {
+          // As vivid and most drivers do: the rectangle is moved inside the sensor, not refused.
+          v4l2_rect& r = selection.r;
+          r.width = std::min(r.width, sensor_width);
+          r.height = std::min(r.height, sensor_height);
+          r.left = std::clamp(r.left, 0, static_cast<std::int32_t>(sensor_width - r.width));
+          r.top = std::clamp(r.top, 0, static_cast<std::int32_t>(sensor_height - r.height));
+        }
         crop = selection.r;
         return 0;
       }

@@ -97,6 +97,27 @@ TEST(V4l2Camera, RoiNeedsCroppingUnlessAtTheOrigin) {
   EXPECT_EQ(device.open_fds, 0);  // a failed start unwinds
 }
 
+TEST(V4l2Camera, RoiTheDriverMovesIsRefusedWithOneLine) {
+  // vivid, like most drivers, moves a crop rectangle that leaves the sensor back inside it
+  // and reports success: the camera would stream rows the config did not ask for.
+  FakeVideoDevice device;
+  device.clamps_crop = true;
+  CameraConfig config = small_config();
+  config.roi_top_px = 1024 - config.height_px + 16;
+  V4l2Camera camera(config, device);
+  EXPECT_EQ(camera.start(), CameraStatus::kError);
+  EXPECT_EQ(camera.last_error(),
+            "/dev/video0: VIDIOC_S_SELECTION: ROI top " + std::to_string(config.roi_top_px) +
+                " left 0 " + std::to_string(config.width_px) + "x" +
+                std::to_string(config.height_px) + " not supported (driver offers top " +
+                std::to_string(1024 - config.height_px) + " left 0 " +
+                std::to_string(config.width_px) + "x" + std::to_string(config.height_px) + ")");
+  EXPECT_EQ(device.open_fds, 0);
+  config.roi_top_px = 1024 - config.height_px;  // inside: taken as it is
+  V4l2Camera inside(config, device);
+  EXPECT_EQ(inside.start(), CameraStatus::kOk) << inside.last_error();
+}
+
 TEST(V4l2Camera, LifecycleRunsInOrderAndUnwindsCompletely) {
   FakeVideoDevice device;
   CameraConfig config = small_config();

@@ -1,0 +1,43 @@
+#pragma once
+// The verdict on a `cosmos cell` run inside the HIL guest, from what the cell published over
+// LCM (its poses, status messages and profiles, recorded by lcm-logger), what the player did
+// (player_log.hpp) and the conveyor's ground truth (frame_tape.hpp).
+//
+//   parts    at least required_fraction of the conveyor's parts identified with a pose within
+//            ADD-S 10 % of the part's diameter. A pose is judged where the robot would use it:
+//            in the cell frame at the encoder count of its last profile, against the part's
+//            true pose at the belt position of that profile's frame (frame s is exposed at tick
+//            s · ticks_per_frame, the player's belt). So the encoder count, the frame index
+//            and the stripe all have to be right.
+//   frames   every frame the capture side was given reached the cell as a profile of that
+//            sequence number with its time stamp (within two frame periods after the fill
+//            began), except the one flagged corrupted; the cell's dropped count equals the
+//            sequence gaps; COSMOS_STATUS agrees.
+//   faults   each injected fault shows where it should (the skip's and the stall's gaps, the
+//            corrupted frame missing but not dropped) and the cell ran on to the end.
+#include <vector>
+
+#include "core/profile.hpp"
+#include "core/rigid_transform.hpp"
+#include "realtime/cell/cell_status.hpp"
+#include "realtime/cell/part_pose.hpp"
+#include "tests/hil/check_line.hpp"
+#include "tests/hil/frame_tape.hpp"
+#include "tests/hil/player_log.hpp"
+
+namespace cosmos::hil {
+
+struct CellRun {
+  const TapeHeader* tape = nullptr;
+  const PlayerLog* player = nullptr;
+  std::vector<PartPose> poses;
+  std::vector<CellStatus> statuses;
+  std::vector<Profile> profiles;
+  RigidTransform T_cell_scanner;
+  double mm_per_tick = 0.1;
+  double required_fraction = 0.9;
+};
+
+std::vector<ProbeCheck> check_cell_run(const CellRun& run);
+
+}  // namespace cosmos::hil
