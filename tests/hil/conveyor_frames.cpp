@@ -7,14 +7,9 @@ namespace cosmos::hil {
 
 std::unique_ptr<SimulatedConveyor> make_hil_conveyor(const CellConfig& config,
                                                      const PartCatalog& catalog, int parts) {
-  // As apps/cell_source.cpp builds the cell's simulated conveyor, twins or not.
-  SimulatedConveyorSettings settings;
-  settings.parts = parts > 0 ? parts : config.sim_source.parts;
-  settings.seed = config.sim_source.seed;
-  settings.part_gap_mm = config.sim_source.part_gap_mm;
-  settings.pose =
-      config.sim_source.pose == SimPoseMode::kResting ? PoseMode::kResting : PoseMode::kRandom;
-  settings.part_names = config.sim_source.part_names;
+  // As the cell builds its simulated conveyor, twins or not (apps/cell_world_simulated.cpp).
+  SimulatedConveyorSettings settings = config.sim_source;
+  if (parts > 0) settings.parts = parts;
   return std::make_unique<SimulatedConveyor>(catalog, config.scanner, settings);
 }
 
