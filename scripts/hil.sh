@@ -48,6 +48,12 @@ kernel_dir=$("$root/scripts/hil/fetch_kernel.sh" "$hil_cache" "$log")
 say "kernel $(basename "$kernel_dir") ($(< "$kernel_dir/package") $(< "$kernel_dir/version")) with gpio-sim built out of tree ($(elapsed) s)"
 
 base=$work/regression-80.cmb
+[[ -f $base && $root/config/parts-regression.yaml -nt $base ]] && rm -f "$base"
+# The unit tests' copy of the same base (ctest builds it), when there is one.
+tests_base=$build_dir/test-data/regression-80.cmb
+if [[ ! -f $base && -f $tests_base && $tests_base -nt $root/config/parts-regression.yaml ]]; then
+  cp "$tests_base" "$base"
+fi
 if [[ ! -f $base ]]; then
   "$build_dir/apps/cosmos" modelbase build --catalog "$root/config/parts-regression.yaml" \
     --views 80 --out "$base.partial" >> "$log" 2>&1 || fail "building the model base failed (see $log)"

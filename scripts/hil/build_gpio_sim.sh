@@ -32,7 +32,9 @@ trap 'rm -rf "$work"' EXIT
 packages=("linux-source-$series=$version" "linux-headers-$release=$version"
   "linux-headers-$common=$version" "linux-kbuild-$series")
 echo "build_gpio_sim: apt-get download ${packages[*]}" >> "$log"
-(cd "$work" && apt-get download -q "${packages[@]}" >> "$log" 2>&1) ||
+# A stale package index may name versions the archive no longer has: refresh it once.
+download() { (cd "$work" && apt-get download -q "${packages[@]}" >> "$log" 2>&1); }
+download || { apt-get update -qq >> "$log" 2>&1 && download; } ||
   fail "'apt-get download ${packages[*]}' failed (see $log)"
 for deb in "$work"/linux-headers-*.deb "$work"/linux-kbuild-*.deb; do dpkg -x "$deb" "$work/root"; done
 dpkg-deb --fsys-tarfile "$work"/linux-source-*.deb |

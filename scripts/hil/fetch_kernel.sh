@@ -30,7 +30,9 @@ fi
 work=$(mktemp -d "${TMPDIR:-/tmp}/cosmos-hil-kernel.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 echo "fetch_kernel: apt-get download $image_package busybox-static" >> "$log"
-(cd "$work" && apt-get download -q "$image_package" busybox-static >> "$log" 2>&1) ||
+# A stale package index may name versions the archive no longer has: refresh it once.
+download() { (cd "$work" && apt-get download -q "$image_package" busybox-static >> "$log" 2>&1); }
+download || { apt-get update -qq >> "$log" 2>&1 && download; } ||
   fail "'apt-get download $image_package busybox-static' failed (see $log)"
 for deb in "$work"/*.deb; do dpkg -x "$deb" "$work/root"; done
 

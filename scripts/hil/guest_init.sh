@@ -111,13 +111,19 @@ cell_run() {
   lcm-logger -q -f /tmp/cell.lcm &
   logger=$!
   cosmos cell --config "$config/cell-hil.yaml" --source hardware --hardware "$hardware" \
-    --parts "$parts" --unpaced --duration-s "$duration" 2>&1 | sed 's/^/cell: /'
+    --parts "$parts" --unpaced --duration-s "$duration" > /tmp/cell.out 2>&1
+  cell_status=$?
+  sed 's/^/cell: /' /tmp/cell.out
   wait $player
   player_status=$?
   cat /tmp/player.out
   sleep 1
   kill $logger
   wait $logger
+  if [ $cell_status -ne 0 ]; then
+    say "FAIL cosmos cell exited with status $cell_status"
+    return 1
+  fi
   [ $player_status -eq 0 ] || return 1
   hil_check --config "$config/cell-hil.yaml" --tape /opt/cosmos/tapes/cell.tape \
     --player-log /tmp/player.log --lcm-log /tmp/cell.lcm

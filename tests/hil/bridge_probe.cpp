@@ -133,8 +133,9 @@ std::vector<ProbeCheck> probe_bridge(const BridgeProbeSettings& settings) {
   checks.push_back(check_line(
       missing == 0 && unknown <= unseen && late == 0 && stats.frames == seen.size(),
       "bridge frames: %zu profiles of frames %lld to %lld through HardwareSource, each with "
-      "its sequence number and a time stamp within two frame periods of its fill (%lld not); "
-      "%lld fills without a profile (the corrupted one excepted)",
+      "its sequence number and a time stamp within a frame period of its number's place on "
+      "the capture clock (%lld not); %lld fills without a profile (the corrupted one "
+      "excepted)",
       seen.size(), static_cast<long long>(first), static_cast<long long>(last),
       static_cast<long long>(late), static_cast<long long>(missing)));
   const PlayedFault* skip = fault_of(log, "skip");
@@ -168,18 +169,25 @@ std::vector<ProbeCheck> probe_bridge(const BridgeProbeSettings& settings) {
   // before the first encoder fault and after the last.
   const PlayedFault* jiggle = fault_of(log, "jiggle");
   const PlayedFault* glitch = fault_of(log, "glitch");
+  // The first second is left out: the belt is held until the lines are requested.
+  const auto settled = static_cast<std::int64_t>(plan.capture_rate_hz);
   std::vector<std::int64_t> lag_before, lag_after;
   for (const Seen& s : seen) {
     const std::int64_t lag = s.ticks - s.sequence * plan.ticks_per_frame;
-    if (s.ticks <= 0) continue;  // the belt is held until the lines are requested
+    if (s.sequence < settled) continue;
     if (jiggle && s.sequence < jiggle->sequence) lag_before.push_back(lag);
     if (glitch && s.sequence > glitch->sequence + 2) lag_after.push_back(lag);
   }
-  const std::int64_t drift = median_of(lag_after) - median_of(lag_before);
+  const std::int64_t before = median_of(lag_before), after = median_of(lag_after);
+  // The count is read after the frame arrives, as from a free-running camera: a few ticks
+  // late at most, and no later after the faults than before.
+  const bool on_the_belt = !lag_before.empty() && !lag_after.empty() &&
+                           std::abs(before) <= plan.ticks_per_frame &&
+                           std::abs(after - before) <= 2;
   const bool glitch_seen = encoder.reversals >= 4 || encoder.invalid_transitions >= 1;
   checks.push_back(check_line(
       jiggle != nullptr && glitch != nullptr && encoder.reversals >= 2 && glitch_seen &&
-          std::abs(drift) <= 2 && lost_edges == 0,
+          on_the_belt && lost_edges == 0,
       "bridge encoder: %lld steps, %llu reversals (the %lld-tick jiggle makes 2), %llu invalid "
       "transitions and %llu ignored edges (the glitch makes 1 invalid or 2 reversals); count "
       "minus the belt's at each frame: median %+lld ticks before the faults, %+lld after; %llu "
@@ -187,9 +195,8 @@ std::vector<ProbeCheck> probe_bridge(const BridgeProbeSettings& settings) {
       static_cast<long long>(encoder.steps), static_cast<unsigned long long>(encoder.reversals),
       static_cast<long long>(jiggle ? jiggle->amount : -1),
       static_cast<unsigned long long>(encoder.invalid_transitions),
-      static_cast<unsigned long long>(encoder.ignored_edges),
-      static_cast<long long>(median_of(lag_before)), static_cast<long long>(median_of(lag_after)),
-      static_cast<unsigned long long>(lost_edges)));
+      static_cast<unsigned long long>(encoder.ignored_edges), static_cast<long long>(before),
+      static_cast<long long>(after), static_cast<unsigned long long>(lost_edges)));
   const std::int64_t beam = log.count("beam_arrivals");
   const std::uint64_t filtered = eye.bounces + eye.rejected_pulses + eye.bridged_gaps;
   checks.push_back(check_line(

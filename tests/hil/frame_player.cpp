@@ -8,6 +8,7 @@
 #include "firmware_bridge/kernel_timestamp.hpp"
 #include "tests/hil/capture_ticks.hpp"
 #include "tests/hil/output_stream.hpp"
+#include "tests/hil/realtime_threads.hpp"
 
 namespace cosmos::hil {
 namespace {
@@ -22,6 +23,7 @@ struct QueuedFrame {
   int buffer = -1;
   std::int64_t content = kEmpty;
   std::int64_t retired_ns = -1;  // -1: not (yet) retired
+  std::int64_t queued_ns = 0;
 };
 
 class Player {
@@ -153,7 +155,7 @@ void Player::queue_frame(std::int64_t content) {
   }
   prepared_buffer_ = -1;  // used, or not the frame wanted: a gap or a hold skipped it
   stream_.queue(buffer, format_.size_bytes);
-  queued_.push_back({buffer, content, -1});
+  queued_.push_back({buffer, content, -1, monotonic_now_ns()});
 }
 
 void Player::prepare_frame(std::int64_t content) {
@@ -209,6 +211,7 @@ void Player::resolve_contents() {
   // The head of vivid's output queue at a capture is the first frame, in queue order, not yet
   // retired then: vivid retires the head only once another frame waits behind it.
   std::size_t head = 0;
+  std::int64_t previous = -1;
   for (PlayedCapture& capture : log_.captures) {
     while (head + 1 < queued_.size() && queued_[head].retired_ns >= 0 &&
            queued_[head].retired_ns < capture.t_ns) {
@@ -216,6 +219,22 @@ void Player::resolve_contents() {
     }
     capture.content = queued_[head].content;
     capture.stale = capture.content != content_of(capture.sequence);
+    if (capture.stale) {
+      // Why: the frame before was missing (a gap), the player queued the right one too late,
+      // or vivid's output thread had not yet made it the head.
+      const char* cause = "stale_after_gap";
+      if (previous == capture.sequence - 1) {
+        cause = "stale_player_late";
+        for (std::size_t i = head; i < queued_.size(); ++i) {
+          if (queued_[i].content == content_of(capture.sequence)) {
+            if (queued_[i].queued_ns < capture.t_ns) cause = "stale_output_late";
+            break;
+          }
+        }
+      }
+      ++log_.counts[cause];
+    }
+    previous = capture.sequence;
   }
 }
 
@@ -223,6 +242,9 @@ PlayerLog Player::run() {
   if (!settings_.plan_file.empty()) write_player_plan(settings_.plan_file, log_.plan);
   queue_frame(kEmpty);
   stream_.stream_on();
+  // This thread only: the encoder's waits for gpio-cdev by yielding, which a SCHED_FIFO
+  // thread cannot do to the cell's.
+  run_this_thread_fifo(kPlayerPriority);
   std::int64_t last_sequence = -1;
   std::int64_t last_event_ns = monotonic_now_ns();
   std::int64_t gaps = 0, stale_holds = 0, laser_on = 0, result_rises = 0;
@@ -281,22 +303,23 @@ PlayerLog Player::run() {
   const EncoderPlayerCounts counts = encoder_.counts();
   std::int64_t stale = 0;
   for (const PlayedCapture& capture : log_.captures) stale += capture.stale ? 1 : 0;
-  log_.counts = {{"captures", static_cast<std::int64_t>(log_.captures.size())},
-                 {"merged_events", static_cast<std::int64_t>(log_.merged.size())},
-                 {"silent_first_fill", ticks_.first_fill_silent() ? 1 : 0},
-                 {"stale_captures", stale},
-                 {"held_frames", stale_holds},
-                 {"sequence_gaps", gaps},
-                 {"laser_on_captures", laser_on},
-                 {"result_ready_pulses", result_rises},
-                 {"encoder_ticks", counts.tick},
-                 {"encoder_edges", static_cast<std::int64_t>(counts.edges)},
-                 {"jiggles", static_cast<std::int64_t>(counts.jiggles)},
-                 {"jiggle_reversals", static_cast<std::int64_t>(counts.jiggle_reversals)},
-                 {"glitches", static_cast<std::int64_t>(counts.glitches)},
-                 {"beam_arrivals", static_cast<std::int64_t>(counts.beam_arrivals)},
-                 {"bounced_arrivals", static_cast<std::int64_t>(counts.bounced_arrivals)},
-                 {"unacknowledged_edges", static_cast<std::int64_t>(counts.unacknowledged_edges)}};
+  log_.counts.insert(
+      {{"captures", static_cast<std::int64_t>(log_.captures.size())},
+       {"merged_events", static_cast<std::int64_t>(log_.merged.size())},
+       {"silent_first_fill", ticks_.first_fill_silent() ? 1 : 0},
+       {"stale_captures", stale},
+       {"held_frames", stale_holds},
+       {"sequence_gaps", gaps},
+       {"laser_on_captures", laser_on},
+       {"result_ready_pulses", result_rises},
+       {"encoder_ticks", counts.tick},
+       {"encoder_edges", static_cast<std::int64_t>(counts.edges)},
+       {"jiggles", static_cast<std::int64_t>(counts.jiggles)},
+       {"jiggle_reversals", static_cast<std::int64_t>(counts.jiggle_reversals)},
+       {"glitches", static_cast<std::int64_t>(counts.glitches)},
+       {"beam_arrivals", static_cast<std::int64_t>(counts.beam_arrivals)},
+       {"bounced_arrivals", static_cast<std::int64_t>(counts.bounced_arrivals)},
+       {"unacknowledged_edges", static_cast<std::int64_t>(counts.unacknowledged_edges)}});
   return log_;
 }
 

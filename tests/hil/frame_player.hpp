@@ -43,8 +43,8 @@ struct FramePlayerSettings {
   std::string capture_node = "/dev/video0";
   std::string output_node = "/dev/video1";
   VividLoopSettings loop;
-  double lead_in_s = 8.0;
-  double tail_s = 2.0;  // empty belt played after the last profile, in the cell's duration
+  double lead_in_s = 12.0;  // longer than the cell takes to start (its model base, under TCG)
+  double tail_s = 2.0;      // empty belt played after the last profile, in the cell's duration
   std::vector<FaultAt> faults;
   std::vector<std::size_t> bouncing_arrivals;
   std::filesystem::path plan_file;  // written once the plan is known

@@ -84,9 +84,11 @@ std::string V4l2Node::enumerated_formats(v4l2_buf_type type) const {
 }
 
 std::string fourcc_text(std::uint32_t fourcc) {
+  // Bit 31 marks the big-endian variant of a format (V4L2_PIX_FMT_Y16_BE): not a character.
   std::string text(4, ' ');
   for (int i = 0; i < 4; ++i)
-    text[static_cast<std::size_t>(i)] = static_cast<char>((fourcc >> (8 * i)) & 0xff);
+    text[static_cast<std::size_t>(i)] = static_cast<char>((fourcc >> (8 * i)) & 0x7f);
+  if ((fourcc & (1u << 31)) != 0) text += "-BE";
   return text;
 }
 
