@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "apps/cell_world.hpp"
@@ -37,6 +38,22 @@ double percentile(std::vector<double> values, double q) {
   std::sort(values.begin(), values.end());
   const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(values.size())));
   return values[std::min(values.size() - 1, rank > 0 ? rank - 1 : 0)];
+}
+
+// Every loss and fault total of the run's last COSMOS_STATUS, zeros too: an operator sees
+// that each was counted, not only that nothing was printed.
+void print_losses(const CellStatus& status) {
+  std::string line = "cell: losses and faults:";
+  const char* separator = " ";
+  CellStatus::visit_totals(status, [&](const char* name, std::int64_t total, const char*) {
+    const std::string_view key(name);
+    if (key == "profiles_acquired" || key == "parts_seen" || key == "parts_recognized" ||
+        key == "parts_rejected")
+      return;
+    line += separator + std::string(name) + ' ' + std::to_string(total);
+    separator = ", ";
+  });
+  std::printf("%s\n", line.c_str());
 }
 
 void run(const CellOptions& options) {
@@ -123,6 +140,7 @@ void run(const CellOptions& options) {
       "p50 %.0f us, p99 %.0f us\n",
       summary.profile_time_p50_us, summary.profile_time_p99_us, summary.profile_time_max_us,
       summary.start_jitter_p50_us, summary.start_jitter_p99_us);
+  print_losses(summary.last_status);
   std::printf("cell: %s\n", summary.realtime_report.c_str());
 }
 

@@ -48,11 +48,12 @@ std::string format_pose(const PartPose& pose) {
 std::string format_status(const CellStatus& status) {
   std::ostringstream line;
   line << kStatusChannel << " state=" << to_string(status.state) << " text=\"" << status.state_text
-       << '"' << " acquired=" << status.profiles_acquired << " dropped=" << status.profiles_dropped
-       << " overruns=" << status.deadline_overruns << " p50_us=" << status.profile_time_p50_us
-       << " p99_us=" << status.profile_time_p99_us << " max_us=" << status.profile_time_max_us
-       << " parts_seen=" << status.parts_seen << " recognized=" << status.parts_recognized
-       << " rejected=" << status.parts_rejected
+       << '"';
+  CellStatus::visit_totals(status, [&line](const char* name, std::int64_t total, const char*) {
+    line << ' ' << name << '=' << total;
+  });
+  line << " p50_us=" << status.profile_time_p50_us << " p99_us=" << status.profile_time_p99_us
+       << " max_us=" << status.profile_time_max_us
        << " recognition_queue=" << status.recognition_queue_depth
        << " publish_queue=" << status.publish_queue_depth;
   return line.str();

@@ -36,6 +36,13 @@ struct PhotoEyeEvent {
   std::int64_t encoder_ticks = 0;  // encoder count at that edge
 };
 
+// What the input decoding could not use, since start(): a loss the loop must count, since a
+// lost encoder edge shifts every later pose and a lost photo-eye edge hides a part.
+struct GpioInputHealth {
+  std::uint64_t edges_lost = 0;         // kernel FIFO or event ring overflow, undelivered events
+  std::uint64_t photo_eye_bounces = 0;  // photo-eye edges the debouncer rejected
+};
+
 class GpioLines {
  public:
   virtual ~GpioLines() = default;
@@ -51,6 +58,7 @@ class GpioLines {
   virtual bool part_present() const noexcept = 0;
   // Real-time: the oldest undelivered photo-eye transition; false when there is none.
   virtual bool next_photo_eye_event(PhotoEyeEvent& event) noexcept = 0;
+  virtual GpioInputHealth input_health() const noexcept = 0;
   // Real-time: active = the output's asserted level (after active_low).
   virtual GpioStatus set_output(GpioOutput output, bool active) noexcept = 0;
 

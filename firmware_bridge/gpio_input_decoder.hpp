@@ -51,6 +51,10 @@ class GpioInputDecoder {
   bool part_present() const noexcept { return photo_eye_.present(); }
   bool next_photo_eye_event(PhotoEyeEvent& event) noexcept;
   std::uint64_t lost_photo_eye_events() const noexcept { return lost_events_; }
+  // The decoder's share of GpioInputHealth (a line source adds the edges it lost itself).
+  GpioInputHealth health() const noexcept {
+    return {lost_events_, photo_eye_.counts().bounces + photo_eye_.counts().rejected_pulses};
+  }
 
  private:
   void record(const PhotoEyeChange& change) noexcept;

@@ -51,6 +51,11 @@ class LibgpiodLines final : public GpioLines {
   const GpioInputDecoder& decoder() const noexcept { return decoder_; }
   // Edges the pump could not hold: the loop polled far too rarely.
   std::uint64_t lost_edges() const noexcept { return pump_.lost_edges(); }
+  GpioInputHealth input_health() const noexcept override {
+    GpioInputHealth health = decoder_.health();
+    health.edges_lost += pump_.lost_edges();
+    return health;
+  }
 
  private:
   static constexpr std::size_t kOutputCount = 2;

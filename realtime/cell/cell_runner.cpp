@@ -21,7 +21,13 @@ struct CompletedPose {
 // What the acquisition thread shares with the publisher's status messages.
 struct SharedStatus {
   std::atomic<std::int64_t> overruns{0};
-  std::atomic<std::int64_t> profiles_dropped{0};
+  std::atomic<std::int64_t> profiles_dropped{0};  // the recorded-profile ring's share
+  // The source's SourceHealth, copied by the acquisition thread (the only one that may
+  // read the source) at every status snapshot.
+  std::atomic<std::int64_t> profiles_lost{0}, camera_timeouts{0}, encoder_errors{0},
+      encoder_reversals{0}, gpio_edges_lost{0}, photo_eye_bounces{0};
+  // The source's last call timed out: the camera stalls while this lasts.
+  std::atomic<bool> source_stalled{false};
   std::atomic<std::int64_t> time_p50_ns{0}, time_p99_ns{0}, time_max_ns{0};
   std::atomic<std::int64_t> parts_recognized{0}, parts_rejected{0};
   std::atomic<bool> fault{false};
@@ -58,19 +64,34 @@ CellStatus status_message(ScanLoop& loop, const SharedStatus& shared,
   CellStatus status;
   status.utime_us = utime_us;
   const bool done = shared.acquisition_done.load();
-  status.state = shared.fault ? CellState::kFault : done ? CellState::kIdle : CellState::kScanning;
+  const bool stalled = !done && shared.source_stalled.load();
+  status.state = shared.fault || stalled ? CellState::kFault
+                 : done                  ? CellState::kIdle
+                                         : CellState::kScanning;
   status.state_text = shared.fault ? "the scanner source failed"
+                      : stalled    ? "no frame from the camera within its watchdog (camera timeout)"
                       : done       ? "the source has ended"
                                    : "scanning";
-  status.profiles_acquired = loop.counters().profiles;
-  status.profiles_dropped = shared.profiles_dropped;
+  const ScanLoopCounters& counters = loop.counters();
+  status.profiles_acquired = counters.profiles;
+  status.profiles_lost = shared.profiles_lost;
+  status.profiles_dropped = shared.profiles_dropped + status.profiles_lost;
+  status.profiles_refused = counters.profiles_refused;
   status.deadline_overruns = shared.overruns;
+  status.camera_timeouts = shared.camera_timeouts;
+  status.encoder_errors = shared.encoder_errors;
+  status.encoder_reversals = shared.encoder_reversals;
+  status.gpio_edges_lost = shared.gpio_edges_lost;
+  status.photo_eye_bounces = shared.photo_eye_bounces;
   status.profile_time_p50_us = shared.time_p50_ns / 1e3;
   status.profile_time_p99_us = shared.time_p99_ns / 1e3;
   status.profile_time_max_us = shared.time_max_ns / 1e3;
-  status.parts_seen = loop.counters().parts_seen;
+  status.parts_seen = counters.parts_seen;
   status.parts_recognized = shared.parts_recognized;
   status.parts_rejected = shared.parts_rejected;
+  status.parts_dropped = counters.parts_dropped;
+  status.parts_truncated = counters.parts_truncated;
+  status.runs_dropped = counters.runs_dropped;
   status.recognition_queue_depth = static_cast<std::int32_t>(loop.completed().size());
   status.publish_queue_depth = static_cast<std::int32_t>(poses.size());
   return status;
@@ -103,8 +124,8 @@ void run_publisher(ScanLoop& loop, Publisher& publisher, SpscRing<CompletedPose>
     const bool finished =
         shared.recognizer_done.load(std::memory_order_acquire) && poses.empty() && profiles.empty();
     if (finished || std::chrono::steady_clock::now() >= next_status) {
-      if (!publisher.publish(status_message(loop, shared, poses, last_data_us)))
-        summary.publish_failures++;
+      summary.last_status = status_message(loop, shared, poses, last_data_us);
+      if (!publisher.publish(summary.last_status)) summary.publish_failures++;
       next_status += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
     }
     if (finished) break;
@@ -140,6 +161,18 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
       static_cast<std::int64_t>(settings.publishing.status_period_s * 1e9);
   std::int64_t next_snapshot_ns = monotonic_now_ns() + status_period_ns;
   std::int64_t first_t_us = -1;
+  const auto snapshot_health = [&source, &shared] {
+    const SourceHealth health = source.health();
+    const auto store = [](std::atomic<std::int64_t>& to, std::uint64_t value) {
+      to.store(static_cast<std::int64_t>(value), std::memory_order_relaxed);
+    };
+    store(shared.profiles_lost, health.profiles_lost);
+    store(shared.camera_timeouts, health.camera_timeouts);
+    store(shared.encoder_errors, health.encoder_errors);
+    store(shared.encoder_reversals, health.encoder_reversals);
+    store(shared.gpio_edges_lost, health.gpio_edges_lost);
+    store(shared.photo_eye_bounces, health.photo_eye_bounces);
+  };
   for (;;) {
     pacer.wait_next();
     const SourceStatus status = source.next(profile);
@@ -147,7 +180,17 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
     // for the camera, and the simulator's ray casting is the scanner's work, not the cell's.
     const std::int64_t start_ns = monotonic_now_ns();
     if (status == SourceStatus::kEndOfStream) break;
-    if (status == SourceStatus::kTimeout) continue;
+    if (status == SourceStatus::kTimeout) {
+      // A stall shows live, with its counts from its first timeout on: the periodic
+      // snapshot below would otherwise wait for the next frame.
+      if (!shared.source_stalled.load(std::memory_order_relaxed) || start_ns >= next_snapshot_ns) {
+        snapshot_health();
+        next_snapshot_ns = start_ns + status_period_ns;
+      }
+      shared.source_stalled.store(true, std::memory_order_release);
+      continue;
+    }
+    shared.source_stalled.store(false, std::memory_order_relaxed);
     if (status == SourceStatus::kError) {
       summary.source_error = std::string(source.last_error());
       shared.fault = true;
@@ -177,6 +220,7 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
       shared.time_p99_ns = processing_period.p99_ns();
       shared.time_max_ns = processing_period.max_ns();
       shared.overruns = pacer.overruns();
+      snapshot_health();
       processing_period.reset();
       next_snapshot_ns = end_ns + status_period_ns;
     }
@@ -185,13 +229,14 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
   }
   loop.flush();
   shared.overruns = pacer.overruns();
-  shared.profiles_dropped.fetch_add(static_cast<std::int64_t>(source.dropped_profiles()));
+  snapshot_health();
+  shared.source_stalled = false;
   shared.acquisition_done.store(true, std::memory_order_release);
   recognizer.join();
   publishing.join();
 
   summary.profiles = loop.counters().profiles;
-  summary.profiles_dropped = shared.profiles_dropped;
+  summary.profiles_dropped = shared.profiles_dropped + shared.profiles_lost;
   summary.deadline_overruns = pacer.overruns();
   summary.parts_seen = loop.counters().parts_seen;
   summary.parts_dropped = loop.counters().parts_dropped;

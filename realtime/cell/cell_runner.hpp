@@ -80,6 +80,7 @@ struct CellRunSummary {
   double profile_time_p50_us = 0, profile_time_p99_us = 0, profile_time_p999_us = 0,
          profile_time_max_us = 0;
   double start_jitter_p50_us = 0, start_jitter_p99_us = 0, start_jitter_max_us = 0;
+  CellStatus last_status;  // the last COSMOS_STATUS sent: every total at the end of the run
   std::string realtime_report;
   std::string source_error;  // set when the source failed
 };

@@ -71,6 +71,16 @@ void to_message(const CellStatus& status, cosmos_lcm::cell_status_t& message) {
   message.parts_rejected = status.parts_rejected;
   message.recognition_queue_depth = status.recognition_queue_depth;
   message.publish_queue_depth = status.publish_queue_depth;
+  message.profiles_lost = status.profiles_lost;
+  message.profiles_refused = status.profiles_refused;
+  message.camera_timeouts = status.camera_timeouts;
+  message.encoder_errors = status.encoder_errors;
+  message.encoder_reversals = status.encoder_reversals;
+  message.gpio_edges_lost = status.gpio_edges_lost;
+  message.photo_eye_bounces = status.photo_eye_bounces;
+  message.parts_dropped = status.parts_dropped;
+  message.parts_truncated = status.parts_truncated;
+  message.runs_dropped = status.runs_dropped;
 }
 
 void from_message(const cosmos_lcm::cell_status_t& message, CellStatus& status) {
@@ -88,6 +98,16 @@ void from_message(const cosmos_lcm::cell_status_t& message, CellStatus& status) 
   status.parts_rejected = message.parts_rejected;
   status.recognition_queue_depth = message.recognition_queue_depth;
   status.publish_queue_depth = message.publish_queue_depth;
+  status.profiles_lost = message.profiles_lost;
+  status.profiles_refused = message.profiles_refused;
+  status.camera_timeouts = message.camera_timeouts;
+  status.encoder_errors = message.encoder_errors;
+  status.encoder_reversals = message.encoder_reversals;
+  status.gpio_edges_lost = message.gpio_edges_lost;
+  status.photo_eye_bounces = message.photo_eye_bounces;
+  status.parts_dropped = message.parts_dropped;
+  status.parts_truncated = message.parts_truncated;
+  status.runs_dropped = message.runs_dropped;
 }
 
 void to_message(const Profile& profile, cosmos_lcm::range_profile_t& message) {

@@ -134,9 +134,13 @@ void ScanLoop::start_parts(std::int64_t profile_index, const Profile& profile) {
 
 void ScanLoop::process(const Profile& profile) {
   const auto profile_index = static_cast<std::int64_t>(profile.seq);
-  conditioner_.condition(profile, row_belt_.data());
+  // A refused profile becomes an empty row, which keeps the rows in step with the profiles
+  // (a part's length and encoder range stay right); the refusal is counted for the operator.
+  if (!conditioner_.condition(profile, row_belt_.data()))
+    counters_.profiles_refused.fetch_add(1, std::memory_order_relaxed);
   std::reverse_copy(row_belt_.begin(), row_belt_.end(), row_loop_.begin());
   for (const TrackedPart& part : tracker_.add_row(row_belt_.data(), row_index_)) complete(part);
+  counters_.runs_dropped.store(tracker_.dropped_runs(), std::memory_order_relaxed);
   start_parts(profile_index, profile);
   const std::vector<std::int64_t>& labels = tracker_.row_labels();
   const int w = width();

@@ -91,6 +91,8 @@ struct ScanLoopCounters {
   std::atomic<std::int64_t> parts_dropped{0};    // no free builder or queue slot
   std::atomic<std::int64_t> parts_truncated{0};  // longer than max_part_rows
   std::atomic<std::int64_t> noise_components{0};
+  std::atomic<std::int64_t> profiles_refused{0};  // the conditioner refused its grid
+  std::atomic<std::int64_t> runs_dropped{0};      // the tracker's, beyond its limits
 };
 
 class ScanLoop {

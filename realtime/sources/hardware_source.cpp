@@ -93,6 +93,20 @@ SourceStatus HardwareSource::start() {
   return SourceStatus::kOk;
 }
 
+SourceHealth HardwareSource::health() const noexcept {
+  SourceHealth health{.profiles_lost = dropped_};
+  if (camera_) health.camera_timeouts = camera_->stats().timeouts;
+  if (gpio_) {
+    const EncoderReading encoder = gpio_->encoder();
+    const GpioInputHealth inputs = gpio_->input_health();
+    health.encoder_errors = encoder.invalid_transitions;
+    health.encoder_reversals = encoder.reversals;
+    health.gpio_edges_lost = inputs.edges_lost;
+    health.photo_eye_bounces = inputs.photo_eye_bounces;
+  }
+  return health;
+}
+
 void HardwareSource::reserve(Profile& profile) const {
   profile.reserve(static_cast<std::size_t>(parameters_.points_per_profile));
 }

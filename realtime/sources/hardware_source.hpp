@@ -17,7 +17,7 @@
 // (StripeProfiler) and gives the frame back. seq is the camera's frame index, t_us the
 // frame's time stamp (CLOCK_MONOTONIC), encoder_ticks the count once the frame has arrived:
 // a free-running camera's count lags the exposure by the frame's readout and is, at
-// constant belt speed, a constant offset. Frames the camera lost add to dropped_profiles().
+// constant belt speed, a constant offset. Frames the camera lost add to health().profiles_lost.
 // A finite camera's end (CameraStatus::kEndOfStream) is the source's kEndOfStream.
 //
 // Photo eye: its transitions are counted (photo_eye(): arrivals, departures, and the latest
@@ -69,7 +69,7 @@ class HardwareSource final : public ScannerSource {
 
   double mm_per_profile() const override { return parameters_.profile_step_mm(); }
   std::string_view last_error() const noexcept override { return error_.view(); }
-  std::uint64_t dropped_profiles() const noexcept override { return dropped_; }
+  SourceHealth health() const noexcept override;
 
   // The last frame's stripe (diagnostics); valid after the first profile.
   const StripeProfiler* profiler() const { return profiler_.get(); }

@@ -7,7 +7,7 @@
 // start() reads the whole log (set-up, not real-time: it may allocate and take a while), so
 // next() only copies a stored profile into the caller's slot. A profile wider than the slot
 // (or than max_profile_width) would make the slot allocate: it is skipped and counted in
-// dropped_profiles() instead, as a live overload would be; so is a profile event that does not
+// health().profiles_lost instead, as a live overload would be; so is a profile event that does not
 // decode or is out of bounds. A truncated or damaged log is refused (it would replay as a
 // shorter run).
 #include <cstddef>
@@ -46,7 +46,7 @@ class ReplaySource final : public ScannerSource {
 
   double mm_per_profile() const override { return settings_.mm_per_profile; }
   std::string_view last_error() const noexcept override { return error_.view(); }
-  std::uint64_t dropped_profiles() const noexcept override { return dropped_; }
+  SourceHealth health() const noexcept override { return {.profiles_lost = dropped_}; }
 
   std::size_t profile_count() const { return profiles_.size(); }
 

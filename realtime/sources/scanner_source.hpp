@@ -15,6 +15,17 @@
 
 namespace cosmos {
 
+// What a source lost or found wrong since start(), for COSMOS_STATUS: each is a loss a robot
+// downstream would otherwise never hear of. Sources without the device report 0.
+struct SourceHealth {
+  std::uint64_t profiles_lost = 0;      // camera frame gaps, replayed profiles skipped
+  std::uint64_t camera_timeouts = 0;    // waits for a frame that hit the watchdog
+  std::uint64_t encoder_errors = 0;     // quadrature states skipped (a missed edge)
+  std::uint64_t encoder_reversals = 0;  // direction changes of the count
+  std::uint64_t gpio_edges_lost = 0;    // input edges never decoded (FIFO or ring overflow)
+  std::uint64_t photo_eye_bounces = 0;  // photo-eye edges rejected as bounce or glitch
+};
+
 enum class SourceStatus : std::uint8_t {
   kOk,           // `out` holds the next profile
   kEndOfStream,  // a finite source is exhausted; every later call says so too
@@ -39,8 +50,8 @@ class ScannerSource {
   virtual double mm_per_profile() const = 0;
   // One line naming the device or file and the reason of the last failure; empty if none.
   virtual std::string_view last_error() const noexcept = 0;
-  // Profiles lost so far (camera frame gaps, replayed profiles too wide for the ring slots).
-  virtual std::uint64_t dropped_profiles() const noexcept = 0;
+  // Losses and faults so far. Acquisition thread, or once the source is stopped.
+  virtual SourceHealth health() const noexcept = 0;
 };
 
 }  // namespace cosmos

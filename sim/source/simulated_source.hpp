@@ -46,7 +46,7 @@ class SimulatedSource final : public ScannerSource {
 
   double mm_per_profile() const override { return parameters_.profile_step_mm(); }
   std::string_view last_error() const noexcept override { return error_.view(); }
-  std::uint64_t dropped_profiles() const noexcept override { return 0; }
+  SourceHealth health() const noexcept override { return {}; }
 
   const SimulatedConveyor& conveyor() const { return conveyor_; }
   const std::vector<PlacedSimPart>& placed_parts() const { return conveyor_.placed_parts(); }

@@ -40,7 +40,7 @@ class HardwareTwinSource final : public ScannerSource {
 
   double mm_per_profile() const override { return hardware_.mm_per_profile(); }
   std::string_view last_error() const noexcept override { return hardware_.last_error(); }
-  std::uint64_t dropped_profiles() const noexcept override { return hardware_.dropped_profiles(); }
+  SourceHealth health() const noexcept override { return hardware_.health(); }
 
   const SimulatedConveyor& conveyor() const { return *conveyor_; }
   const PlacedSimPart* placed_part_scanned_in(std::int64_t first_profile,

@@ -74,6 +74,7 @@ class SimulatedGpioLines final : public GpioLines {
   }
   GpioStatus set_output(GpioOutput output, bool active) noexcept override;
   std::string_view last_error() const noexcept override { return error_.view(); }
+  GpioInputHealth input_health() const noexcept override { return decoder_.health(); }
 
   bool started() const noexcept { return started_; }
   const GpioInputDecoder& decoder() const noexcept { return decoder_; }

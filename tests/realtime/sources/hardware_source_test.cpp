@@ -40,7 +40,11 @@ class FakeGpioLines final : public GpioLines {
     ticks += 4;
     return GpioStatus::kTimeout;
   }
-  EncoderReading encoder() const noexcept override { return {ticks, 0, 0, 0, 0}; }
+  EncoderReading encoder() const noexcept override {
+    EncoderReading reading = encoder_faults;
+    reading.ticks = ticks;
+    return reading;
+  }
   bool part_present() const noexcept override { return false; }
   bool next_photo_eye_event(PhotoEyeEvent& event) noexcept override {
     if (photo_eye_events.empty()) return false;
@@ -54,12 +58,15 @@ class FakeGpioLines final : public GpioLines {
     return GpioStatus::kOk;
   }
   std::string_view last_error() const noexcept override { return error; }
+  GpioInputHealth input_health() const noexcept override { return health; }
 
   GpioStatus start_status = GpioStatus::kOk;
   std::string error;
   bool started = false;
   bool laser_on = false;
   std::int64_t ticks = 1000;
+  EncoderReading encoder_faults;  // invalid transitions and reversals to report
+  GpioInputHealth health;
   std::deque<PhotoEyeEvent> photo_eye_events;
   std::vector<std::pair<std::int64_t, bool>> result_ready;  // (ticks, level) per write
 };
@@ -163,7 +170,8 @@ TEST_F(HardwareSourceTest, FramesBecomeProfilesOfTheStep) {
   const std::vector<Profile>& profiles = stream.profiles;
   EXPECT_EQ(source.last_error(),
             "/dev/video0: poll: no frame within 10000 us (1 consecutive timeouts)");
-  EXPECT_EQ(source.dropped_profiles(), 1u);
+  EXPECT_EQ(source.health().profiles_lost, 1u);
+  EXPECT_EQ(source.health().camera_timeouts, 1u);
   EXPECT_EQ(profiles[0].seq, 0u);
   EXPECT_EQ(profiles[2].seq, 3u);
   EXPECT_EQ(profiles[0].encoder_ticks, 1004);
@@ -227,6 +235,22 @@ TEST_F(HardwareSourceTest, PhotoEyeTransitionsAreCountedAndResultsPulseResultRea
   source.stop();  // a pulse in progress ends with the source
   ASSERT_EQ(gpio_.result_ready.size(), 6u);
   EXPECT_FALSE(gpio_.result_ready.back().second);
+}
+
+TEST_F(HardwareSourceTest, EncoderAndGpioFaultsShowInItsHealth) {
+  V4l2Camera camera(config_.camera, device_);
+  HardwareSource source(config_, parameters_, camera, gpio_);
+  ASSERT_EQ(source.start(), SourceStatus::kOk) << source.last_error();
+  gpio_.encoder_faults.invalid_transitions = 3;
+  gpio_.encoder_faults.reversals = 2;
+  gpio_.health = {.edges_lost = 5, .photo_eye_bounces = 7};
+  const SourceHealth health = source.health();
+  EXPECT_EQ(health.encoder_errors, 3u);
+  EXPECT_EQ(health.encoder_reversals, 2u);
+  EXPECT_EQ(health.gpio_edges_lost, 5u);
+  EXPECT_EQ(health.photo_eye_bounces, 7u);
+  EXPECT_EQ(health.camera_timeouts, 0u);
+  EXPECT_EQ(health.profiles_lost, 0u);
 }
 
 TEST_F(HardwareSourceTest, GpioAndSensorMismatchFailuresNameTheirKeys) {

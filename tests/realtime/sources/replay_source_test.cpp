@@ -88,7 +88,7 @@ TEST_F(ReplaySourceTest, ProfilesComeBackBitIdenticalAndOtherChannelsAreSkipped)
   source.reserve(slot);
   EXPECT_EQ(slot.z_mm.capacity(), 640u);
   EXPECT_EQ(source.next(slot), SourceStatus::kEndOfStream);
-  EXPECT_EQ(source.dropped_profiles(), 0u);
+  EXPECT_EQ(source.health().profiles_lost, 0u);
 
   // start() rewinds.
   ASSERT_EQ(source.start(), SourceStatus::kOk);
@@ -112,14 +112,14 @@ TEST_F(ReplaySourceTest, ProfilesWiderThanTheSlotAreDroppedAndCounted) {
   EXPECT_EQ(slot.seq, 0u);
   ASSERT_EQ(source.next(slot), SourceStatus::kOk);
   testing::expect_same_profile(recorded[2], slot);
-  EXPECT_EQ(source.dropped_profiles(), 1u);
+  EXPECT_EQ(source.health().profiles_lost, 1u);
   EXPECT_EQ(source.next(slot), SourceStatus::kEndOfStream);
 
   // A slot that was never reserved cannot take a profile without allocating: dropped too.
   ASSERT_EQ(source.start(), SourceStatus::kOk);
   Profile unreserved;
   EXPECT_EQ(source.next(unreserved), SourceStatus::kEndOfStream);
-  EXPECT_EQ(source.dropped_profiles(), 3u);
+  EXPECT_EQ(source.health().profiles_lost, 3u);
 }
 
 TEST_F(ReplaySourceTest, ProfilesWithoutAUsableSpacingAreDroppedAndCounted) {
@@ -128,7 +128,7 @@ TEST_F(ReplaySourceTest, ProfilesWithoutAUsableSpacingAreDroppedAndCounted) {
   recorded[1].dx_mm = 0.0;  // the conditioner divides by it
   ReplaySource source(write_log(recorded));
   ASSERT_EQ(source.start(), SourceStatus::kOk) << source.last_error();
-  EXPECT_EQ(source.dropped_profiles(), 1u);
+  EXPECT_EQ(source.health().profiles_lost, 1u);
   Profile slot;
   source.reserve(slot);
   ASSERT_EQ(source.next(slot), SourceStatus::kOk);

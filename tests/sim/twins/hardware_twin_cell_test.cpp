@@ -68,7 +68,7 @@ TEST(HardwareTwinSource, GivesTheSimulatedSourcesCameraModeProfiles) {
       identical += same_samples(profile, truth) ? 1 : 0;
     }
     EXPECT_EQ(identical, static_cast<int>(stream.profiles.size()));
-    EXPECT_EQ(twins.dropped_profiles(), 0u);
+    EXPECT_EQ(twins.health().profiles_lost, 0u);
     EXPECT_EQ(twins.hardware().photo_eye().arrivals, 3u);
     EXPECT_EQ(twins.hardware().photo_eye().departures, 3u);
     EXPECT_TRUE(twins.gpio().output_active(GpioOutput::kLaserEnable));
