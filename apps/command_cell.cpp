@@ -1,14 +1,18 @@
 // `cosmos cell --config config/cell.yaml [--source sim|hardware] [--hardware FILE] [--parts N]
-// [--duration-s S] [--unpaced] [--replay FILE]`: the work cell. Profiles from the scanner
-// source run through the real-time loop (realtime/cell/cell_runner.hpp); each part's pose goes out
-// on COSMOS_POSE while a live table shows it; a summary ends the run.
+// [--duration-s S] [--unpaced] [--replay FILE] [--http HOST:PORT]`: the work cell. Profiles from
+// the scanner source run through the real-time loop (realtime/cell/cell_runner.hpp); each part's
+// pose goes out on COSMOS_POSE while a live table shows it; a summary ends the run. With --http
+// (or web.http_address) a live web view serves the belt, the poses and the status counters
+// (realtime/web/web_view.hpp) from before the model base loads until the run ends.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <charconv>
+#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "apps/cell_world.hpp"
@@ -18,6 +22,7 @@
 #include "core/recognition/recognizer.hpp"
 #include "realtime/cell/cell_runner.hpp"
 #include "realtime/config/cell_config.hpp"
+#include "realtime/web/web_view.hpp"
 
 namespace cosmos::cli {
 namespace {
@@ -30,6 +35,7 @@ struct CellOptions {
   double duration_s = 0;
   bool unpaced = false;
   std::string replay;
+  std::string http;  // replaces web.http_address
 };
 
 double percentile(std::vector<double> values, double q) {
@@ -39,8 +45,26 @@ double percentile(std::vector<double> values, double q) {
   return values[std::min(values.size() - 1, rank > 0 ? rank - 1 : 0)];
 }
 
+// The web view, when an address is given, started before anything slow.
+std::unique_ptr<WebView> start_web_view(const CellOptions& options, const CellConfig& config) {
+  const std::string& text = options.http.empty() ? config.web.http_address : options.http;
+  if (text.empty()) return nullptr;
+  std::string reason;
+  const std::optional<HttpAddress> address = parse_http_address(text, reason);
+  if (!address) {
+    throw InputError(options.http.empty() ? options.config + ": web.http_address: " + reason
+                                          : "--http: " + reason);
+  }
+  auto web = std::make_unique<WebView>(config.web, *address);
+  std::printf("cell: web view at %s\n", web->url().c_str());
+  std::fflush(stdout);
+  web->show_state("loading the model base");
+  return web;
+}
+
 void run(const CellOptions& options) {
   const CellConfig config = load_cell_config(options.config);
+  const std::unique_ptr<WebView> web = start_web_view(options, config);
   CellWorld world(config);
   ScannerSource& source =
       world.open_source({options.source, options.hardware, options.replay, options.parts});
@@ -55,7 +79,8 @@ void run(const CellOptions& options) {
   const ModelBase& base = loaded.base;
   const CosmosParameters& cosmos = loaded.cosmos;
   const Recognizer recognizer(base, cosmos, RecognitionParameters{});
-  LcmPublisher publisher(config.lcm.url, config.lcm.channels());
+  LcmPublisher lcm_publisher(config.lcm.url, config.lcm.channels());
+  Publisher& publisher = web ? web->publisher(lcm_publisher) : lcm_publisher;
 
   const bool unpaced = options.unpaced || !options.replay.empty();
   ScanLoopSettings loop_settings{.conditioning = config.conditioning,
@@ -75,6 +100,11 @@ void run(const CellOptions& options) {
   context.mm_per_tick = config.scanner.encoder_mm_per_tick;
   context.grid_mm = config.conditioning.grid_mm;
   context.x0_loop_mm = loop.x0_loop_mm();
+  context.keep_part_image = web != nullptr;
+  if (web) {
+    web->set_belt(config.conditioning.grid_mm, loop.width(), loop.x0_loop_mm());
+    web->show_state("starting");
+  }
 
   CellRunSettings settings;
   settings.line_rate_hz = config.scanner.line_rate_hz;
@@ -93,6 +123,7 @@ void run(const CellOptions& options) {
         const PartPose& pose = recognition.pose;
         latencies_ms.push_back(pose.latency_ms);
         world.announce_pose_published();
+        if (web) web->observe(recognition);
         const std::string truth =
             world.simulated_part_in(recognition.first_profile, recognition.last_profile);
         if (!truth.empty()) correct += pose.status == PoseStatus::kOk && pose.part_name == truth;
@@ -124,6 +155,11 @@ void run(const CellOptions& options) {
       summary.profile_time_p50_us, summary.profile_time_p99_us, summary.profile_time_max_us,
       summary.start_jitter_p50_us, summary.start_jitter_p99_us);
   std::printf("cell: %s\n", summary.realtime_report.c_str());
+  if (web && config.web.linger_s > 0) {
+    std::printf("cell: web view stays up for %g s (web.linger_s)\n", config.web.linger_s);
+    std::fflush(stdout);
+    std::this_thread::sleep_for(std::chrono::duration<double>(config.web.linger_s));
+  }
 }
 
 // --parts sets sim_source.parts: the range its visit() declares, before any config is read.
@@ -157,6 +193,17 @@ void install(CLI::App& root) {
   command->add_flag("--unpaced", options->unpaced, "do not pace the loop at the line rate");
   command->add_option("--replay", options->replay, "replay an lcm-logger log of COSMOS_PROFILE")
       ->type_name("FILE");
+  command
+      ->add_option("--http", options->http,
+                   "serve the live web view at HOST:PORT (e.g. 127.0.0.1:8080; default: "
+                   "web.http_address, empty = off)")
+      ->type_name("HOST:PORT")
+      ->check(
+          [](const std::string& text) {
+            std::string reason;
+            return parse_http_address(text, reason) ? std::string() : reason;
+          },
+          "HOST:PORT");
   command->callback([options] { run(*options); });
 }
 
