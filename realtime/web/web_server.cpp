@@ -1,6 +1,7 @@
 #include "realtime/web/web_server.hpp"
 
 #include <httplib.h>
+#include <sys/socket.h>
 
 #include <cerrno>
 #include <chrono>
@@ -32,6 +33,13 @@ WebServer::WebServer(WebSnapshotStore& store)
   // A finished stream's connection waits this long for another request: short, so that
   // stopping never waits long for the server's threads.
   server_->set_keep_alive_timeout(1);
+  // SO_REUSEADDR only: a restarted cell rebinds its port at once, but a second cell on the
+  // same port is refused (httplib's default, SO_REUSEPORT, would let both listen and split
+  // the browsers between them).
+  server_->set_socket_options([](int socket) {
+    const int yes = 1;
+    ::setsockopt(socket, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
   add_routes();
 }
 
