@@ -27,6 +27,7 @@ class WebView {
 
   // "http://HOST:PORT/" with the port actually bound.
   std::string url() const;
+  int port() const { return server_.port(); }
   // The loop's row geometry, for the belt strip: before the run.
   void set_belt(double grid_mm, int belt_columns, double x0_loop_mm);
   // Before the run: what the cell does meanwhile (e.g. loading the model base).

@@ -113,9 +113,15 @@ function drawStrip() {
     }
     label.className = 'strip-label' + (part.pose.status === 'OK' ? '' : ' rejected');
     label.textContent = part.pose.status === 'OK' ? part.pose.part_name : part.pose.status.toLowerCase();
-    label.style.left = `${((left + tile.width_px / 2) / length) * 100}%`;
-    label.style.top = `${((tile.top_px + tile.height_px / 2) / b.width_px) * 100}%`;
-    label.style.transform = 'translate(-50%, -50%)';
+    // Above the part, or below it for every other part, so neighbours' names do not collide;
+    // kept inside the strip.
+    const below = seq % 2 === 1;
+    const half = label.offsetWidth / 2 / labels.clientWidth;
+    const centre = (left + tile.width_px / 2) / length;
+    label.style.left = `${Math.min(1 - half, Math.max(half, centre)) * 100}%`;
+    const edge = below ? tile.top_px + tile.height_px : tile.top_px;
+    label.style.top = `${(edge / b.width_px) * 100}%`;
+    label.style.transform = below ? 'translate(-50%, 2px)' : 'translate(-50%, calc(-100% - 2px))';
   }
   for (const label of [...labels.children]) {
     if (!shown.has(Number(label.dataset.seq))) label.remove();
