@@ -49,13 +49,13 @@ double percentile(std::vector<double> values, double q) {
 std::unique_ptr<WebView> start_web_view(const CellOptions& options, const CellConfig& config) {
   const std::string& text = options.http.empty() ? config.web.http_address : options.http;
   if (text.empty()) return nullptr;
+  // Bad input names where the address came from.
+  const std::string source =
+      options.http.empty() ? options.config + ": web.http_address" : std::string("--http");
   std::string reason;
   const std::optional<HttpAddress> address = parse_http_address(text, reason);
-  if (!address) {
-    throw InputError(options.http.empty() ? options.config + ": web.http_address: " + reason
-                                          : "--http: " + reason);
-  }
-  auto web = std::make_unique<WebView>(config.web, *address);
+  if (!address) throw InputError(source + ": " + reason);
+  auto web = std::make_unique<WebView>(config.web, *address, source);
   std::printf("cell: web view at %s\n", web->url().c_str());
   std::fflush(stdout);
   web->show_state("loading the model base");

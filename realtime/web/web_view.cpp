@@ -2,9 +2,10 @@
 
 namespace cosmos {
 
-WebView::WebView(const WebViewSettings& settings, const HttpAddress& address)
+WebView::WebView(const WebViewSettings& settings, const HttpAddress& address,
+                 const std::string& what)
     : settings_(settings), address_(address), store_(settings), server_(store_) {
-  server_.start(address_, "web.http_address");
+  server_.start(address_, what);
 }
 
 std::string WebView::url() const {

@@ -21,9 +21,11 @@ namespace cosmos {
 
 class WebView {
  public:
-  // Starts serving at once (the page shows the cell starting up); throws InputError naming
-  // web.http_address when the address cannot be listened on.
-  WebView(const WebViewSettings& settings, const HttpAddress& address);
+  // Starts serving at once (the page shows the cell starting up); throws InputError
+  // "<what>: cannot listen on HOST:PORT: reason" when the address cannot be listened on
+  // (`what` names where the address came from: the config key or the option).
+  WebView(const WebViewSettings& settings, const HttpAddress& address,
+          const std::string& what = "web.http_address");
 
   // "http://HOST:PORT/" with the port actually bound.
   std::string url() const;
