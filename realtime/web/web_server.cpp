@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "core/input_error.hpp"
+#include "realtime/web/background_thread_pool.hpp"
 #include "realtime/web/web_assets.hpp"
 
 namespace cosmos {
@@ -29,7 +30,7 @@ bool write_event(httplib::DataSink& sink, const char* name, const std::string& j
 
 WebServer::WebServer(WebSnapshotStore& store)
     : store_(store), server_(std::make_unique<httplib::Server>()) {
-  server_->new_task_queue = [] { return new httplib::ThreadPool(kStreamThreads); };
+  server_->new_task_queue = [] { return new BackgroundThreadPool(kStreamThreads); };
   // A finished stream's connection waits this long for another request: short, so that
   // stopping never waits long for the server's threads.
   server_->set_keep_alive_timeout(1);
@@ -101,6 +102,7 @@ void WebServer::start(const HttpAddress& address, const std::string& what) {
   }
   if (address.port != 0) port_ = address.port;
   thread_ = std::thread([this] {
+    lower_this_thread_priority(BackgroundThreadPool::kNice);
     server_->listen_after_bind();
     listening_done_ = true;
   });

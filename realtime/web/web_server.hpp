@@ -5,8 +5,9 @@
 //   event: summary  data: WebSnapshotStore::status_document()'s JSON
 //   event: part     data: {"pose": pose_json, "tile": belt tile or null}
 // A new stream first gets the summary and every part the store still keeps. Each stream holds
-// one of the server's threads (kStreamThreads of them) and reads the store through
-// wait_for_update, so a stalled browser stalls only its own stream.
+// one of the server's threads (kStreamThreads of them, at a lowered priority:
+// background_thread_pool.hpp) and reads the store through wait_for_update, so a stalled
+// browser stalls only its own stream.
 #include <atomic>
 #include <memory>
 #include <string>

@@ -243,11 +243,17 @@ function onSummary(summary) {
   const now = performance.now();
   const belt = summary.belt;
   const scanning = summary.status && summary.status.state === 'SCANNING';
+  // The belt's speed from the head's advance between summaries; a summary sent for a new
+  // part may repeat the head, which keeps the last speed.
   const head = view.head;
-  head.rate = scanning && head.profile >= 0 && belt.head_profile > head.profile
-    ? (belt.head_profile - head.profile) / (now - head.at) : 0;
-  head.profile = belt.head_profile;
-  head.at = now;
+  if (belt.head_profile !== head.profile) {
+    head.rate = scanning && head.profile >= 0 && belt.head_profile > head.profile
+      ? (belt.head_profile - head.profile) / (now - head.at) : 0;
+    head.profile = belt.head_profile;
+    head.at = now;
+  } else if (!scanning) {
+    head.rate = 0;
+  }
   const resized = !view.belt || view.belt.strip_length_m !== belt.strip_length_m;
   view.belt = belt;
   view.recentPoses = summary.recent_poses || view.recentPoses;
