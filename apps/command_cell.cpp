@@ -1,15 +1,19 @@
 // `cosmos cell --config config/cell.yaml [--source sim|hardware] [--hardware FILE] [--parts N]
-// [--duration-s S] [--unpaced] [--replay FILE]`: the work cell. Profiles from the scanner
-// source run through the real-time loop (realtime/cell/cell_runner.hpp); each part's pose goes out
-// on COSMOS_POSE while a live table shows it; a summary ends the run.
+// [--duration-s S] [--unpaced] [--replay FILE] [--http HOST:PORT]`: the work cell. Profiles from
+// the scanner source run through the real-time loop (realtime/cell/cell_runner.hpp); each part's
+// pose goes out on COSMOS_POSE while a live table shows it; a summary ends the run. With --http
+// (or web.http_address) a live web view serves the belt, the poses and the status counters
+// (realtime/web/web_view.hpp) from before the model base loads until the run ends.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <charconv>
+#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 #include "apps/cell_world.hpp"
@@ -19,6 +23,7 @@
 #include "core/recognition/recognizer.hpp"
 #include "realtime/cell/cell_runner.hpp"
 #include "realtime/config/cell_config.hpp"
+#include "realtime/web/web_view.hpp"
 
 namespace cosmos::cli {
 namespace {
@@ -31,6 +36,7 @@ struct CellOptions {
   double duration_s = 0;
   bool unpaced = false;
   std::string replay;
+  std::string http;  // replaces web.http_address
 };
 
 double percentile(std::vector<double> values, double q) {
@@ -56,8 +62,26 @@ void print_losses(const CellStatus& status) {
   std::printf("%s\n", line.c_str());
 }
 
+// The web view, when an address is given, started before anything slow.
+std::unique_ptr<WebView> start_web_view(const CellOptions& options, const CellConfig& config) {
+  const std::string& text = options.http.empty() ? config.web.http_address : options.http;
+  if (text.empty()) return nullptr;
+  // Bad input names where the address came from.
+  const std::string source =
+      options.http.empty() ? options.config + ": web.http_address" : std::string("--http");
+  std::string reason;
+  const std::optional<HttpAddress> address = parse_http_address(text, reason);
+  if (!address) throw InputError(source + ": " + reason);
+  auto web = std::make_unique<WebView>(config.web, *address, source);
+  std::printf("cell: web view at %s\n", web->url().c_str());
+  std::fflush(stdout);
+  web->show_state("loading the model base");
+  return web;
+}
+
 void run(const CellOptions& options) {
   const CellConfig config = load_cell_config(options.config);
+  const std::unique_ptr<WebView> web = start_web_view(options, config);
   CellWorld world(config);
   ScannerSource& source =
       world.open_source({options.source, options.hardware, options.replay, options.parts});
@@ -72,7 +96,8 @@ void run(const CellOptions& options) {
   const ModelBase& base = loaded.base;
   const CosmosParameters& cosmos = loaded.cosmos;
   const Recognizer recognizer(base, cosmos, RecognitionParameters{});
-  LcmPublisher publisher(config.lcm.url, config.lcm.channels());
+  LcmPublisher lcm_publisher(config.lcm.url, config.lcm.channels());
+  Publisher& publisher = web ? web->publisher(lcm_publisher) : lcm_publisher;
 
   const bool unpaced = options.unpaced || !options.replay.empty();
   ScanLoopSettings loop_settings{.conditioning = config.conditioning,
@@ -92,6 +117,11 @@ void run(const CellOptions& options) {
   context.mm_per_tick = config.scanner.encoder_mm_per_tick;
   context.grid_mm = config.conditioning.grid_mm;
   context.x0_loop_mm = loop.x0_loop_mm();
+  context.keep_part_image = web != nullptr;
+  if (web) {
+    web->set_belt(config.conditioning.grid_mm, loop.width(), loop.x0_loop_mm());
+    web->show_state("starting");
+  }
 
   CellRunSettings settings;
   settings.line_rate_hz = config.scanner.line_rate_hz;
@@ -110,6 +140,7 @@ void run(const CellOptions& options) {
         const PartPose& pose = recognition.pose;
         latencies_ms.push_back(pose.latency_ms);
         world.announce_pose_published();
+        if (web) web->observe(recognition);
         const std::string truth =
             world.simulated_part_in(recognition.first_profile, recognition.last_profile);
         if (!truth.empty()) correct += pose.status == PoseStatus::kOk && pose.part_name == truth;
@@ -142,6 +173,11 @@ void run(const CellOptions& options) {
       summary.start_jitter_p50_us, summary.start_jitter_p99_us);
   print_losses(summary.last_status);
   std::printf("cell: %s\n", summary.realtime_report.c_str());
+  if (web && config.web.linger_s > 0) {
+    std::printf("cell: web view stays up for %g s (web.linger_s)\n", config.web.linger_s);
+    std::fflush(stdout);
+    std::this_thread::sleep_for(std::chrono::duration<double>(config.web.linger_s));
+  }
 }
 
 // --parts sets sim_source.parts: the range its visit() declares, before any config is read.
@@ -175,6 +211,17 @@ void install(CLI::App& root) {
   command->add_flag("--unpaced", options->unpaced, "do not pace the loop at the line rate");
   command->add_option("--replay", options->replay, "replay an lcm-logger log of COSMOS_PROFILE")
       ->type_name("FILE");
+  command
+      ->add_option("--http", options->http,
+                   "serve the live web view at HOST:PORT (e.g. 127.0.0.1:8080; default: "
+                   "web.http_address, empty = off)")
+      ->type_name("HOST:PORT")
+      ->check(
+          [](const std::string& text) {
+            std::string reason;
+            return parse_http_address(text, reason) ? std::string() : reason;
+          },
+          "HOST:PORT");
   command->callback([options] { run(*options); });
 }
 

@@ -11,6 +11,7 @@ packages=(
   libgpiod-dev
   liblcm-dev liblcm-bin libglib2.0-dev iproute2
   libflatbuffers-dev flatbuffers-compiler
+  libcpp-httplib-dev
 )
 
 missing=()

@@ -113,6 +113,9 @@ void run_publisher(ScanLoop& loop, Publisher& publisher, SpscRing<CompletedPose>
       last_data_us = pose.utime_us;
       (publisher.publish(pose) ? summary.poses_published : summary.publish_failures)++;
       if (observer) observer(completed->recognition);
+      // The observer has had the part's image (PartRecognitionContext::keep_part_image): free
+      // it here rather than leave it in the slot until the ring comes round again.
+      completed->recognition.image = RangeImage{};
       poses.pop();
       idle = false;
     }

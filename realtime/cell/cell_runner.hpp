@@ -85,7 +85,7 @@ struct CellRunSummary {
   std::string source_error;  // set when the source failed
 };
 
-// Called on the publisher thread after each pose went out (the live table).
+// Called on the publisher thread after each pose went out (the live table, the web view).
 using PoseObserver = std::function<void(const PartRecognition&)>;
 
 CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,

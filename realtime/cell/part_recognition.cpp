@@ -83,7 +83,7 @@ PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& c
 PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContext& context,
                                std::int64_t part_seq) {
   const auto start = std::chrono::steady_clock::now();
-  const PartView part = extract_part_view(builder, context);
+  PartView part = extract_part_view(builder, context);
   const double features_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   PartRecognition out;
@@ -120,6 +120,7 @@ PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContex
   pose.translation_cell_part_mm = T_cell_part.translation_mm;
   pose.score = out.result.score;
   pose.registration_rms_mm = out.result.registration_rms_mm;
+  if (context.keep_part_image) out.image = std::move(part.image);
   return out;
 }
 

@@ -32,6 +32,9 @@ struct PartRecognitionContext {
   double mm_per_tick = 0.1;
   double grid_mm = 0.4;
   double x0_loop_mm = 0;
+  // Hand the part's view image on with its pose (PartRecognition::image), for the live web
+  // view's belt strip: the recognizer made it anyway, so keeping it costs a move.
+  bool keep_part_image = false;
 };
 
 // The part's range image and chapter-3 analysis in the loop frame.
@@ -53,6 +56,8 @@ struct PartRecognition {
   RigidTransform T_belt_part;
   std::int64_t first_profile = 0;
   std::int64_t last_profile = -1;
+  // The part's view in the loop frame (only its own pixels), when keep_part_image; else empty.
+  RangeImage image;
 };
 PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContext& context,
                                std::int64_t part_seq);

@@ -10,6 +10,7 @@
 //   lcm:          where and on which channels the cell publishes
 //   realtime:     the acquisition thread's scheduling and the queue sizes
 //   sim_source:   SimulatedSourceSettings (realtime/config/sim_source_settings.hpp)
+//   web:          the live web view (realtime/config/web_view_settings.hpp)
 // The cell's COSMOS parameters are not here: it takes those its model base was built with.
 // An unknown section or key, a retired key, a value of the wrong type or out of its range
 // throws InputError `file:LINE: section.key: reason`; a missing file or a YAML syntax error one
@@ -21,6 +22,7 @@
 #include "core/rigid_transform.hpp"
 #include "realtime/cell/cell_runner.hpp"
 #include "realtime/config/sim_source_settings.hpp"
+#include "realtime/config/web_view_settings.hpp"
 #include "realtime/lcm/lcm_channels.hpp"
 #include "realtime/loop/part_tracker.hpp"
 #include "realtime/loop/scan_loop.hpp"
@@ -109,6 +111,7 @@ struct CellConfig {
   LcmSettings lcm;
   RealtimeQueueSettings realtime;
   SimulatedSourceSettings sim_source;
+  WebViewSettings web;
 
   // Rows (profiles) of the longest part: max_part_length_mm over the belt step per profile.
   int max_part_rows() const;
@@ -123,6 +126,7 @@ struct CellConfig {
     v("lcm", lcm, "where the cell publishes");
     v("realtime", realtime, "the acquisition thread and the queues between threads");
     v("sim_source", sim_source, "the simulated source (sim/source/simulated_source.hpp)");
+    v("web", web, "the live web view (realtime/web/web_view.hpp)");
   }
 };
 
