@@ -90,7 +90,7 @@ class MemorySource final : public ScannerSource {
   void stop() noexcept override {}
   double mm_per_profile() const override { return ScannerParameters{}.profile_step_mm(); }
   std::string_view last_error() const noexcept override { return {}; }
-  std::uint64_t dropped_profiles() const noexcept override { return 0; }
+  SourceHealth health() const noexcept override { return {}; }
 
  private:
   const std::vector<Profile>& profiles_;

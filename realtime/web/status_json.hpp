@@ -1,7 +1,7 @@
 #pragma once
-// COSMOS_STATUS as JSON for the web view (/api/status, the page's counters): one function over
-// CellStatus's fields, one line each, in their declaration order, so a new counter in
-// realtime/cell/cell_status.hpp needs one line here and the page lists it unasked.
+// COSMOS_STATUS as JSON for the web view (/api/status, the page's counters): the state, every
+// total of CellStatus::visit_totals in its order, then the period's timings and the queues, so
+// a new counter declared in realtime/cell/cell_status.hpp shows on the page unasked.
 #include <nlohmann/json.hpp>
 
 #include "realtime/cell/cell_status.hpp"
