@@ -51,8 +51,8 @@ TEST(StatusJson, CarriesEveryFieldWithItsValue) {
   EXPECT_EQ(json.at("camera_timeouts"), 105);
   EXPECT_EQ(json.at("runs_dropped"), 115);
   std::size_t totals = 0;
-  CellStatus::visit_totals(CellStatus{},
-                           [&totals](const char*, std::int64_t, const char*) { ++totals; });
+  const CellStatus empty;
+  CellStatus::visit_totals(empty, [&totals](const char*, std::int64_t, const char*) { ++totals; });
   EXPECT_EQ(json.size(), 3u + totals + 5u);
 }
 
