@@ -19,10 +19,14 @@ constexpr char kPoseChannel[] = "COSMOS_POSE";
 
 const char* status_name(int8_t status) {
   switch (status) {
-    case cosmos_lcm::part_pose_t::OK: return "OK";
-    case cosmos_lcm::part_pose_t::REJECTED: return "REJECTED";
-    case cosmos_lcm::part_pose_t::ERROR: return "ERROR";
-    default: return "UNKNOWN";
+    case cosmos_lcm::part_pose_t::OK:
+      return "OK";
+    case cosmos_lcm::part_pose_t::REJECTED:
+      return "REJECTED";
+    case cosmos_lcm::part_pose_t::ERROR:
+      return "ERROR";
+    default:
+      return "UNKNOWN";
   }
 }
 
