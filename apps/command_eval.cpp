@@ -53,7 +53,9 @@ std::vector<EvaluationRecord> run_tests(const std::vector<EvaluationTest>& plan,
   std::atomic<std::size_t> next{0}, done{0};
   std::exception_ptr error;
   std::mutex error_mutex;
-  ProgressReporter progress("eval", "scans");
+  ProgressReporter progress("eval", "scans", [](int done, int total) {
+    return std::to_string(done) + "/" + std::to_string(total) + " scans recognized";
+  });
   std::mutex progress_mutex;
   const auto work = [&] {
     try {

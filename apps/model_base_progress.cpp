@@ -18,9 +18,10 @@ std::string clock_text(double seconds) {
   return text;
 }
 
-ProgressReporter::ProgressReporter(std::string label, std::string unit)
+ProgressReporter::ProgressReporter(std::string label, std::string unit, LogText log_text)
     : label_(std::move(label)),
       unit_(std::move(unit)),
+      log_text_(std::move(log_text)),
       terminal_(::isatty(::fileno(stderr)) != 0),
       start_(std::chrono::steady_clock::now()) {}
 
@@ -47,18 +48,25 @@ void ProgressReporter::update(double fraction, int done, int total, const std::s
                  remaining.empty() ? "" : ", ", remaining.c_str(),
                  item.empty() || complete ? "" : ("  " + item).c_str());
     if (complete) std::fputc('\n', stderr);
-  } else if (done > logged_done_ && (complete || done / line_every > logged_done_ / line_every)) {
-    std::fprintf(stderr, "%s: %d/%d %s done, %s elapsed%s%s\n", label_.c_str(), done, total,
-                 unit_.c_str(), clock_text(elapsed_s).c_str(), remaining.empty() ? "" : ", ",
-                 remaining.c_str());
-    logged_done_ = done;
+  } else {
+    for (int item_done = logged_done_ + 1; item_done <= done; ++item_done) {
+      if (item_done % line_every != 0 && item_done != total) continue;
+      std::fprintf(stderr, "%s: %s (%s elapsed%s%s)\n", label_.c_str(),
+                   log_text_(item_done, total).c_str(), clock_text(elapsed_s).c_str(),
+                   remaining.empty() ? "" : ", ", remaining.c_str());
+    }
+    logged_done_ = std::max(logged_done_, done);
   }
   finished_ = complete;
   std::fflush(stderr);
 }
 
 ModelBaseProgress progress_printer(const PartCatalog& catalog) {
-  auto reporter = std::make_shared<ProgressReporter>("modelbase", "parts");
+  auto reporter =
+      std::make_shared<ProgressReporter>("modelbase", "parts", [&catalog](int done, int total) {
+        return "part " + std::to_string(done) + "/" + std::to_string(total) + " " +
+               catalog.parts[static_cast<std::size_t>(done - 1)].name + " scanned";
+      });
   return [&catalog, reporter](const ModelBaseBuildProgress& p) {
     const double fraction =
         p.views_total > 0 ? static_cast<double>(p.views_done) / p.views_total : 1.0;

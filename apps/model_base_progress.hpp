@@ -5,6 +5,7 @@
 // the time remaining; in a log (stderr not a terminal) one line per finished step, so a log of
 // a long build stays short and readable.
 #include <chrono>
+#include <functional>
 #include <string>
 
 #include "sim/model_base_build/model_base_builder.hpp"
@@ -14,8 +15,12 @@ namespace cosmos {
 
 class ProgressReporter {
  public:
-  // `label` starts every line ("modelbase"), `unit` names the items counted ("parts").
-  ProgressReporter(std::string label, std::string unit);
+  // What a log line says of item `done` (1-based) of `total`, e.g. "part 3/25 cup scanned".
+  using LogText = std::function<std::string(int done, int total)>;
+
+  // `label` starts every line ("modelbase"), `unit` names the items counted on the bar
+  // ("parts"), `log_text` the finished item in a log line.
+  ProgressReporter(std::string label, std::string unit, LogText log_text);
 
   // `fraction` of the whole work done in [0, 1] (finer than the items when an item is long),
   // `done` of `total` items finished, `item` what is being worked on (may be empty).
@@ -25,6 +30,7 @@ class ProgressReporter {
  private:
   std::string label_;
   std::string unit_;
+  LogText log_text_;
   bool terminal_;
   bool finished_ = false;
   int logged_done_ = 0;
