@@ -1,5 +1,6 @@
 #include "apps/model_base_progress.hpp"
 
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -38,15 +39,21 @@ void ProgressReporter::update(double fraction, int done, int total, const std::s
           : "";
   const bool complete = done >= total;
   if (terminal_) {
-    constexpr int kWidth = 30;
+    constexpr int kWidth = 20;
     const int filled = static_cast<int>(kWidth * fraction);
-    const std::string bar = std::string(static_cast<std::size_t>(filled), '#') +
-                            std::string(static_cast<std::size_t>(kWidth - filled), '.');
+    std::string line = label_ + ": [" + std::string(static_cast<std::size_t>(filled), '#') +
+                       std::string(static_cast<std::size_t>(kWidth - filled), '.') + "] " +
+                       std::to_string(done) + "/" + std::to_string(total) + " " + unit_ + ", " +
+                       clock_text(elapsed_s) + " elapsed";
+    if (!remaining.empty()) line += ", " + remaining;
+    if (!item.empty() && !complete) line += ", " + item;
+    // A line longer than the terminal would wrap, and \r would then redraw only its last row.
+    struct winsize size {};
+    if (::ioctl(::fileno(stderr), TIOCGWINSZ, &size) == 0 && size.ws_col > 1 &&
+        line.size() >= size.ws_col)
+      line.resize(size.ws_col - 1U);
     // \033[K clears what a longer previous line left behind.
-    std::fprintf(stderr, "\r%s: [%s] %d/%d %s, %s elapsed%s%s%s\033[K", label_.c_str(), bar.c_str(),
-                 done, total, unit_.c_str(), clock_text(elapsed_s).c_str(),
-                 remaining.empty() ? "" : ", ", remaining.c_str(),
-                 item.empty() || complete ? "" : ("  " + item).c_str());
+    std::fprintf(stderr, "\r%s\033[K", line.c_str());
     if (complete) std::fputc('\n', stderr);
   } else {
     for (int item_done = logged_done_ + 1; item_done <= done; ++item_done) {
