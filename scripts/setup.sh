@@ -42,7 +42,7 @@ if ((${#missing[@]})); then
   log_dir=${COSMOS_BUILD_DIR:-$root/build}/logs
   mkdir -p "$log_dir"
   log=$log_dir/setup.log
-  echo "setup: installing ${#missing[@]} Debian packages (${missing[*]}); apt's output in $log"
+  echo "setup: installing Debian packages: ${missing[*]} (apt's output in $log)"
   sudo_cmd=()
   if [[ $(id -u) -ne 0 ]]; then sudo_cmd=(sudo); fi
   {
