@@ -22,7 +22,7 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/cosmos-check-package.XXXXXX")
 
 previous_prefix=$(sed -n 's/^CMAKE_INSTALL_PREFIX:PATH=//p' "$build_dir/CMakeCache.txt" 2> /dev/null)
 cleanup() {
-  "${sudo_cmd[@]}" dpkg -r cosmos-cell >> "$log" 2>&1 || true
+  "${sudo_cmd[@]}" dpkg --purge cosmos-cell >> "$log" 2>&1 || true
   cmake -S "$root" -B "$build_dir" -DCMAKE_INSTALL_PREFIX="${previous_prefix:-/usr/local}" \
     >> "$log" 2>&1 || true
   rm -rf "$work"
@@ -40,7 +40,7 @@ for library in liblcm1 libyaml-cpp; do
   [[ $depends == *"$library"* ]] || fail "$deb: Depends lacks $library: $depends"
 done
 
-"${sudo_cmd[@]}" dpkg -r cosmos-cell >> "$log" 2>&1 || true
+"${sudo_cmd[@]}" dpkg --purge cosmos-cell >> "$log" 2>&1 || true
 if ! "${sudo_cmd[@]}" dpkg -i "$deb" >> "$log" 2>&1; then
   run env DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get -f install -y -qq
 fi
