@@ -17,7 +17,8 @@ struct CellModelBase {
 
 // Reads `path` for a cell with `config`. InputError naming the file when it is missing or
 // refused: a base whose views were taken on another grid (either pitch) or belt threshold
-// than the cell's conditioning gives its scans.
+// than the cell's conditioning gives its scans. A base it accepts is named on stderr in one line
+// (parts, views, when the file was written), so the reuse of a cached base is not silent.
 CellModelBase read_cell_model_base(const std::filesystem::path& path, const CellConfig& config);
 
 }  // namespace cosmos

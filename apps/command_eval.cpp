@@ -8,11 +8,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "apps/command_registry.hpp"
+#include "apps/model_base_progress.hpp"
 #include "core/input_error.hpp"
 #include "core/io/model_base_file.hpp"
 #include "core/io/recorded_parameters.hpp"
@@ -51,13 +53,18 @@ std::vector<EvaluationRecord> run_tests(const std::vector<EvaluationTest>& plan,
   std::atomic<std::size_t> next{0}, done{0};
   std::exception_ptr error;
   std::mutex error_mutex;
+  ProgressReporter progress("eval", "scans", [](int done, int total) {
+    return std::to_string(done) + "/" + std::to_string(total) + " scans recognized";
+  });
+  std::mutex progress_mutex;
   const auto work = [&] {
     try {
       for (std::size_t i = next++; i < plan.size(); i = next++) {
         records[i] = run_evaluation_test(plan[i], parts, scanner, conditioning, recognizer, base);
-        const std::size_t finished = ++done;
-        if (finished % 10 == 0 || finished == plan.size())
-          std::fprintf(stderr, "eval: %zu/%zu scans recognized\n", finished, plan.size());
+        const std::lock_guard lock(progress_mutex);
+        const int finished = static_cast<int>(++done);
+        const int total = static_cast<int>(plan.size());
+        progress.update(static_cast<double>(finished) / total, finished, total, "", 10);
       }
     } catch (...) {
       const std::lock_guard lock(error_mutex);

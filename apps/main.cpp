@@ -6,6 +6,7 @@
 
 #include "apps/command_registry.hpp"
 #include "core/input_error.hpp"
+#include "cosmos_build_info.hpp"
 
 namespace cosmos::cli {
 namespace {
@@ -27,13 +28,19 @@ void install_commands(CLI::App& root) {
 
 int main(int argc, char** argv) {
   CLI::App app{"COSMOS-Cell: free-form part recognition from range data (Dorai's COSMOS)"};
-  app.require_subcommand(1);
+  // `cosmos` alone is someone finding their way: the help, not an error.
+  app.require_subcommand(0, 1);
+  app.set_version_flag("--version",
+                       std::string("cosmos ") + cosmos::build_info::kVersion + " (" +
+                           cosmos::build_info::kGitCommit + ")",
+                       "print the version and the git commit it was built from");
   // Usage errors are one line too (CLI11 would add a "Run with --help" line).
   app.failure_message(
       [](const CLI::App*, const CLI::Error& error) { return std::string(error.what()) + "\n"; });
   cosmos::cli::install_commands(app);
   try {
     app.parse(argc, argv);
+    if (app.get_subcommands().empty()) std::cout << app.help();
   } catch (const CLI::ParseError& error) {
     return app.exit(error);
   } catch (const cosmos::InputError& error) {

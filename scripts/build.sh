@@ -1,8 +1,18 @@
 #!/usr/bin/env bash
-# Installs what is missing, configures and builds COSMOS-Cell (Release) into build/.
+# Installs what is missing, configures and builds COSMOS-Cell (Release) into build/. The
+# compiler's output goes to build/logs/build.log and is shown only when the build fails.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/setup.sh"
 build_dir=${COSMOS_BUILD_DIR:-$root/build}
-cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release > /dev/null
-cmake --build "$build_dir" --parallel "$(nproc)"
+mkdir -p "$build_dir/logs"
+log=$build_dir/logs/build.log
+if [[ ! -f $build_dir/CMakeCache.txt ]]; then
+  echo "build: first build into $build_dir (about 9 minutes on 2 cores; log: $log)"
+fi
+if ! { cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release &&
+  cmake --build "$build_dir" --parallel "$(nproc)"; } > "$log" 2>&1; then
+  tail -n 100 "$log"
+  echo "build: failed (the whole output is in $log)" >&2
+  exit 1
+fi

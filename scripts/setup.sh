@@ -1,10 +1,16 @@
 #!/usr/bin/env bash
 # Installs the Debian packages COSMOS-Cell builds against, only when one is missing,
 # so the README's commands work on a fresh Debian 12 machine and cost nothing after.
+# apt's and dpkg's output goes to a log (one line per step here; the log's end on failure).
+#
+#   scripts/setup.sh                      what the build and `scripts/test.sh` need
+#   scripts/setup.sh --client-kit-checks  also what scripts/check_client_kit.sh runs: an X
+#                                         server (Xvfb) and the AWT part of the JRE for lcm-spy
 set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
 
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config git
   libeigen3-dev libopencv-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libassimp-dev libembree-dev libqhull-dev
@@ -12,7 +18,19 @@ packages=(
   liblcm-dev liblcm-bin libglib2.0-dev iproute2
   libflatbuffers-dev flatbuffers-compiler
   libcpp-httplib-dev
+  # The client kit: the Java message classes (cosmos_lcm_types.jar) are compiled against LCM's
+  # Java runtime.
+  default-jdk-headless liblcm-java
 )
+for argument in "$@"; do
+  case $argument in
+    --client-kit-checks) packages+=(xvfb default-jre) ;;
+    *)
+      echo "setup: unknown option '$argument' (expected --client-kit-checks)" >&2
+      exit 2
+      ;;
+  esac
+done
 
 missing=()
 for package in "${packages[@]}"; do
@@ -22,10 +40,20 @@ for package in "${packages[@]}"; do
 done
 
 if ((${#missing[@]})); then
-  echo "setup: installing ${missing[*]}"
+  log_dir=${COSMOS_BUILD_DIR:-$root/build}/logs
+  mkdir -p "$log_dir"
+  log=$log_dir/setup.log
+  echo "setup: installing Debian packages: ${missing[*]} (apt's output in $log)"
   sudo_cmd=()
   if [[ $(id -u) -ne 0 ]]; then sudo_cmd=(sudo); fi
-  "${sudo_cmd[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  {
+    "${sudo_cmd[@]}" apt-get update -qq &&
+      DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq \
+        --no-install-recommends "${missing[@]}"
+  } > "$log" 2>&1 || {
+    tail -n 20 "$log" >&2
+    echo "setup: apt-get failed (the whole output is in $log)" >&2
+    exit 1
+  }
 fi
-"$(dirname "$0")/fetch_catalog.sh"
+"$root/scripts/fetch_catalog.sh"
