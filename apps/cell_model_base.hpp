@@ -17,7 +17,8 @@ struct CellModelBase {
 
 // Reads `path` for a cell with `config`. InputError naming the file when it is missing or
 // refused: a base whose views were taken on another grid (either pitch) or belt threshold
-// than the cell's conditioning gives its scans.
+// than the cell's conditioning gives its scans. With faults.corrupt_model_base the base is read
+// with one byte flipped, and refused so (the injected fault of a damaged base at start).
 CellModelBase read_cell_model_base(const std::filesystem::path& path, const CellConfig& config);
 
 }  // namespace cosmos

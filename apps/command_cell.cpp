@@ -92,6 +92,7 @@ void run(const CellOptions& options) {
   context.mm_per_tick = config.scanner.encoder_mm_per_tick;
   context.grid_mm = config.conditioning.grid_mm;
   context.x0_loop_mm = loop.x0_loop_mm();
+  context.stream_faults = world.stream_faults();
 
   CellRunSettings settings;
   settings.line_rate_hz = config.scanner.line_rate_hz;
@@ -100,6 +101,7 @@ void run(const CellOptions& options) {
   settings.threads = config.realtime.threads;
   settings.publishing = config.lcm.publishing;
   settings.duration_s = options.duration_s;
+  settings.recognizer_delay_ms = config.faults.recognizer_delay_ms;
 
   std::vector<double> latencies_ms;
   int correct = 0;

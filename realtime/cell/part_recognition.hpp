@@ -20,6 +20,7 @@
 #include "core/rigid_transform.hpp"
 #include "realtime/cell/part_pose.hpp"
 #include "realtime/loop/scan_loop.hpp"
+#include "realtime/sources/stream_fault_log.hpp"
 
 namespace cosmos {
 
@@ -32,6 +33,9 @@ struct PartRecognitionContext {
   double mm_per_tick = 0.1;
   double grid_mm = 0.4;
   double x0_loop_mm = 0;
+  // The source's stream faults (stream_checked_source.hpp): a part whose rows span one is
+  // published as ERROR. Null: unchecked.
+  const StreamFaultLog* stream_faults = nullptr;
 };
 
 // The part's range image and chapter-3 analysis in the loop frame.
