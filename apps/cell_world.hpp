@@ -27,6 +27,7 @@ struct CellSourceChoice {
   std::string hardware;        // the hardware YAML
   std::string replay;          // an LCM log; wins over `source`
   int parts = -1;              // simulated parts; <= 0: sim_source.parts
+  bool repeat = false;         // the simulated parts again and again (RepeatingSource)
 };
 
 class CellWorld {

@@ -9,6 +9,7 @@
 #include "core/io/xxh64.hpp"
 #include "realtime/config/hardware_config.hpp"
 #include "realtime/sources/hardware_source.hpp"
+#include "realtime/sources/repeating_source.hpp"
 #include "realtime/sources/stream_checked_source.hpp"
 #include "sim/model_base_build/catalog_content_hash.hpp"
 #include "sim/model_base_build/model_base_builder.hpp"
@@ -53,6 +54,7 @@ struct CellWorld::State {
   std::unique_ptr<StreamCheckedSource> source;
   const SimulatedConveyor* conveyor = nullptr;  // the source's, when it has one
   HardwareSource* hardware = nullptr;           // the source's, when it is one
+  std::int64_t repeat_profiles = 0;             // --repeat: profiles per pass of the belt
 };
 
 CellWorld::CellWorld(const CellConfig& config)
@@ -91,6 +93,12 @@ ScannerSource& CellWorld::open_source(const CellSourceChoice& choice) {
         state_->catalog, config.scanner, source_settings(choice, config), config.faults);
     state_->conveyor = &simulated->conveyor();
     opened = std::move(simulated);
+  }
+  if (choice.repeat && state_->conveyor) {
+    state_->repeat_profiles = state_->conveyor->last_profile() + 1;
+    opened = std::make_unique<RepeatingSource>(
+        std::move(opened), config.scanner.encoder_ticks_per_profile,
+        config.scanner.time_us_of_profile(1) - config.scanner.time_us_of_profile(0));
   }
   state_->source = std::make_unique<StreamCheckedSource>(std::move(opened),
                                                          config.scanner.encoder_ticks_per_profile);
@@ -132,6 +140,11 @@ bool CellWorld::has_ground_truth() const { return state_->conveyor != nullptr; }
 std::string CellWorld::simulated_part_in(std::int64_t first_profile,
                                          std::int64_t last_profile) const {
   if (!state_->conveyor) return "";
+  if (state_->repeat_profiles > 0) {  // the pass's own profile indices
+    const std::int64_t pass_start = first_profile - first_profile % state_->repeat_profiles;
+    first_profile -= pass_start;
+    last_profile -= pass_start;
+  }
   const PlacedSimPart* placed =
       state_->conveyor->placed_part_scanned_in(first_profile, last_profile);
   return placed ? placed->name : "";

@@ -30,6 +30,7 @@ struct CellOptions {
   int parts = -1;
   double duration_s = 0;
   bool unpaced = false;
+  bool repeat = false;
   std::string replay;
 };
 
@@ -59,8 +60,8 @@ void print_losses(const CellStatus& status) {
 void run(const CellOptions& options) {
   const CellConfig config = load_cell_config(options.config);
   CellWorld world(config);
-  ScannerSource& source =
-      world.open_source({options.source, options.hardware, options.replay, options.parts});
+  ScannerSource& source = world.open_source(
+      {options.source, options.hardware, options.replay, options.parts, options.repeat});
   if (source.start() != SourceStatus::kOk) throw InputError(std::string(source.last_error()));
   if (std::abs(source.mm_per_profile() - config.conditioning.grid_mm) > 1e-9)
     throw InputError(options.config +
@@ -175,6 +176,8 @@ void install(CLI::App& root) {
   command->add_option("--duration-s", options->duration_s, "stop after this much scanning time")
       ->check(CLI::NonNegativeNumber);
   command->add_flag("--unpaced", options->unpaced, "do not pace the loop at the line rate");
+  command->add_flag("--repeat", options->repeat,
+                    "simulated parts: start the belt over at its end, until --duration-s");
   command->add_option("--replay", options->replay, "replay an lcm-logger log of COSMOS_PROFILE")
       ->type_name("FILE");
   command->callback([options] { run(*options); });
