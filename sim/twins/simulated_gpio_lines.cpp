@@ -128,9 +128,9 @@ void SimulatedGpioLines::push_encoder_edges(std::int64_t tick) noexcept {
     // B, the direction, changes before the step it sets (high: counting down).
     if ((step < 0) != step_down_) {
       step_down_ = step < 0;
-      merger_.push({t_ns, GpioInput::kEncoderB, step_down_});
+      merger_.push({t_ns - 1, GpioInput::kEncoderB, step_down_});
     }
-    merger_.push({t_ns + 1, GpioInput::kEncoderA, true});
+    merger_.push({t_ns, GpioInput::kEncoderA, true});
     merger_.push({(t_ns + clock_.tick_time_ns(tick + 1)) / 2, GpioInput::kEncoderA, false});
     return;
   }

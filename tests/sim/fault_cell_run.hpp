@@ -2,13 +2,18 @@
 // The cell run over one faulty source that the fault-injection tests share: catalog parts of
 // config/parts-regression.yaml on the simulated belt, the regression model base, the stream
 // checker every cell source passes through, unpaced (every part recognized), and a status
-// every millisecond so that a fault shows as FAULT while the run goes on. What comes back:
-// the summary, every pose with its ground truth, and every status sent.
+// every millisecond. So that the FAULT a fault raises is seen whatever the machine's load,
+// the stream slows down once a fault total has grown (1 ms before each profile, which changes
+// no data) until the publisher has sent a FAULT status. What comes back: the summary, every
+// pose with its ground truth, and every status sent.
+#include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "core/io/model_base_file.hpp"
@@ -50,6 +55,59 @@ inline void inject_once(FaultInjectionSettings& settings, InjectedFault fault,
   for (settings.seed = 1; settings.seed < 1000; ++settings.seed)
     if (FaultPlan(settings).occurrence_start(fault, every) < every + every / 3) return;
 }
+
+// Counts the FAULT statuses it keeps.
+class FaultWatchingPublisher final : public Publisher {
+ public:
+  bool publish(const PartPose& pose) override { return memory.publish(pose); }
+  bool publish(const Profile& profile) override { return memory.publish(profile); }
+  bool publish(const CellStatus& status) override {
+    if (status.state == CellState::kFault) faults.fetch_add(1);
+    return memory.publish(status);
+  }
+  MemoryPublisher memory;
+  std::atomic<int> faults{0};
+};
+
+// The checked source, slowed after a fault until a FAULT status went out (at most 3 s).
+class SlowAfterFaultSource final : public ScannerSource {
+ public:
+  SlowAfterFaultSource(StreamCheckedSource& source, const std::atomic<int>& faults_published)
+      : source_(source), faults_published_(faults_published) {}
+  SourceStatus start() override { return source_.start(); }
+  void reserve(Profile& profile) const override { source_.reserve(profile); }
+  SourceStatus next(Profile& out) noexcept override {
+    if (waiting_ && faults_published_.load() > faults_at_fault_) waiting_ = false;
+    if (waiting_ && slowed_ms_ < 3000) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      ++slowed_ms_;
+    }
+    const SourceStatus status = source_.next(out);
+    const std::uint64_t total = fault_total(source_.health());
+    if (total > last_total_ && !waiting_) {
+      waiting_ = true;
+      faults_at_fault_ = faults_published_.load();
+    }
+    last_total_ = total;
+    return status;
+  }
+  void stop() noexcept override { source_.stop(); }
+  double mm_per_profile() const override { return source_.mm_per_profile(); }
+  std::string_view last_error() const noexcept override { return source_.last_error(); }
+  SourceHealth health() const noexcept override { return source_.health(); }
+
+ private:
+  static std::uint64_t fault_total(const SourceHealth& h) {
+    return h.profiles_lost + h.camera_timeouts + h.encoder_errors + h.encoder_reversals +
+           h.gpio_edges_lost + h.photo_eye_bounces + h.encoder_stalls + h.laser_off_profiles;
+  }
+  StreamCheckedSource& source_;
+  const std::atomic<int>& faults_published_;
+  std::uint64_t last_total_ = 0;
+  bool waiting_ = false;
+  int faults_at_fault_ = 0;
+  int slowed_ms_ = 0;
+};
 
 struct FaultCellRun {
   CellRunSummary summary;
@@ -133,14 +191,15 @@ inline FaultCellRun run_faulty_cell(
   settings.deterministic_output = true;
   settings.publishing.status_period_s = 0.001;
   settings.recognizer_delay_ms = recognizer_delay_ms;
-  MemoryPublisher publisher;
-  run.summary = run_cell(
-      checked, loop, context, publisher, settings, [&](const PartRecognition& recognition) {
+  FaultWatchingPublisher publisher;
+  SlowAfterFaultSource slowed(checked, publisher.faults);
+  run.summary =
+      run_cell(slowed, loop, context, publisher, settings, [&](const PartRecognition& recognition) {
         run.recognitions.push_back(recognition);
         run.truths.push_back(truth(recognition.first_profile, recognition.last_profile));
       });
   checked.stop();
-  run.statuses = publisher.statuses;
+  run.statuses = publisher.memory.statuses;
   return run;
 }
 
