@@ -1,5 +1,7 @@
 #include "realtime/cell/cell_runner.hpp"
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <string>
 #include <thread>
@@ -33,6 +35,8 @@ struct SharedStatus {
   std::atomic<std::int64_t> time_p50_ns{0}, time_p99_ns{0}, time_max_ns{0};
   std::atomic<std::int64_t> parts_recognized{0}, parts_rejected{0};
   std::atomic<bool> fault{false};
+  // The source's one line, written before `fault` is set (release) and read after it.
+  std::array<char, 256> fault_reason{};
   std::atomic<bool> acquisition_done{false}, recognizer_done{false};
 };
 
@@ -70,10 +74,11 @@ CellStatus status_message(ScanLoop& loop, const SharedStatus& shared,
   status.state = shared.fault || stalled ? CellState::kFault
                  : done                  ? CellState::kIdle
                                          : CellState::kScanning;
-  status.state_text = shared.fault ? "the scanner source failed"
-                      : stalled    ? "no frame from the camera within its watchdog (camera timeout)"
-                      : done       ? "the source has ended"
-                                   : "scanning";
+  status.state_text = shared.fault.load(std::memory_order_acquire)
+                          ? std::string("the scanner source failed: ") + shared.fault_reason.data()
+                      : stalled ? "no frame from the camera within its watchdog (camera timeout)"
+                      : done    ? "the source has ended"
+                                : "scanning";
   const ScanLoopCounters& counters = loop.counters();
   status.profiles_acquired = counters.profiles;
   status.profiles_lost = shared.profiles_lost;
@@ -233,7 +238,10 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
     shared.source_stalled.store(false, std::memory_order_relaxed);
     if (status == SourceStatus::kError) {
       summary.source_error = std::string(source.last_error());
-      shared.fault = true;
+      const std::size_t length =
+          std::min(summary.source_error.size(), shared.fault_reason.size() - 1);
+      std::copy_n(summary.source_error.data(), length, shared.fault_reason.data());
+      shared.fault.store(true, std::memory_order_release);
       break;
     }
     loop.process(profile);
