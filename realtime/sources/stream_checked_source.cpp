@@ -25,13 +25,14 @@ StreamCheckedSource::StreamCheckedSource(std::unique_ptr<ScannerSource> source,
     : source_(std::move(source)),
       faults_(std::make_unique<StreamFaultLog>()),
       ticks_per_profile_(std::max(encoder_ticks_per_profile, 1)),
-      tolerance_ticks_(std::max<std::int64_t>(ticks_per_profile_ / 2, 1)) {}
+      tolerance_ticks_(ticks_per_profile_) {}
 
 SourceStatus StreamCheckedSource::start() {
   const SourceStatus status = source_->start();
   faults_->clear();
   have_previous_ = false;
   previous_direction_ = 0;
+  zero_steps_ = 0;
   // What the source found while starting (a replay's undecodable events) is its own count.
   reported_ = source_->health();
   tally_ = reported_;
@@ -76,12 +77,24 @@ void StreamCheckedSource::check(const Profile& profile, const SourceHealth& repo
     const std::int64_t step = profile.encoder_ticks - previous_ticks_;
     const std::int64_t expected = ticks_per_profile_ * steps;
     if (step == 0 && !encoder_jump) {
-      encoder_stuck = true;
-      ++tally_.encoder_stalls;
+      if (++zero_steps_ == 1) {
+        first_zero_seq_ = seq;
+        first_zero_t_before_us_ = t_before_us;
+        first_zero_t_us_ = profile.t_us;
+      } else {
+        encoder_stuck = true;
+        if (zero_steps_ == 2) {  // the first zero step was the fault's start, not jitter
+          ++tally_.encoder_stalls;
+          faults_->record(StreamFaultKind::kEncoderStuck, first_zero_seq_, first_zero_t_before_us_,
+                          first_zero_t_us_);
+        }
+        ++tally_.encoder_stalls;
+      }
     } else if (std::llabs(step - expected) > tolerance_ticks_) {
       if (!encoder_jump) ++tally_.encoder_errors;
       encoder_jump = true;
     }
+    if (step != 0 || encoder_jump) zero_steps_ = 0;
     // Only a step the belt could make either way turns the direction: a spike is no reversal.
     const int direction = std::llabs(step) > expected + tolerance_ticks_ ? 0
                           : step > 0                                     ? 1

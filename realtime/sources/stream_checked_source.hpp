@@ -7,12 +7,14 @@
 //              same call, which for a camera are the same frames); a seq that does not
 //              increase is a broken stream (recorded, not counted as a loss)
 //   encoder    with the belt moving at the config's speed the count advances
-//              encoder_ticks_per_profile per profile (per seq step). A step further off than
-//              half of that (at least one tick: the readout lag of a free-running camera
-//              jitters far less) is an encoder error, unless the decoder counted the missed
-//              edges itself (the larger of the two counts, as for frames); a change of the
-//              step's sign is a reversal; no step at all is a stuck encoder (encoder_stalls),
-//              a fault no decoder can see: its lines are simply quiet
+//              encoder_ticks_per_profile per profile (per seq step). A free-running camera's
+//              count is read once its frame has arrived, so the step jitters with the frame's
+//              delivery: a step further off than a whole profile's ticks is an encoder error,
+//              unless the decoder counted the missed edges itself (then its count is taken, as
+//              for frames); a change of the step's sign at belt speed is a reversal. A count
+//              that stands still for two profiles in a row (one zero step is delivery jitter)
+//              is a stuck encoder, every profile of it in encoder_stalls: a fault no decoder
+//              can see, its lines are simply quiet
 //   laser      a profile without a single point, not even the belt, was taken with the laser
 //              off or blocked (laser_off_profiles)
 // Every such profile is recorded in faults() for the recognizer (stream_fault_log.hpp).
@@ -57,6 +59,10 @@ class StreamCheckedSource final : public ScannerSource {
   std::int64_t previous_ticks_ = 0;
   std::int64_t previous_t_us_ = 0;
   int previous_direction_ = 0;
+  int zero_steps_ = 0;  // consecutive profiles without an encoder step
+  std::uint64_t first_zero_seq_ = 0;
+  std::int64_t first_zero_t_before_us_ = 0;
+  std::int64_t first_zero_t_us_ = 0;
 };
 
 }  // namespace cosmos

@@ -43,6 +43,20 @@ TEST(StreamCheckedSource, CountsNothingInACleanStreamAndAllocatesNothing) {
   EXPECT_EQ(checked.source.faults().recorded(), 0u);
 }
 
+TEST(StreamCheckedSource, TakesTheJitterOfAFreeRunningCamerasCountForNoFault) {
+  std::vector<Profile> profiles = belt_profiles(60);
+  // The count read when each frame arrives, up to a profile's ticks late: steps of 0 to 8,
+  // never two zero steps in a row.
+  const int lag[] = {0, 3, 4, 1, 2, 4, 0, 4};
+  for (std::size_t k = 0; k < profiles.size(); ++k) profiles[k].encoder_ticks -= lag[k % 8];
+  Checked checked(profiles);
+  checked.run();
+  EXPECT_EQ(checked.source.health().encoder_errors, 0u);
+  EXPECT_EQ(checked.source.health().encoder_stalls, 0u);
+  EXPECT_EQ(checked.source.health().encoder_reversals, 0u);
+  EXPECT_EQ(checked.source.faults().recorded(), 0u);
+}
+
 TEST(StreamCheckedSource, CountsASequenceGapOnceEvenWhenTheSourceReportedIt) {
   std::vector<Profile> profiles = belt_profiles(40);
   profiles.erase(profiles.begin() + 10, profiles.begin() + 17);  // 7 lost before seq 17
