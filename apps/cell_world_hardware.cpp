@@ -24,7 +24,8 @@ ScannerSource& CellWorld::open_source(const CellSourceChoice& choice) {
   const CellConfig& config = state_->config;
   if (!choice.replay.empty()) {
     state_->source = std::make_unique<StreamCheckedSource>(
-        make_cell_replay_source(choice.replay, config), config.scanner.encoder_ticks_per_profile);
+        make_cell_replay_source(choice.replay, config), config.scanner.encoder_ticks_per_profile,
+        config.stream_check);
     return *state_->source;
   }
   if (choice.source != "hardware")
@@ -41,8 +42,8 @@ ScannerSource& CellWorld::open_source(const CellSourceChoice& choice) {
                      "simulator (COSMOS_SIMULATOR=OFF)");
   auto source = std::make_unique<HardwareSource>(hardware, config.scanner);
   state_->hardware = source.get();
-  state_->source = std::make_unique<StreamCheckedSource>(std::move(source),
-                                                         config.scanner.encoder_ticks_per_profile);
+  state_->source = std::make_unique<StreamCheckedSource>(
+      std::move(source), config.scanner.encoder_ticks_per_profile, config.stream_check);
   return *state_->source;
 }
 

@@ -100,8 +100,8 @@ ScannerSource& CellWorld::open_source(const CellSourceChoice& choice) {
         std::move(opened), config.scanner.encoder_ticks_per_profile,
         config.scanner.time_us_of_profile(1) - config.scanner.time_us_of_profile(0));
   }
-  state_->source = std::make_unique<StreamCheckedSource>(std::move(opened),
-                                                         config.scanner.encoder_ticks_per_profile);
+  state_->source = std::make_unique<StreamCheckedSource>(
+      std::move(opened), config.scanner.encoder_ticks_per_profile, config.stream_check);
   return *state_->source;
 }
 

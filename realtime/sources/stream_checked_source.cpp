@@ -21,11 +21,15 @@ std::uint64_t increase(std::uint64_t now, std::uint64_t before) {
 }  // namespace
 
 StreamCheckedSource::StreamCheckedSource(std::unique_ptr<ScannerSource> source,
-                                         int encoder_ticks_per_profile)
+                                         int encoder_ticks_per_profile,
+                                         const StreamCheckSettings& settings)
     : source_(std::move(source)),
       faults_(std::make_unique<StreamFaultLog>()),
       ticks_per_profile_(std::max(encoder_ticks_per_profile, 1)),
-      tolerance_ticks_(ticks_per_profile_) {}
+      tolerance_ticks_(
+          std::max<std::int64_t>(1, std::llround(settings.encoder_tolerance_profiles *
+                                                 static_cast<double>(ticks_per_profile_)))),
+      stuck_profiles_(std::max(settings.stuck_profiles, 2)) {}
 
 SourceStatus StreamCheckedSource::start() {
   const SourceStatus status = source_->start();
@@ -81,10 +85,10 @@ void StreamCheckedSource::check(const Profile& profile, const SourceHealth& repo
         first_zero_seq_ = seq;
         first_zero_t_before_us_ = t_before_us;
         first_zero_t_us_ = profile.t_us;
-      } else {
+      } else if (zero_steps_ >= stuck_profiles_) {
         encoder_stuck = true;
-        if (zero_steps_ == 2) {  // the first zero step was the fault's start, not jitter
-          ++tally_.encoder_stalls;
+        if (zero_steps_ == stuck_profiles_) {  // the zero steps before were the fault, not jitter
+          tally_.encoder_stalls += static_cast<std::uint64_t>(stuck_profiles_ - 1);
           faults_->record(StreamFaultKind::kEncoderStuck, first_zero_seq_, first_zero_t_before_us_,
                           first_zero_t_us_);
         }

@@ -9,12 +9,13 @@
 //   encoder    with the belt moving at the config's speed the count advances
 //              encoder_ticks_per_profile per profile (per seq step). A free-running camera's
 //              count is read once its frame has arrived, so the step jitters with the frame's
-//              delivery: a step further off than a whole profile's ticks is an encoder error,
-//              unless the decoder counted the missed edges itself (then its count is taken, as
-//              for frames); a change of the step's sign at belt speed is a reversal. A count
-//              that stands still for two profiles in a row (one zero step is delivery jitter)
-//              is a stuck encoder, every profile of it in encoder_stalls: a fault no decoder
-//              can see, its lines are simply quiet
+//              delivery: a step further off than encoder_tolerance_profiles profiles' ticks is
+//              an encoder error, unless the decoder counted the missed edges itself (then its
+//              count is taken, as for frames); a change of the step's sign at belt speed is a
+//              reversal. A count that stands still for stuck_profiles profiles in a row (one
+//              zero step is delivery jitter) is a stuck encoder, every profile of it in
+//              encoder_stalls: a fault no decoder can see, its lines are simply quiet. A camera
+//              whose frames arrive in bursts needs both wider (the `stream_check:` keys)
 //   laser      a profile without a single point, not even the belt, was taken with the laser
 //              off or blocked (laser_off_profiles)
 // Every such profile is recorded in faults() for the recognizer (stream_fault_log.hpp).
@@ -23,15 +24,32 @@
 #include <cstdint>
 #include <memory>
 
+#include "core/parameter_visitor.hpp"
 #include "realtime/sources/scanner_source.hpp"
 #include "realtime/sources/stream_fault_log.hpp"
 
 namespace cosmos {
 
+// The cell's `stream_check:` section.
+struct StreamCheckSettings {
+  double encoder_tolerance_profiles = 1.0;
+  int stuck_profiles = 2;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("encoder_tolerance_profiles", encoder_tolerance_profiles,
+      "an encoder step further off than this many profiles' ticks is an encoder error",
+      Range::above(0, 1e6));
+    v("stuck_profiles", stuck_profiles,
+      "profiles in a row without an encoder step that make a stuck encoder", Range{2, 1000000});
+  }
+};
+
 class StreamCheckedSource final : public ScannerSource {
  public:
   // encoder_ticks_per_profile: the cell's scanner.encoder_ticks_per_profile (>= 1).
-  StreamCheckedSource(std::unique_ptr<ScannerSource> source, int encoder_ticks_per_profile);
+  StreamCheckedSource(std::unique_ptr<ScannerSource> source, int encoder_ticks_per_profile,
+                      const StreamCheckSettings& settings = {});
 
   SourceStatus start() override;
   void reserve(Profile& profile) const override { source_->reserve(profile); }
@@ -52,6 +70,7 @@ class StreamCheckedSource final : public ScannerSource {
   std::unique_ptr<StreamFaultLog> faults_;
   std::int64_t ticks_per_profile_ = 1;
   std::int64_t tolerance_ticks_ = 1;
+  int stuck_profiles_ = 2;
   SourceHealth reported_;  // the source's own health at the last check
   SourceHealth tally_;     // this checker's totals (reported losses merged in)
   bool have_previous_ = false;

@@ -57,6 +57,25 @@ TEST(StreamCheckedSource, TakesTheJitterOfAFreeRunningCamerasCountForNoFault) {
   EXPECT_EQ(checked.source.faults().recorded(), 0u);
 }
 
+TEST(StreamCheckedSource, BurstsOfFramesWithinTheWiderSettingsAreNoFault) {
+  std::vector<Profile> profiles = belt_profiles(64);
+  // Frames delivered four at a time: the count read for a burst is the same, then jumps.
+  for (std::size_t k = 0; k < profiles.size(); ++k)
+    profiles[k].encoder_ticks = static_cast<std::int64_t>(k / 4 * 16);
+  auto* scripted = new ScriptedSource(profiles);
+  StreamCheckedSource wide(std::unique_ptr<ScannerSource>(scripted), 4,
+                           {.encoder_tolerance_profiles = 3, .stuck_profiles = 4});
+  ASSERT_EQ(wide.start(), SourceStatus::kOk);
+  testing::read_stream(wide);
+  EXPECT_EQ(wide.health().encoder_errors, 0u);
+  EXPECT_EQ(wide.health().encoder_stalls, 0u);
+
+  Checked narrow(profiles);  // the defaults take the bursts for faults
+  narrow.run();
+  EXPECT_EQ(narrow.source.health().encoder_errors, 15u);  // every jump of 16 ticks
+  EXPECT_EQ(narrow.source.health().encoder_stalls, 48u);  // every burst's three repeats
+}
+
 TEST(StreamCheckedSource, CountsASequenceGapOnceEvenWhenTheSourceReportedIt) {
   std::vector<Profile> profiles = belt_profiles(40);
   profiles.erase(profiles.begin() + 10, profiles.begin() + 17);  // 7 lost before seq 17
