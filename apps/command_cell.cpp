@@ -19,6 +19,7 @@
 #include "core/recognition/recognizer.hpp"
 #include "realtime/cell/cell_runner.hpp"
 #include "realtime/config/cell_config.hpp"
+#include "realtime/rt/latency_histogram.hpp"
 
 namespace cosmos::cli {
 namespace {
@@ -33,13 +34,6 @@ struct CellOptions {
   bool repeat = false;
   std::string replay;
 };
-
-double percentile(std::vector<double> values, double q) {
-  if (values.empty()) return 0;
-  std::sort(values.begin(), values.end());
-  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(values.size())));
-  return values[std::min(values.size() - 1, rank > 0 ? rank - 1 : 0)];
-}
 
 // Every loss and fault total of the run's last COSMOS_STATUS, zeros too: an operator sees
 // that each was counted, not only that nothing was printed.
@@ -104,14 +98,15 @@ void run(const CellOptions& options) {
   settings.duration_s = options.duration_s;
   settings.recognizer_delay_ms = config.faults.recognizer_delay_ms;
 
-  std::vector<double> latencies_ms;
+  // A histogram, not a list of every latency: a cell runs for months (the soak's RSS).
+  LatencyHistogram latencies;
   int correct = 0;
   std::printf("%5s  %-18s %-9s %9s %9s %9s  %6s %8s %10s\n", "part", "name", "status", "x_mm",
               "y_mm", "z_mm", "score", "rms_mm", "latency_ms");
   const CellRunSummary summary =
       run_cell(source, loop, context, publisher, settings, [&](const PartRecognition& recognition) {
         const PartPose& pose = recognition.pose;
-        latencies_ms.push_back(pose.latency_ms);
+        latencies.record_ns(static_cast<std::int64_t>(pose.latency_ms * 1e6));
         world.announce_pose_published();
         const std::string truth =
             world.simulated_part_in(recognition.first_profile, recognition.last_profile);
@@ -134,10 +129,10 @@ void run(const CellOptions& options) {
       static_cast<long long>(summary.parts_dropped),
       static_cast<long long>(summary.poses_published));
   if (world.has_ground_truth())
-    std::printf("cell: %d of %zu parts identified correctly (simulated ground truth)\n", correct,
-                latencies_ms.size());
+    std::printf("cell: %d of %lld parts identified correctly (simulated ground truth)\n", correct,
+                static_cast<long long>(latencies.count()));
   std::printf("cell: latency end of part -> pose published: median %.1f ms, p99 %.1f ms\n",
-              percentile(latencies_ms, 0.5), percentile(latencies_ms, 0.99));
+              latencies.p50_ns() / 1e6, latencies.p99_ns() / 1e6);
   std::printf(
       "cell: per-profile processing p50 %.0f us, p99 %.0f us, max %.0f us; start jitter "
       "p50 %.0f us, p99 %.0f us\n",
