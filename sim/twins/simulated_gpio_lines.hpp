@@ -28,7 +28,7 @@
 // forwards from there after it; a glitch loses the first edge of each profile (the decoder
 // counts the invalid transitions it causes). The position's lag behind the belt stays after
 // the fault, as on a slipping encoder wheel. A bouncing photo eye repeats each of its edges
-// twice within a quarter of the debounce time.
+// twice, its edges a quarter of the debounce time apart.
 //
 // Deterministic: everything follows from the conveyor and the clock, nothing from the wall
 // clock. poll_inputs() and set_output() use preallocated storage: no allocation.
