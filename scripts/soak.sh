@@ -2,7 +2,7 @@
 # Soak: the paced simulated cell for a long time with faults injected, its memory watched.
 #
 #   scripts/soak.sh [--minutes M] [--warmup-minutes W] [--sample-s S] [--build DIR]
-#                   [--config FILE] [--out DIR] [--no-faults]
+#                   [--config FILE] [--hardware FILE] [--out DIR] [--no-faults]
 #
 # Runs `cosmos cell --repeat` (the simulated belt started over at its end, so the run lasts as
 # long as asked) paced at the line rate for M minutes of scanning (default 60), with the
@@ -11,7 +11,9 @@
 # end it prints the RSS samples, the RSS growth from the end of the warm-up (default 5 min)
 # to the end (the figure that must stay flat: at most 1 %), the poses by status and every
 # counter of the cell's last COSMOS_STATUS (its summary), and exits non-zero if the cell
-# crashed or RSS grew by more than 1 %. Logs stay in DIR (default build/soak).
+# crashed or RSS grew by more than 1 %. Logs stay in DIR (default build/soak). With
+# --hardware config/hardware-sim.yaml the cell runs the hardware path on the simulated twins,
+# which inject the faults at the devices (and bounce the photo eye).
 set -euo pipefail
 
 minutes=60
@@ -21,6 +23,7 @@ build=build
 config=config/cell.yaml
 out=
 faults=1
+hardware=
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --minutes) minutes=$2; shift 2 ;;
@@ -29,6 +32,7 @@ while [[ $# -gt 0 ]]; do
     --build) build=$2; shift 2 ;;
     --config) config=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
+    --hardware) hardware=$2; shift 2 ;;
     --no-faults) faults=0; shift ;;
     *) echo "soak.sh: unknown option $1 (see the header of $0)" >&2; exit 2 ;;
   esac
@@ -58,14 +62,18 @@ faults:
   encoder_reversals: {every_profiles: 2900, profiles: 25}
   encoder_stuck: {every_profiles: 2800, profiles: 40}
   laser_off: {every_profiles: 2200, profiles: 60}
+  photo_eye_bounces: {every_profiles: 2000, profiles: 500}
 YAML
 fi
 
 duration_s=$((minutes * 60))
 log=$out/cell.log
 rss_log=$out/rss.tsv
-echo "soak: $minutes min of scanning, faults $([[ $faults == 1 ]] && echo on || echo off), config $soak_config, logs in $out"
-"$cosmos" cell --config "$soak_config" --repeat --duration-s "$duration_s" > "$log" 2> "$out/cell.err" &
+echo "soak: $minutes min of scanning${hardware:+ on the hardware path ($hardware)}, faults $([[ $faults == 1 ]] && echo on || echo off), config $soak_config, logs in $out"
+source_options=()
+[[ -n $hardware ]] && source_options=(--source hardware --hardware "$hardware")
+"$cosmos" cell --config "$soak_config" "${source_options[@]}" --repeat --duration-s "$duration_s" \
+  > "$log" 2> "$out/cell.err" &
 pid=$!
 trap 'kill $pid 2>/dev/null || true' INT TERM
 

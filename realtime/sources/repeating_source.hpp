@@ -3,7 +3,7 @@
 // soak run of scripts/soak.sh): when the source ends it is restarted, and its seq,
 // encoder_ticks and t_us go on from where the last pass ended, one profile step later, so
 // the cell sees a belt that never stops rather than a stream that jumps back. Its health
-// adds up over the passes.
+// adds up what each pass added, whether the source's counts restart with it or not.
 //
 // The restart runs on the acquisition thread and is the source's start(): set-up that may
 // allocate, once per pass (seconds apart), never per profile.
@@ -44,7 +44,8 @@ class RepeatingSource final : public ScannerSource {
   std::uint64_t seq_offset_ = 0;
   std::int64_t ticks_offset_ = 0;
   std::int64_t t_offset_us_ = 0;
-  SourceHealth earlier_;  // health of the passes before this one
+  SourceHealth earlier_;        // what the passes before this one added
+  SourceHealth at_pass_start_;  // the source's health when this pass began
 };
 
 }  // namespace cosmos
