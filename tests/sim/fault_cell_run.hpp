@@ -72,8 +72,10 @@ class FaultWatchingPublisher final : public Publisher {
 // The checked source, slowed after a fault until a FAULT status went out (at most 3 s).
 class SlowAfterFaultSource final : public ScannerSource {
  public:
-  SlowAfterFaultSource(StreamCheckedSource& source, const std::atomic<int>& faults_published)
-      : source_(source), faults_published_(faults_published) {}
+  // `loop`: its dropped parts are a fault too (the overloaded recognizer's).
+  SlowAfterFaultSource(StreamCheckedSource& source, const ScanLoop& loop,
+                       const std::atomic<int>& faults_published)
+      : source_(source), loop_(loop), faults_published_(faults_published) {}
   SourceStatus start() override { return source_.start(); }
   void reserve(Profile& profile) const override { source_.reserve(profile); }
   SourceStatus next(Profile& out) noexcept override {
@@ -83,7 +85,8 @@ class SlowAfterFaultSource final : public ScannerSource {
       ++slowed_ms_;
     }
     const SourceStatus status = source_.next(out);
-    const std::uint64_t total = fault_total(source_.health());
+    const std::uint64_t total = fault_total(source_.health()) +
+                                static_cast<std::uint64_t>(loop_.counters().parts_dropped.load());
     if (total > last_total_ && !waiting_) {
       waiting_ = true;
       faults_at_fault_ = faults_published_.load();
@@ -102,6 +105,7 @@ class SlowAfterFaultSource final : public ScannerSource {
            h.gpio_edges_lost + h.photo_eye_bounces + h.encoder_stalls + h.laser_off_profiles;
   }
   StreamCheckedSource& source_;
+  const ScanLoop& loop_;
   const std::atomic<int>& faults_published_;
   std::uint64_t last_total_ = 0;
   bool waiting_ = false;
@@ -192,7 +196,7 @@ inline FaultCellRun run_faulty_cell(
   settings.publishing.status_period_s = 0.001;
   settings.recognizer_delay_ms = recognizer_delay_ms;
   FaultWatchingPublisher publisher;
-  SlowAfterFaultSource slowed(checked, publisher.faults);
+  SlowAfterFaultSource slowed(checked, loop, publisher.faults);
   run.summary =
       run_cell(slowed, loop, context, publisher, settings, [&](const PartRecognition& recognition) {
         run.recognitions.push_back(recognition);

@@ -112,10 +112,10 @@ TEST(SourceFaultInjector, LaserOffIsFoundInTheData) {
 
 TEST(SourceFaultInjector, AnOverloadedRecognizerDropsPartsAndTheCellGoesOn) {
   const SimulatedFaultRun fault([](FaultInjectionSettings&, std::int64_t) {},
-                                /*recognizer_delay_ms=*/1500, /*builders=*/1);
+                                /*recognizer_delay_ms=*/3000, /*builders=*/1);
   EXPECT_TRUE(fault.run.summary.source_error.empty());
   EXPECT_EQ(fault.run.summary.profiles, fault.last_profile + 1);
-  // One builder, held by the recognizer for 1.5 s a part: the parts that start meanwhile are
+  // One builder, held by the recognizer for 3 s a part: the parts that start meanwhile are
   // dropped and counted, the rest recognized.
   EXPECT_GE(fault.run.total("parts_dropped"), 1);
   EXPECT_GE(fault.run.correct(), 1);
