@@ -19,6 +19,8 @@ struct CellModelBase {
 // refused: a base whose views were taken on another grid (either pitch) or belt threshold
 // than the cell's conditioning gives its scans. A base it accepts is named on stderr in one line
 // (parts, views, when the file was written), so the reuse of a cached base is not silent.
+// With faults.corrupt_model_base the base is read with one byte flipped, and refused so (the
+// injected fault of a damaged base at start).
 CellModelBase read_cell_model_base(const std::filesystem::path& path, const CellConfig& config);
 
 }  // namespace cosmos

@@ -18,6 +18,7 @@
 #include "apps/cell_model_base.hpp"
 #include "realtime/config/cell_config.hpp"
 #include "realtime/sources/scanner_source.hpp"
+#include "realtime/sources/stream_fault_log.hpp"
 
 namespace cosmos::cli {
 
@@ -26,6 +27,7 @@ struct CellSourceChoice {
   std::string hardware;        // the hardware YAML
   std::string replay;          // an LCM log; wins over `source`
   int parts = -1;              // simulated parts; <= 0: sim_source.parts
+  bool repeat = false;         // the simulated parts again and again (RepeatingSource)
 };
 
 class CellWorld {
@@ -36,9 +38,12 @@ class CellWorld {
   CellWorld(const CellWorld&) = delete;
   CellWorld& operator=(const CellWorld&) = delete;
 
-  // The source the options choose, owned by this world; call once.
+  // The source the options choose, owned by this world; call once. Every source's stream is
+  // checked (realtime/sources/stream_checked_source.hpp).
   ScannerSource& open_source(const CellSourceChoice& choice);
   CellModelBase load_model_base() const;
+  // The open source's stream faults, for the recognizer (PartRecognitionContext).
+  const StreamFaultLog* stream_faults() const;
   // Per part of `base`, its index in the catalog (-1 when the catalog lacks it).
   std::vector<int> catalog_indices(const ModelBase& base) const;
 

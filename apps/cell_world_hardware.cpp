@@ -3,6 +3,7 @@
 #include "core/input_error.hpp"
 #include "realtime/config/hardware_config.hpp"
 #include "realtime/sources/hardware_source.hpp"
+#include "realtime/sources/stream_checked_source.hpp"
 
 namespace cosmos::cli {
 
@@ -11,7 +12,7 @@ namespace cosmos::cli {
 // catalog order.
 struct CellWorld::State {
   const CellConfig& config;
-  std::unique_ptr<ScannerSource> source;
+  std::unique_ptr<StreamCheckedSource> source;
   HardwareSource* hardware = nullptr;
 };
 
@@ -22,7 +23,9 @@ CellWorld::~CellWorld() = default;
 ScannerSource& CellWorld::open_source(const CellSourceChoice& choice) {
   const CellConfig& config = state_->config;
   if (!choice.replay.empty()) {
-    state_->source = make_cell_replay_source(choice.replay, config);
+    state_->source = std::make_unique<StreamCheckedSource>(
+        make_cell_replay_source(choice.replay, config), config.scanner.encoder_ticks_per_profile,
+        config.stream_check);
     return *state_->source;
   }
   if (choice.source != "hardware")
@@ -39,8 +42,13 @@ ScannerSource& CellWorld::open_source(const CellSourceChoice& choice) {
                      "simulator (COSMOS_SIMULATOR=OFF)");
   auto source = std::make_unique<HardwareSource>(hardware, config.scanner);
   state_->hardware = source.get();
-  state_->source = std::move(source);
+  state_->source = std::make_unique<StreamCheckedSource>(
+      std::move(source), config.scanner.encoder_ticks_per_profile, config.stream_check);
   return *state_->source;
+}
+
+const StreamFaultLog* CellWorld::stream_faults() const {
+  return state_->source ? &state_->source->faults() : nullptr;
 }
 
 CellModelBase CellWorld::load_model_base() const {

@@ -9,6 +9,8 @@
 #include "core/io/xxh64.hpp"
 #include "realtime/config/hardware_config.hpp"
 #include "realtime/sources/hardware_source.hpp"
+#include "realtime/sources/repeating_source.hpp"
+#include "realtime/sources/stream_checked_source.hpp"
 #include "sim/model_base_build/catalog_content_hash.hpp"
 #include "sim/model_base_build/model_base_builder.hpp"
 #include "sim/model_base_build/model_base_parameters.hpp"
@@ -49,9 +51,10 @@ std::filesystem::path cached_model_base_path(const CellConfig& config, const Par
 struct CellWorld::State {
   const CellConfig& config;
   PartCatalog catalog;
-  std::unique_ptr<ScannerSource> source;
+  std::unique_ptr<StreamCheckedSource> source;
   const SimulatedConveyor* conveyor = nullptr;  // the source's, when it has one
   HardwareSource* hardware = nullptr;           // the source's, when it is one
+  std::int64_t repeat_profiles = 0;             // --repeat: profiles per pass of the belt
 };
 
 CellWorld::CellWorld(const CellConfig& config)
@@ -61,8 +64,9 @@ CellWorld::~CellWorld() = default;
 
 ScannerSource& CellWorld::open_source(const CellSourceChoice& choice) {
   const CellConfig& config = state_->config;
+  std::unique_ptr<ScannerSource> opened;
   if (!choice.replay.empty()) {
-    state_->source = make_cell_replay_source(choice.replay, config);
+    opened = make_cell_replay_source(choice.replay, config);
   } else if (choice.source == "hardware") {
     if (choice.hardware.empty()) {
       throw InputError(
@@ -73,22 +77,36 @@ ScannerSource& CellWorld::open_source(const CellSourceChoice& choice) {
     if (!hardware.camera_simulated()) {
       auto source = std::make_unique<HardwareSource>(hardware, config.scanner);
       state_->hardware = source.get();
-      state_->source = std::move(source);
+      opened = std::move(source);
     } else {
       auto twins = std::make_unique<HardwareTwinSource>(
-          hardware, std::make_unique<SimulatedConveyor>(state_->catalog, config.scanner,
-                                                        source_settings(choice, config)));
+          hardware,
+          std::make_unique<SimulatedConveyor>(state_->catalog, config.scanner,
+                                              source_settings(choice, config)),
+          SimulatedGpioSettings{}, config.faults);
       state_->conveyor = &twins->conveyor();
       state_->hardware = &twins->hardware();
-      state_->source = std::move(twins);
+      opened = std::move(twins);
     }
   } else {
-    auto simulated = std::make_unique<SimulatedSource>(state_->catalog, config.scanner,
-                                                       source_settings(choice, config));
+    auto simulated = std::make_unique<SimulatedSource>(
+        state_->catalog, config.scanner, source_settings(choice, config), config.faults);
     state_->conveyor = &simulated->conveyor();
-    state_->source = std::move(simulated);
+    opened = std::move(simulated);
   }
+  if (choice.repeat && state_->conveyor) {
+    state_->repeat_profiles = state_->conveyor->last_profile() + 1;
+    opened = std::make_unique<RepeatingSource>(
+        std::move(opened), config.scanner.encoder_ticks_per_profile,
+        config.scanner.time_us_of_profile(1) - config.scanner.time_us_of_profile(0));
+  }
+  state_->source = std::make_unique<StreamCheckedSource>(
+      std::move(opened), config.scanner.encoder_ticks_per_profile, config.stream_check);
   return *state_->source;
+}
+
+const StreamFaultLog* CellWorld::stream_faults() const {
+  return state_->source ? &state_->source->faults() : nullptr;
 }
 
 CellModelBase CellWorld::load_model_base() const {
@@ -122,6 +140,11 @@ bool CellWorld::has_ground_truth() const { return state_->conveyor != nullptr; }
 std::string CellWorld::simulated_part_in(std::int64_t first_profile,
                                          std::int64_t last_profile) const {
   if (!state_->conveyor) return "";
+  if (state_->repeat_profiles > 0) {  // the pass's own profile indices
+    const std::int64_t pass_start = first_profile - first_profile % state_->repeat_profiles;
+    first_profile -= pass_start;
+    last_profile -= pass_start;
+  }
   const PlacedSimPart* placed =
       state_->conveyor->placed_part_scanned_in(first_profile, last_profile);
   return placed ? placed->name : "";

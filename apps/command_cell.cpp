@@ -23,6 +23,7 @@
 #include "core/recognition/recognizer.hpp"
 #include "realtime/cell/cell_runner.hpp"
 #include "realtime/config/cell_config.hpp"
+#include "realtime/rt/latency_histogram.hpp"
 #include "realtime/web/web_view.hpp"
 
 namespace cosmos::cli {
@@ -35,16 +36,10 @@ struct CellOptions {
   int parts = -1;
   double duration_s = 0;
   bool unpaced = false;
+  bool repeat = false;
   std::string replay;
   std::string http;  // replaces web.http_address
 };
-
-double percentile(std::vector<double> values, double q) {
-  if (values.empty()) return 0;
-  std::sort(values.begin(), values.end());
-  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(values.size())));
-  return values[std::min(values.size() - 1, rank > 0 ? rank - 1 : 0)];
-}
 
 // Every loss and fault total of the run's last COSMOS_STATUS, zeros too: an operator sees
 // that each was counted, not only that nothing was printed.
@@ -83,8 +78,8 @@ void run(const CellOptions& options) {
   const CellConfig config = load_cell_config(options.config);
   const std::unique_ptr<WebView> web = start_web_view(options, config);
   CellWorld world(config);
-  ScannerSource& source =
-      world.open_source({options.source, options.hardware, options.replay, options.parts});
+  ScannerSource& source = world.open_source(
+      {options.source, options.hardware, options.replay, options.parts, options.repeat});
   if (source.start() != SourceStatus::kOk) throw InputError(std::string(source.last_error()));
   if (std::abs(source.mm_per_profile() - config.conditioning.grid_mm) > 1e-9)
     throw InputError(options.config +
@@ -122,6 +117,7 @@ void run(const CellOptions& options) {
     web->set_belt(config.conditioning.grid_mm, loop.width(), loop.x0_loop_mm());
     web->show_state("starting");
   }
+  context.stream_faults = world.stream_faults();
 
   CellRunSettings settings;
   settings.line_rate_hz = config.scanner.line_rate_hz;
@@ -130,15 +126,17 @@ void run(const CellOptions& options) {
   settings.threads = config.realtime.threads;
   settings.publishing = config.lcm.publishing;
   settings.duration_s = options.duration_s;
+  settings.recognizer_delay_ms = config.faults.recognizer_delay_ms;
 
-  std::vector<double> latencies_ms;
+  // A histogram, not a list of every latency: a cell runs for months (the soak's RSS).
+  LatencyHistogram latencies;
   int correct = 0;
   std::printf("%5s  %-18s %-9s %9s %9s %9s  %6s %8s %10s\n", "part", "name", "status", "x_mm",
               "y_mm", "z_mm", "score", "rms_mm", "latency_ms");
   const CellRunSummary summary =
       run_cell(source, loop, context, publisher, settings, [&](const PartRecognition& recognition) {
         const PartPose& pose = recognition.pose;
-        latencies_ms.push_back(pose.latency_ms);
+        latencies.record_ns(static_cast<std::int64_t>(pose.latency_ms * 1e6));
         world.announce_pose_published();
         if (web) web->observe(recognition);
         const std::string truth =
@@ -162,10 +160,10 @@ void run(const CellOptions& options) {
       static_cast<long long>(summary.parts_dropped),
       static_cast<long long>(summary.poses_published));
   if (world.has_ground_truth())
-    std::printf("cell: %d of %zu parts identified correctly (simulated ground truth)\n", correct,
-                latencies_ms.size());
+    std::printf("cell: %d of %lld parts identified correctly (simulated ground truth)\n", correct,
+                static_cast<long long>(latencies.count()));
   std::printf("cell: latency end of part -> pose published: median %.1f ms, p99 %.1f ms\n",
-              percentile(latencies_ms, 0.5), percentile(latencies_ms, 0.99));
+              latencies.p50_ns() / 1e6, latencies.p99_ns() / 1e6);
   std::printf(
       "cell: per-profile processing p50 %.0f us, p99 %.0f us, max %.0f us; start jitter "
       "p50 %.0f us, p99 %.0f us\n",
@@ -209,6 +207,8 @@ void install(CLI::App& root) {
   command->add_option("--duration-s", options->duration_s, "stop after this much scanning time")
       ->check(CLI::NonNegativeNumber);
   command->add_flag("--unpaced", options->unpaced, "do not pace the loop at the line rate");
+  command->add_flag("--repeat", options->repeat,
+                    "simulated parts: start the belt over at its end, until --duration-s");
   command->add_option("--replay", options->replay, "replay an lcm-logger log of COSMOS_PROFILE")
       ->type_name("FILE");
   command

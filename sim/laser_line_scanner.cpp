@@ -72,29 +72,35 @@ void LaserLineScanner::trace(double laser_y_belt_mm, LaserLine& line) {
   std::fill(normal_x_.begin(), normal_x_.end(), 0.0f);
   std::fill(normal_y_.begin(), normal_y_.end(), 0.0f);
   std::fill(normal_z_.begin(), normal_z_.end(), 1.0f);
-  // Probe only where a part can be: the x span the parts' outlines cover at the sheet.
+  // Probe only where a part can be: the x span the parts' outlines cover at the sheet, from
+  // just above the tallest of those parts. Not from above the whole scene: the probe's
+  // z = top − t is rounded at the origin's magnitude, so a taller part elsewhere on the belt
+  // would change this part's heights in their last bits, and a part's scan would depend on
+  // which other parts ride the belt with it.
   double x_low = std::numeric_limits<double>::infinity();
   double x_high = -x_low;
+  double top_z_mm = -x_low;
   for (const PlacedPart& part : scene_.parts()) {
     double part_low = 0.0;
     double part_high = 0.0;
     if (!part.height_bounds.x_extent(laser_y_belt_mm, part_low, part_high)) continue;
     x_low = std::min(x_low, part_low);
     x_high = std::max(x_high, part_high);
+    top_z_mm = std::max(top_z_mm, part.bounds_mm.max().z() + 1.0);
   }
   if (x_low <= x_high) {
     const int first = std::max(0, static_cast<int>(std::floor((x_low - line.x0_mm) / line.dx_mm)));
     const int end =
         std::min(samples_, static_cast<int>(std::ceil((x_high - line.x0_mm) / line.dx_mm)) + 1);
-    if (first < end) probe_top_surface(laser_y_belt_mm, first, end, line);
+    if (first < end) probe_top_surface(laser_y_belt_mm, first, end, top_z_mm, line);
   }
   sweep_laser_horizon(line);
   classify(laser_y_belt_mm, line);
   trace_camera_occlusion(laser_y_belt_mm, line);
 }
 
-void LaserLineScanner::probe_top_surface(double y_mm, int first, int end, LaserLine& line) {
-  const double top_z_mm = scene_.bounds_mm().max().z() + 1.0;
+void LaserLineScanner::probe_top_surface(double y_mm, int first, int end, double top_z_mm,
+                                         LaserLine& line) {
   const EmbreeScene& embree = scene_.embree();
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);

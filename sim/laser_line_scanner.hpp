@@ -74,7 +74,8 @@ class LaserLineScanner {
   const TriangulationGeometry& geometry() const { return geometry_; }
 
  private:
-  void probe_top_surface(double y_mm, int first, int end, LaserLine& line);
+  // Rays straight down from z = top_z_mm onto samples [first, end).
+  void probe_top_surface(double y_mm, int first, int end, double top_z_mm, LaserLine& line);
   void sweep_laser_horizon(LaserLine& line) const;
   // What steps 3-6 make of a lit top point (scanner frame: the sheet is y = 0), camera
   // occlusion by the parts aside.

@@ -1,6 +1,9 @@
 #include "realtime/cell/cell_runner.hpp"
 
+#include <algorithm>
+#include <array>
 #include <chrono>
+#include <string>
 #include <thread>
 
 #include "firmware_bridge/kernel_timestamp.hpp"
@@ -25,12 +28,15 @@ struct SharedStatus {
   // The source's SourceHealth, copied by the acquisition thread (the only one that may
   // read the source) at every status snapshot.
   std::atomic<std::int64_t> profiles_lost{0}, camera_timeouts{0}, encoder_errors{0},
-      encoder_reversals{0}, gpio_edges_lost{0}, photo_eye_bounces{0};
+      encoder_reversals{0}, gpio_edges_lost{0}, photo_eye_bounces{0}, encoder_stalls{0},
+      laser_off_profiles{0};
   // The source's last call timed out: the camera stalls while this lasts.
   std::atomic<bool> source_stalled{false};
   std::atomic<std::int64_t> time_p50_ns{0}, time_p99_ns{0}, time_max_ns{0};
   std::atomic<std::int64_t> parts_recognized{0}, parts_rejected{0};
   std::atomic<bool> fault{false};
+  // The source's one line, written before `fault` is set (release) and read after it.
+  std::array<char, 256> fault_reason{};
   std::atomic<bool> acquisition_done{false}, recognizer_done{false};
 };
 
@@ -68,10 +74,11 @@ CellStatus status_message(ScanLoop& loop, const SharedStatus& shared,
   status.state = shared.fault || stalled ? CellState::kFault
                  : done                  ? CellState::kIdle
                                          : CellState::kScanning;
-  status.state_text = shared.fault ? "the scanner source failed"
-                      : stalled    ? "no frame from the camera within its watchdog (camera timeout)"
-                      : done       ? "the source has ended"
-                                   : "scanning";
+  status.state_text = shared.fault.load(std::memory_order_acquire)
+                          ? std::string("the scanner source failed: ") + shared.fault_reason.data()
+                      : stalled ? "no frame from the camera within its watchdog (camera timeout)"
+                      : done    ? "the source has ended"
+                                : "scanning";
   const ScanLoopCounters& counters = loop.counters();
   status.profiles_acquired = counters.profiles;
   status.profiles_lost = shared.profiles_lost;
@@ -83,6 +90,8 @@ CellStatus status_message(ScanLoop& loop, const SharedStatus& shared,
   status.encoder_reversals = shared.encoder_reversals;
   status.gpio_edges_lost = shared.gpio_edges_lost;
   status.photo_eye_bounces = shared.photo_eye_bounces;
+  status.encoder_stalls = shared.encoder_stalls;
+  status.laser_off_profiles = shared.laser_off_profiles;
   status.profile_time_p50_us = shared.time_p50_ns / 1e3;
   status.profile_time_p99_us = shared.time_p99_ns / 1e3;
   status.profile_time_max_us = shared.time_max_ns / 1e3;
@@ -97,6 +106,37 @@ CellStatus status_message(ScanLoop& loop, const SharedStatus& shared,
   return status;
 }
 
+// A fault that struck since the last status (a counter that grew while scanning) is the
+// state until a period passes without it: the operator sees FAULT and which fault while it
+// lasts, and SCANNING again once the cell is back to normal.
+void mark_faults_since(const CellStatus& previous, CellStatus& status) {
+  if (status.state != CellState::kScanning) return;
+  struct Fault {
+    std::int64_t CellStatus::*total;
+    const char* what;
+  };
+  static constexpr Fault kFaults[] = {
+      {&CellStatus::camera_timeouts, "camera timeouts"},
+      {&CellStatus::profiles_lost, "frames lost"},
+      {&CellStatus::encoder_errors, "encoder errors"},
+      {&CellStatus::encoder_reversals, "encoder reversals"},
+      {&CellStatus::encoder_stalls, "profiles with the encoder stuck while the belt moves"},
+      {&CellStatus::laser_off_profiles, "profiles without laser light (laser off)"},
+      {&CellStatus::gpio_edges_lost, "GPIO edges lost"},
+      {&CellStatus::photo_eye_bounces, "photo-eye bounces"},
+      {&CellStatus::parts_dropped, "parts dropped (recognizer overloaded)"},
+  };
+  std::string text;
+  for (const Fault& fault : kFaults) {
+    const std::int64_t added = status.*fault.total - previous.*fault.total;
+    if (added <= 0) continue;
+    text += (text.empty() ? "" : "; ") + std::to_string(added) + ' ' + fault.what;
+  }
+  if (text.empty()) return;
+  status.state = CellState::kFault;
+  status.state_text = text + " since the last status";
+}
+
 void run_publisher(ScanLoop& loop, Publisher& publisher, SpscRing<CompletedPose>& poses,
                    SpscRing<Profile>& profiles, SharedStatus& shared,
                    const CellRunSettings& settings, const PoseObserver& observer,
@@ -104,6 +144,7 @@ void run_publisher(ScanLoop& loop, Publisher& publisher, SpscRing<CompletedPose>
   const auto period = std::chrono::duration<double>(settings.publishing.status_period_s);
   auto next_status = std::chrono::steady_clock::now();
   std::int64_t last_data_us = 0;
+  CellStatus previous;
   for (;;) {
     bool idle = true;
     if (CompletedPose* completed = poses.try_front()) {
@@ -128,6 +169,8 @@ void run_publisher(ScanLoop& loop, Publisher& publisher, SpscRing<CompletedPose>
         shared.recognizer_done.load(std::memory_order_acquire) && poses.empty() && profiles.empty();
     if (finished || std::chrono::steady_clock::now() >= next_status) {
       summary.last_status = status_message(loop, shared, poses, last_data_us);
+      mark_faults_since(previous, summary.last_status);
+      previous = summary.last_status;
       if (!publisher.publish(summary.last_status)) summary.publish_failures++;
       next_status += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
     }
@@ -175,6 +218,8 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
     store(shared.encoder_reversals, health.encoder_reversals);
     store(shared.gpio_edges_lost, health.gpio_edges_lost);
     store(shared.photo_eye_bounces, health.photo_eye_bounces);
+    store(shared.encoder_stalls, health.encoder_stalls);
+    store(shared.laser_off_profiles, health.laser_off_profiles);
   };
   for (;;) {
     pacer.wait_next();
@@ -196,7 +241,10 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
     shared.source_stalled.store(false, std::memory_order_relaxed);
     if (status == SourceStatus::kError) {
       summary.source_error = std::string(source.last_error());
-      shared.fault = true;
+      const std::size_t length =
+          std::min(summary.source_error.size(), shared.fault_reason.size() - 1);
+      std::copy_n(summary.source_error.data(), length, shared.fault_reason.data());
+      shared.fault.store(true, std::memory_order_release);
       break;
     }
     loop.process(profile);

@@ -29,6 +29,8 @@ struct CellStatus {
   std::int64_t encoder_reversals = 0;
   std::int64_t gpio_edges_lost = 0;
   std::int64_t photo_eye_bounces = 0;
+  std::int64_t encoder_stalls = 0;
+  std::int64_t laser_off_profiles = 0;
 
   // Per-profile processing time of the acquisition thread over the last period.
   double profile_time_p50_us = 0.0;
@@ -62,6 +64,8 @@ struct CellStatus {
     v("encoder_reversals", self.encoder_reversals, "direction changes of the encoder count");
     v("gpio_edges_lost", self.gpio_edges_lost, "GPIO input edges never decoded (overflow)");
     v("photo_eye_bounces", self.photo_eye_bounces, "photo-eye edges rejected as bounce");
+    v("encoder_stalls", self.encoder_stalls, "profiles whose encoder count did not advance");
+    v("laser_off_profiles", self.laser_off_profiles, "profiles without a single laser point");
     v("parts_seen", self.parts_seen, "parts the tracker completed");
     v("parts_recognized", self.parts_recognized, "poses published with status OK");
     v("parts_rejected", self.parts_rejected, "poses published as REJECTED or ERROR");

@@ -109,6 +109,15 @@ PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContex
     pose.status = PoseStatus::kError;
     pose.reason = "part longer than tracking.max_part_length_mm: its end was not scanned";
   }
+  const StreamFaultKind fault =
+      context.stream_faults
+          ? context.stream_faults->fault_in(builder.first_profile, builder.last_t_us)
+          : StreamFaultKind::kNone;
+  if (fault != StreamFaultKind::kNone) {
+    pose.status = PoseStatus::kError;
+    pose.reason = std::string("the part's rows span a stream fault (") + to_string(fault) +
+                  "): rows missing or its encoder count wrong";
+  }
   out.T_belt_part = T_belt_loop() * out.result.T_scanner_part;
   out.first_profile = builder.first_profile;
   out.last_profile = builder.first_profile + builder.cosmos.rows() - 1;

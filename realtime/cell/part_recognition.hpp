@@ -20,6 +20,7 @@
 #include "core/rigid_transform.hpp"
 #include "realtime/cell/part_pose.hpp"
 #include "realtime/loop/scan_loop.hpp"
+#include "realtime/sources/stream_fault_log.hpp"
 
 namespace cosmos {
 
@@ -35,6 +36,9 @@ struct PartRecognitionContext {
   // Hand the part's view image on with its pose (PartRecognition::image), for the live web
   // view's belt strip: the recognizer made it anyway, so keeping it costs a move.
   bool keep_part_image = false;
+  // The source's stream faults (stream_checked_source.hpp): a part whose rows span one is
+  // published as ERROR. Null: unchecked.
+  const StreamFaultLog* stream_faults = nullptr;
 };
 
 // The part's range image and chapter-3 analysis in the loop frame.

@@ -11,6 +11,8 @@
 //   realtime:     the acquisition thread's scheduling and the queue sizes
 //   sim_source:   SimulatedSourceSettings (realtime/config/sim_source_settings.hpp)
 //   web:          the live web view (realtime/config/web_view_settings.hpp)
+//   stream_check: StreamCheckSettings (realtime/sources/stream_checked_source.hpp)
+//   faults:       FaultInjectionSettings (realtime/sources/fault_injection_settings.hpp)
 // The cell's COSMOS parameters are not here: it takes those its model base was built with.
 // An unknown section or key, a retired key, a value of the wrong type or out of its range
 // throws InputError `file:LINE: section.key: reason`; a missing file or a YAML syntax error one
@@ -27,6 +29,8 @@
 #include "realtime/loop/part_tracker.hpp"
 #include "realtime/loop/scan_loop.hpp"
 #include "realtime/rt/realtime_settings.hpp"
+#include "realtime/sources/fault_injection_settings.hpp"
+#include "realtime/sources/stream_checked_source.hpp"
 #include "scanner/conditioning_parameters.hpp"
 #include "scanner/scanner_model.hpp"
 
@@ -112,6 +116,8 @@ struct CellConfig {
   RealtimeQueueSettings realtime;
   SimulatedSourceSettings sim_source;
   WebViewSettings web;
+  StreamCheckSettings stream_check;
+  FaultInjectionSettings faults;
 
   // Rows (profiles) of the longest part: max_part_length_mm over the belt step per profile.
   int max_part_rows() const;
@@ -127,6 +133,10 @@ struct CellConfig {
     v("realtime", realtime, "the acquisition thread and the queues between threads");
     v("sim_source", sim_source, "the simulated source (sim/source/simulated_source.hpp)");
     v("web", web, "the live web view (realtime/web/web_view.hpp)");
+    v("stream_check", stream_check,
+      "what a source's stream may do before it counts as a fault "
+      "(realtime/sources/stream_checked_source.hpp)");
+    v("faults", faults, "faults the simulated cell injects into itself (all off by default)");
   }
 };
 

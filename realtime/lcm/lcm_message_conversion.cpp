@@ -78,6 +78,8 @@ void to_message(const CellStatus& status, cosmos_lcm::cell_status_t& message) {
   message.encoder_reversals = status.encoder_reversals;
   message.gpio_edges_lost = status.gpio_edges_lost;
   message.photo_eye_bounces = status.photo_eye_bounces;
+  message.encoder_stalls = status.encoder_stalls;
+  message.laser_off_profiles = status.laser_off_profiles;
   message.parts_dropped = status.parts_dropped;
   message.parts_truncated = status.parts_truncated;
   message.runs_dropped = status.runs_dropped;
@@ -105,6 +107,8 @@ void from_message(const cosmos_lcm::cell_status_t& message, CellStatus& status) 
   status.encoder_reversals = message.encoder_reversals;
   status.gpio_edges_lost = message.gpio_edges_lost;
   status.photo_eye_bounces = message.photo_eye_bounces;
+  status.encoder_stalls = message.encoder_stalls;
+  status.laser_off_profiles = message.laser_off_profiles;
   status.parts_dropped = message.parts_dropped;
   status.parts_truncated = message.parts_truncated;
   status.runs_dropped = message.runs_dropped;

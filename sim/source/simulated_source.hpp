@@ -21,6 +21,7 @@
 #include "sim/part_catalog.hpp"
 #include "sim/simulated_scanner.hpp"
 #include "sim/source/simulated_conveyor.hpp"
+#include "sim/source/source_fault_injector.hpp"
 
 namespace cosmos {
 
@@ -29,11 +30,14 @@ class SimulatedSource final : public ScannerSource {
   // Draws from the catalog's parts (settings.part_names selects among them) and loads only
   // the meshes drawn. InputError for an unknown part name or an unreadable mesh,
   // std::invalid_argument for settings out of range; builds the whole scene.
+  // `faults`: injected as source_fault_injector.hpp describes (none by default).
   SimulatedSource(const PartCatalog& catalog, const ScannerParameters& parameters,
-                  const SimulatedSourceSettings& settings);
+                  const SimulatedSourceSettings& settings,
+                  const FaultInjectionSettings& faults = {});
   // The same from meshes in memory (procedural test parts); part_names selects among them.
   SimulatedSource(const std::vector<SimPartModel>& models, const ScannerParameters& parameters,
-                  const SimulatedSourceSettings& settings);
+                  const SimulatedSourceSettings& settings,
+                  const FaultInjectionSettings& faults = {});
   ~SimulatedSource() override;
   SimulatedSource(const SimulatedSource&) = delete;
   SimulatedSource& operator=(const SimulatedSource&) = delete;
@@ -46,7 +50,9 @@ class SimulatedSource final : public ScannerSource {
 
   double mm_per_profile() const override { return parameters_.profile_step_mm(); }
   std::string_view last_error() const noexcept override { return error_.view(); }
-  SourceHealth health() const noexcept override { return {}; }
+  SourceHealth health() const noexcept override {
+    return {.camera_timeouts = faults_.camera_timeouts()};
+  }
 
   const SimulatedConveyor& conveyor() const { return conveyor_; }
   const std::vector<PlacedSimPart>& placed_parts() const { return conveyor_.placed_parts(); }
@@ -63,6 +69,7 @@ class SimulatedSource final : public ScannerSource {
   ScannerParameters parameters_;
   SimulatedConveyor conveyor_;  // declared before the scanner that traces it
   std::unique_ptr<SimulatedScanner> scanner_;
+  SourceFaultInjector faults_;
   std::int64_t next_profile_ = 0;
   bool started_ = false;
   ErrorLine error_;

@@ -20,11 +20,13 @@ const SimulatedConveyor& checked(const HardwareConfig& config,
 
 HardwareTwinSource::HardwareTwinSource(const HardwareConfig& config,
                                        std::unique_ptr<SimulatedConveyor> conveyor,
-                                       const SimulatedGpioSettings& gpio_settings)
+                                       const SimulatedGpioSettings& gpio_settings,
+                                       const FaultInjectionSettings& faults)
     : conveyor_(std::move(conveyor)),
       clock_(checked(config, conveyor_).parameters()),
-      camera_(*conveyor_, clock_, config.camera),
-      gpio_(*conveyor_, clock_, config.gpio, gpio_settings),
+      faults_(faults),
+      camera_(*conveyor_, clock_, config.camera, faults_),
+      gpio_(*conveyor_, clock_, config.gpio, gpio_settings, faults_),
       hardware_(config, conveyor_->parameters(), camera_, gpio_) {}
 
 HardwareTwinSource::~HardwareTwinSource() { hardware_.stop(); }

@@ -17,6 +17,7 @@
 #include "realtime/config/hardware_config.hpp"
 #include "realtime/sources/hardware_source.hpp"
 #include "realtime/sources/scanner_source.hpp"
+#include "sim/source/fault_plan.hpp"
 #include "sim/source/simulated_conveyor.hpp"
 #include "sim/twins/simulated_belt_clock.hpp"
 #include "sim/twins/simulated_camera.hpp"
@@ -27,8 +28,10 @@ namespace cosmos {
 class HardwareTwinSource final : public ScannerSource {
  public:
   // std::invalid_argument unless config names the simulated camera and GPIO chip.
+  // `faults`: injected at the devices (SimulatedCamera, SimulatedGpioLines); none by default.
   HardwareTwinSource(const HardwareConfig& config, std::unique_ptr<SimulatedConveyor> conveyor,
-                     const SimulatedGpioSettings& gpio_settings = {});
+                     const SimulatedGpioSettings& gpio_settings = {},
+                     const FaultInjectionSettings& faults = {});
   ~HardwareTwinSource() override;
   HardwareTwinSource(const HardwareTwinSource&) = delete;
   HardwareTwinSource& operator=(const HardwareTwinSource&) = delete;
@@ -55,6 +58,7 @@ class HardwareTwinSource final : public ScannerSource {
  private:
   std::unique_ptr<SimulatedConveyor> conveyor_;
   SimulatedBeltClock clock_;
+  FaultPlan faults_;
   SimulatedCamera camera_;
   SimulatedGpioLines gpio_;
   HardwareSource hardware_;  // declared after the devices it reads

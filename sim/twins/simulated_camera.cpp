@@ -1,9 +1,11 @@
 #include "sim/twins/simulated_camera.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdarg>
 #include <cstdio>
 #include <exception>
+#include <thread>
 
 #include "scanner/triangulation_geometry.hpp"
 #include "sim/seeded_random.hpp"
@@ -18,8 +20,8 @@ constexpr std::uint64_t kFrameStream = 0xF4A3E;
 }  // namespace
 
 SimulatedCamera::SimulatedCamera(const SimulatedConveyor& conveyor, SimulatedBeltClock& clock,
-                                 const CameraConfig& config)
-    : conveyor_(conveyor), clock_(clock), config_(config) {}
+                                 const CameraConfig& config, const FaultPlan& faults)
+    : conveyor_(conveyor), clock_(clock), config_(config), faults_(faults) {}
 
 SimulatedCamera::~SimulatedCamera() = default;
 
@@ -100,6 +102,7 @@ CameraStatus SimulatedCamera::rewind() noexcept {
     return CameraStatus::kWrongState;
   }
   next_index_ = 0;
+  frames_lost_ = 0;
   clock_.rewind();
   return CameraStatus::kOk;
 }
@@ -108,11 +111,48 @@ int SimulatedCamera::lent_frames() const noexcept {
   return static_cast<int>(std::count(lent_.begin(), lent_.end(), 1));
 }
 
-CameraStatus SimulatedCamera::next_frame(std::int64_t, FrameView& frame) noexcept {
+CameraStatus SimulatedCamera::inject_losses(std::int64_t timeout_us) noexcept {
+  const std::int64_t last = conveyor_.last_profile();
+  while (next_index_ <= last && faults_.active(InjectedFault::kFrameGap, next_index_)) {
+    ++next_index_;
+    ++frames_lost_;
+  }
+  if (next_index_ > last || !faults_.active(InjectedFault::kCameraStall, next_index_))
+    return CameraStatus::kOk;
+  // The frames that pass during one wait; if the stall ends within it, the next frame
+  // arrives after the stalled ones' time instead of a timeout.
+  const double line_rate_hz = conveyor_.parameters().line_rate_hz;
+  const auto frames_per_wait = std::max<std::int64_t>(
+      1, static_cast<std::int64_t>(static_cast<double>(timeout_us) * line_rate_hz / 1e6));
+  std::int64_t stalled = 0;
+  while (stalled < frames_per_wait && next_index_ <= last &&
+         faults_.active(InjectedFault::kCameraStall, next_index_)) {
+    ++next_index_;
+    ++stalled;
+  }
+  frames_lost_ += static_cast<std::uint64_t>(stalled);
+  clock_.advance_to_frame(next_index_ - 1);
+  const bool timed_out =
+      stalled == frames_per_wait &&
+      (next_index_ > last || faults_.active(InjectedFault::kCameraStall, next_index_));
+  const auto waited_us =
+      timed_out ? timeout_us
+                : static_cast<std::int64_t>(static_cast<double>(stalled) * 1e6 / line_rate_hz);
+  std::this_thread::sleep_for(std::chrono::microseconds(waited_us));
+  if (!timed_out) return CameraStatus::kOk;
+  ++stats_.timeouts;
+  ++stats_.consecutive_timeouts;
+  error_.set("simulated camera: no frame within %lld us (frame %lld, injected stall)",
+             static_cast<long long>(timeout_us), static_cast<long long>(next_index_));
+  return CameraStatus::kTimeout;
+}
+
+CameraStatus SimulatedCamera::next_frame(std::int64_t timeout_us, FrameView& frame) noexcept {
   if (!streaming_) {
     fail("next_frame: camera not started");
     return CameraStatus::kWrongState;
   }
+  if (inject_losses(timeout_us) == CameraStatus::kTimeout) return CameraStatus::kTimeout;
   if (next_index_ > conveyor_.last_profile()) {
     error_.set("simulated camera: frame %lld: the conveyor's last profile has passed",
                static_cast<long long>(next_index_));
@@ -127,6 +167,8 @@ CameraStatus SimulatedCamera::next_frame(std::int64_t, FrameView& frame) noexcep
   const ScannerParameters& scanner = conveyor_.parameters();
   const std::int64_t ticks = scanner.encoder_ticks_of_profile(next_index_);
   laser_->trace(laser_y_belt_mm(scanner, next_index_), line_);
+  if (faults_.active(InjectedFault::kLaserOff, next_index_))
+    std::fill(line_.state.begin(), line_.state.end(), LaserSampleState::kLaserShadow);
   cv::Mat& buffer = buffers_[index];
   renderer_->render(line_, mix_seed(scanner.seed ^ kFrameStream, static_cast<std::uint64_t>(ticks)),
                     buffer);
@@ -142,7 +184,10 @@ CameraStatus SimulatedCamera::next_frame(std::int64_t, FrameView& frame) noexcep
   frame.roi_top_px = config_.roi_top_px;
   frame.roi_left_px = config_.roi_left_px;
   frame.frame_index = static_cast<std::uint64_t>(next_index_);
-  frame.dropped_before = 0;
+  frame.dropped_before = static_cast<std::uint32_t>(frames_lost_);
+  stats_.dropped_frames += frames_lost_;
+  frames_lost_ = 0;
+  stats_.consecutive_timeouts = 0;
   frame.t_us = clock_.now_ns() / 1000;
   frame.t_is_start_of_exposure = true;
   frame.buffer_index = static_cast<int>(index);

@@ -25,6 +25,13 @@
 // next_frame, release_frame and the controls on a closed camera are kWrongState; next_frame
 // with every buffer lent is kError. Exposure and gain are recorded, not drawn.
 // next_frame() renders into a preallocated buffer: no allocation, no exceptions.
+//
+// Injected faults (sim/source/fault_plan.hpp, by frame index), as a failing V4L2 camera shows
+// them: frames of a gap are never delivered and the next frame says how many were lost
+// (dropped_before, its index past them); during a stall next_frame() blocks for its whole
+// timeout, the belt moving on, and says kTimeout (counted in stats().timeouts) until the
+// stall's frames have passed; with the laser off a frame shows the belt with no stripe at all.
+// Only the stall blocks (for real time: a camera's wait is wall-clock time).
 #include <cstdint>
 #include <memory>
 #include <opencv2/core/mat.hpp>
@@ -35,6 +42,7 @@
 #include "firmware_bridge/error_line.hpp"
 #include "sim/camera_frame_renderer.hpp"
 #include "sim/laser_line_scanner.hpp"
+#include "sim/source/fault_plan.hpp"
 #include "sim/source/simulated_conveyor.hpp"
 #include "sim/twins/simulated_belt_clock.hpp"
 
@@ -44,7 +52,7 @@ class SimulatedCamera final : public Camera {
  public:
   // The conveyor and the clock must outlive the camera.
   SimulatedCamera(const SimulatedConveyor& conveyor, SimulatedBeltClock& clock,
-                  const CameraConfig& config);
+                  const CameraConfig& config, const FaultPlan& faults = FaultPlan{});
   ~SimulatedCamera() override;
   SimulatedCamera(const SimulatedCamera&) = delete;
   SimulatedCamera& operator=(const SimulatedCamera&) = delete;
@@ -75,11 +83,15 @@ class SimulatedCamera final : public Camera {
 
  private:
   CameraStatus check_roi() noexcept;
+  // Skips the frames an injected gap or stall loses; kTimeout after waiting out a stall.
+  CameraStatus inject_losses(std::int64_t timeout_us) noexcept;
   [[gnu::format(printf, 2, 3)]] CameraStatus fail(const char* format, ...) noexcept;
 
   const SimulatedConveyor& conveyor_;
   SimulatedBeltClock& clock_;
   CameraConfig config_;
+  FaultPlan faults_;
+  std::uint64_t frames_lost_ = 0;  // lost since the last frame handed out
   std::unique_ptr<LaserLineScanner> laser_;
   std::unique_ptr<CameraFrameRenderer> renderer_;
   LaserLine line_;

@@ -34,9 +34,11 @@ std::vector<BeamInterruption> beam_interruptions_of(const SimulatedConveyor& con
 
 SimulatedGpioLines::SimulatedGpioLines(const SimulatedConveyor& conveyor,
                                        const SimulatedBeltClock& clock, const GpioConfig& config,
-                                       const SimulatedGpioSettings& settings)
+                                       const SimulatedGpioSettings& settings,
+                                       const FaultPlan& faults)
     : clock_(clock),
       config_(config),
+      faults_(faults),
       beam_(beam_interruptions_of(conveyor, settings.photo_eye_y_mm)),
       decoder_(GpioInputParameters{
           {config.encoder_mode, config.encoder_debounce_ns(), /*has_direction_line=*/true},
@@ -54,16 +56,21 @@ SimulatedGpioLines::SimulatedGpioLines(const SimulatedConveyor& conveyor,
   writes_.reserve(kWriteCapacity);
 }
 
-bool SimulatedGpioLines::level_a(std::int64_t tick) const noexcept {
+bool SimulatedGpioLines::level_a(std::int64_t position) const noexcept {
   if (config_.encoder_mode == EncoderMode::kStep) return false;  // between pulses
-  const std::int64_t phase = ((tick % 4) + 4) % 4;               // 00 → 10 → 11 → 01
+  const std::int64_t phase = ((position % 4) + 4) % 4;           // 00 → 10 → 11 → 01
   return phase == 1 || phase == 2;
 }
 
-bool SimulatedGpioLines::level_b(std::int64_t tick) const noexcept {
+bool SimulatedGpioLines::level_b(std::int64_t position) const noexcept {
   if (config_.encoder_mode == EncoderMode::kStep) return false;  // direction: forward
-  const std::int64_t phase = ((tick % 4) + 4) % 4;
+  const std::int64_t phase = ((position % 4) + 4) % 4;
   return phase == 2 || phase == 3;
+}
+
+std::int64_t SimulatedGpioLines::profile_of_tick(std::int64_t tick) const noexcept {
+  const std::int64_t per_profile = std::max(clock_.ticks_per_frame(), 1);
+  return (tick + per_profile - 1) / per_profile;
 }
 
 bool SimulatedGpioLines::beam_interrupted(std::int64_t tick) const noexcept {
@@ -79,8 +86,11 @@ GpioStatus SimulatedGpioLines::start() noexcept {
   if (started_) return GpioStatus::kOk;
   error_.clear();
   const std::int64_t tick = clock_.ticks_now();
+  if (tick == 0) position_offset_ = 0;  // a rewound belt: the encoder is where the belt is
+  position_ = tick + position_offset_;
+  step_down_ = false;
   merger_.clear();
-  decoder_.reset(level_a(tick), level_b(tick), beam_interrupted(tick), clock_.now_ns());
+  decoder_.reset(level_a(position_), level_b(position_), beam_interrupted(tick), clock_.now_ns());
   next_tick_ = tick + 1;
   next_beam_edge_ = 0;
   while (next_beam_edge_ < beam_edges_.size() && beam_edges_[next_beam_edge_].tick <= tick)
@@ -101,17 +111,47 @@ GpioStatus SimulatedGpioLines::stop() noexcept {
 
 void SimulatedGpioLines::push_encoder_edges(std::int64_t tick) noexcept {
   const std::int64_t t_ns = clock_.tick_time_ns(tick);
+  const std::int64_t profile = profile_of_tick(tick);
+  int step = 1;
+  if (faults_.active(InjectedFault::kEncoderStuck, profile)) {
+    step = 0;
+  } else if (faults_.active(InjectedFault::kEncoderReversal, profile)) {
+    step = -1;
+  }
+  const std::int64_t from = position_;
+  position_ += step;
+  position_offset_ = position_ - tick;
+  if (step == 0) return;
+  const bool first_of_profile = tick == (profile - 1) * clock_.ticks_per_frame() + 1;
+  if (first_of_profile && faults_.active(InjectedFault::kEncoderGlitch, profile)) return;
   if (config_.encoder_mode == EncoderMode::kStep) {
+    // B, the direction, changes before the step it sets (high: counting down).
+    if ((step < 0) != step_down_) {
+      step_down_ = step < 0;
+      merger_.push({t_ns - 1, GpioInput::kEncoderB, step_down_});
+    }
     merger_.push({t_ns, GpioInput::kEncoderA, true});
     merger_.push({(t_ns + clock_.tick_time_ns(tick + 1)) / 2, GpioInput::kEncoderA, false});
     return;
   }
-  // One line changes per tick: A on odd phases, B on even ones.
-  if (tick % 2 != 0) {
-    merger_.push({t_ns, GpioInput::kEncoderA, level_a(tick)});
+  // One line changes per position: A into odd phases, B into even ones; backwards, the line
+  // that changed on the way up changes back.
+  const std::int64_t crossed = step > 0 ? position_ : from;
+  if (((crossed % 2) + 2) % 2 != 0) {
+    merger_.push({t_ns, GpioInput::kEncoderA, level_a(position_)});
   } else {
-    merger_.push({t_ns, GpioInput::kEncoderB, level_b(tick)});
+    merger_.push({t_ns, GpioInput::kEncoderB, level_b(position_)});
   }
+}
+
+void SimulatedGpioLines::push_beam_edge(const BeamEdge& edge) noexcept {
+  const std::int64_t t_ns = clock_.tick_time_ns(edge.tick);
+  merger_.push({t_ns, GpioInput::kPhotoEye, edge.present});
+  if (!faults_.active(InjectedFault::kPhotoEyeBounce, profile_of_tick(edge.tick))) return;
+  const std::int64_t bounce_ns = std::max<std::int64_t>(config_.photo_eye_debounce_ns() / 4, 1);
+  for (int k = 1; k <= 4; ++k)
+    merger_.push(
+        {t_ns + k * bounce_ns, GpioInput::kPhotoEye, k % 2 == 0 ? edge.present : !edge.present});
 }
 
 GpioStatus SimulatedGpioLines::poll_inputs(std::int64_t) noexcept {
@@ -127,8 +167,7 @@ GpioStatus SimulatedGpioLines::poll_inputs(std::int64_t) noexcept {
     for (; next_tick_ <= last_tick; ++next_tick_) push_encoder_edges(next_tick_);
     for (; next_beam_edge_ < beam_edges_.size() && beam_edges_[next_beam_edge_].tick <= last_tick;
          ++next_beam_edge_) {
-      const BeamEdge& edge = beam_edges_[next_beam_edge_];
-      merger_.push({clock_.tick_time_ns(edge.tick), GpioInput::kPhotoEye, edge.present});
+      push_beam_edge(beam_edges_[next_beam_edge_]);
     }
     merger_.drain(clock_.tick_time_ns(last_tick), decode);
     edges = true;

@@ -21,6 +21,15 @@
 // ready), so set_output() is kOk once started; each write is recorded with
 // the clock's time and frame. The line names of a GpioConfig are not used.
 //
+// Injected faults (sim/source/fault_plan.hpp, by the profile a tick leads up to: ticks
+// ((k-1)·n, k·n] of profile k, n = encoder_ticks_per_profile) move the encoder's position
+// instead of the belt: stuck, the lines stay quiet; reversed, the position runs back one tick
+// per tick (the lines' Gray sequence backwards, which the decoder counts as reversals) and
+// forwards from there after it; a glitch loses the first edge of each profile (the decoder
+// counts the invalid transitions it causes). The position's lag behind the belt stays after
+// the fault, as on a slipping encoder wheel. A bouncing photo eye repeats each of its edges
+// twice, its edges a quarter of the debounce time apart.
+//
 // Deterministic: everything follows from the conveyor and the clock, nothing from the wall
 // clock. poll_inputs() and set_output() use preallocated storage: no allocation.
 #include <array>
@@ -32,6 +41,7 @@
 #include "firmware_bridge/gpio.hpp"
 #include "firmware_bridge/gpio_config.hpp"
 #include "firmware_bridge/gpio_input_decoder.hpp"
+#include "sim/source/fault_plan.hpp"
 #include "sim/source/simulated_conveyor.hpp"
 #include "sim/twins/simulated_belt_clock.hpp"
 
@@ -62,7 +72,8 @@ class SimulatedGpioLines final : public GpioLines {
 
   // The conveyor and the clock must outlive the lines.
   SimulatedGpioLines(const SimulatedConveyor& conveyor, const SimulatedBeltClock& clock,
-                     const GpioConfig& config, const SimulatedGpioSettings& settings = {});
+                     const GpioConfig& config, const SimulatedGpioSettings& settings = {},
+                     const FaultPlan& faults = FaultPlan{});
 
   GpioStatus start() noexcept override;
   GpioStatus stop() noexcept override;
@@ -94,14 +105,22 @@ class SimulatedGpioLines final : public GpioLines {
     bool present = false;
   };
 
-  bool level_a(std::int64_t tick) const noexcept;
-  bool level_b(std::int64_t tick) const noexcept;
+  // The lines' levels at encoder position `position` (ticks).
+  bool level_a(std::int64_t position) const noexcept;
+  bool level_b(std::int64_t position) const noexcept;
+  // The profile (camera frame) that `tick` leads up to.
+  std::int64_t profile_of_tick(std::int64_t tick) const noexcept;
+  void push_beam_edge(const BeamEdge& edge) noexcept;
   bool beam_interrupted(std::int64_t tick) const noexcept;
   void push_encoder_edges(std::int64_t tick) noexcept;
   void record(GpioOutput output, bool active) noexcept;
 
   const SimulatedBeltClock& clock_;
   GpioConfig config_;
+  FaultPlan faults_;
+  std::int64_t position_ = 0;         // the encoder's position after the last tick emitted
+  std::int64_t position_offset_ = 0;  // position − tick: what faults made it lag
+  bool step_down_ = false;            // step mode: the direction line's level
   std::vector<BeamInterruption> beam_;
   std::vector<BeamEdge> beam_edges_;  // in tick order
   GpioInputDecoder decoder_;

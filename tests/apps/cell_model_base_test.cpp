@@ -1,6 +1,7 @@
 // The model base a cell runs with (apps/cell_model_base.hpp), on the real binary: a configured
 // base whose views were taken with another belt threshold or on another grid is refused in one
-// line naming the base, the differing conditioning key and both values.
+// line naming the base, the differing conditioning key and both values; so is a base damaged
+// at start (faults.corrupt_model_base).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -54,6 +55,13 @@ TEST_F(CellModelBase, RefusesABaseWhoseViewsLieOnAnotherGrid) {
       "  x_min_mm: -127.75\n  x_max_mm: 128.25\n");
   testing::expect_one_line_failure(
       run, "conditioning.grid_x_mm is 0.4, " + (dir_ / "cell.yaml").string() + " gives 0.5");
+}
+
+TEST_F(CellModelBase, RefusesABaseCorruptedAtStartInOneLine) {
+  // The injected fault of a damaged base: one payload byte flipped as it is read.
+  const testing::CliRun run = run_cell("faults:\n  seed: 5\n  corrupt_model_base: true\n");
+  testing::expect_one_line_failure(run, testing::regression_model_base().string() + ": corrupted");
+  EXPECT_NE(run.err.find("(faults.corrupt_model_base flipped byte "), std::string::npos) << run.err;
 }
 
 }  // namespace

@@ -227,3 +227,41 @@ TEST(SimulatedScanner, RangeImageFrameHoldsTheGroundTruth) {
 
 }  // namespace
 }  // namespace cosmos
+
+namespace cosmos {
+namespace {
+
+// A part's heights are its own: a taller part further down the belt must not change them in
+// any bit (the probe once started above the whole scene, so its rounding followed the
+// tallest part on the belt, and the same part scored differently in longer streams).
+TEST(LaserLineScanner, APartsLineDoesNotDependOnTheOtherPartsOnTheBelt) {
+  const TriangleMesh ball = make_icosphere(15.0, 3);
+  const TriangleMesh tower = make_box(20.0, 20.0, 90.0);
+  const ScannerParameters parameters;
+  ConveyorScene alone;
+  alone.add_part("ball", alone.add_mesh(ball), place_on_belt(ball, Eigen::Matrix3d::Identity()));
+  alone.commit();
+  ConveyorScene with_tower;
+  with_tower.add_part("ball", with_tower.add_mesh(ball),
+                      place_on_belt(ball, Eigen::Matrix3d::Identity()));
+  with_tower.add_part("tower", with_tower.add_mesh(tower),
+                      place_on_belt(tower, Eigen::Matrix3d::Identity(), 0.0, -200.0));
+  with_tower.commit();
+  LaserLineScanner scanner_alone(alone, parameters, parameters.points_per_profile);
+  LaserLineScanner scanner_with_tower(with_tower, parameters, parameters.points_per_profile);
+  LaserLine line_alone, line_with_tower;
+  int lit = 0;
+  for (double y_mm = -16.0; y_mm <= 16.0; y_mm += 0.4) {
+    scanner_alone.trace(y_mm, line_alone);
+    scanner_with_tower.trace(y_mm, line_with_tower);
+    ASSERT_EQ(std::memcmp(line_alone.z_mm.data(), line_with_tower.z_mm.data(),
+                          line_alone.z_mm.size() * sizeof(float)),
+              0)
+        << "y " << y_mm;
+    for (const float z : line_alone.z_mm) lit += z > 1.0f ? 1 : 0;
+  }
+  EXPECT_GT(lit, 1000);  // the ball was scanned
+}
+
+}  // namespace
+}  // namespace cosmos

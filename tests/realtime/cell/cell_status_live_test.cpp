@@ -1,7 +1,8 @@
 // COSMOS_STATUS while the cell runs: a scanner source that loses frames, stalls past its
 // watchdog and reports encoder and GPIO faults has every one of them counted on the status
 // the publisher sends, FAULT with the reason while the stall lasts, and the loop goes on
-// when frames come back. A profile on a grid no scanner has is counted as refused.
+// when frames come back. A profile on a grid no scanner has is counted as refused; a source
+// that fails is FAULT with its reason.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -112,6 +113,34 @@ TEST(CellStatusLive, SourceFaultsAreCountedLiveAndTheStallIsAFaultThatEnds) {
   EXPECT_EQ(last.parts_seen, 0);
   EXPECT_EQ(summary.profiles_dropped, 3);
   EXPECT_EQ(statuses.back().camera_timeouts, last.camera_timeouts);
+}
+
+// Fails at its first next() as a camera that went away does.
+class FailingSource final : public ScannerSource {
+ public:
+  SourceStatus start() override { return SourceStatus::kOk; }
+  void reserve(Profile& profile) const override { profile.reserve(8); }
+  SourceStatus next(Profile&) noexcept override { return SourceStatus::kError; }
+  void stop() noexcept override {}
+  double mm_per_profile() const override { return 0.4; }
+  std::string_view last_error() const noexcept override {
+    return "/dev/video0: VIDIOC_DQBUF: No such device";
+  }
+  SourceHealth health() const noexcept override { return {}; }
+};
+
+TEST(CellStatusLive, ASourceFailureIsAFaultThatSaysWhy) {
+  MemoryPublisher publisher;
+  FailingSource source;
+  ScanLoop loop(ScanLoopSettings{});
+  CellRunSettings settings;
+  settings.paced = false;
+  const CellRunSummary summary =
+      run_cell(source, loop, PartRecognitionContext{}, publisher, settings);
+  EXPECT_EQ(summary.source_error, "/dev/video0: VIDIOC_DQBUF: No such device");
+  EXPECT_EQ(summary.last_status.state, CellState::kFault);
+  EXPECT_EQ(summary.last_status.state_text,
+            "the scanner source failed: /dev/video0: VIDIOC_DQBUF: No such device");
 }
 
 }  // namespace
