@@ -279,7 +279,7 @@ PlayerLog Player::run() {
       if (gap > 0 || drop_until_ns_ == 0) awaiting_gap_.clear();
     }
     last_sequence = tick.sequence;
-    log_.captures.push_back({tick.sequence, tick.t_ns, kEmpty, false});
+    log_.captures.push_back({tick.sequence, tick.t_ns, kEmpty, false, 0});
     laser_on += lines_.value(laser_line_) ? 1 : 0;
     const bool result_high = lines_.value(result_line_);
     result_rises += result_high && !result_was_high ? 1 : 0;
@@ -300,6 +300,12 @@ PlayerLog Player::run() {
   stream_.stream_off();
   encoder_.stop();
   resolve_contents();
+  // The count half a tick after the fill began: the belt's schedule puts a frame's exposure
+  // on a tick, which the encoder thread drives (and stamps) a moment after it is due.
+  const auto half_tick_ns =
+      static_cast<std::int64_t>(period_ns_ / (2.0 * tape_.header().ticks_per_profile));
+  for (PlayedCapture& capture : log_.captures)
+    capture.belt_tick = encoder_.tick_at(capture.t_ns + half_tick_ns);
   const EncoderPlayerCounts counts = encoder_.counts();
   std::int64_t stale = 0;
   for (const PlayedCapture& capture : log_.captures) stale += capture.stale ? 1 : 0;
