@@ -290,7 +290,7 @@ void check_faults(const Context& c, std::vector<ProbeCheck>& checks) {
       "player: %lld captures, %lld stale (the frame of an earlier sequence number: %lld after a "
       "gap, %lld queued too late, %lld not yet made the head by vivid's output thread), %lld "
       "encoder edges, %lld jiggles, %lld glitches, %lld beam arrivals (%lld bouncing), %lld "
-      "edges gpio-cdev did not acknowledge",
+      "edges gpio-cdev did not acknowledge, %lld frames not played (every output buffer queued)",
       static_cast<long long>(c.player.count("captures")),
       static_cast<long long>(c.player.count("stale_captures")),
       static_cast<long long>(c.player.count("stale_after_gap")),
@@ -301,7 +301,8 @@ void check_faults(const Context& c, std::vector<ProbeCheck>& checks) {
       static_cast<long long>(c.player.count("glitches")),
       static_cast<long long>(c.player.count("beam_arrivals")),
       static_cast<long long>(c.player.count("bounced_arrivals")),
-      static_cast<long long>(c.player.count("unacknowledged_edges"))));
+      static_cast<long long>(c.player.count("unacknowledged_edges")),
+      static_cast<long long>(c.player.count("output_full_frames"))));
 }
 
 // The figures scripts/hil.sh repeats at the end of its run.

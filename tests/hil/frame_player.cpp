@@ -14,8 +14,8 @@ namespace cosmos::hil {
 namespace {
 
 // The head, the frame behind it, the one drawn ahead, and room for vivid's output thread to
-// fall behind after a drop (it retires one frame per tick of its own).
-constexpr int kOutputBuffers = 8;
+// fall behind after a drop or on a loaded host (it retires one frame per tick of its own).
+constexpr int kOutputBuffers = 16;
 constexpr std::int64_t kEmpty = -1;
 constexpr std::int64_t kDoneIdleNs = 2'000'000'000;  // idle after the conveyor: the cell stopped
 
@@ -115,6 +115,7 @@ class Player {
   std::int64_t prepared_content_ = kEmpty;
   std::size_t next_fault_ = 0;
   std::int64_t drop_until_ns_ = 0;
+  std::int64_t output_full_ = 0;           // frames not played: every output buffer was queued
   std::vector<std::size_t> awaiting_gap_;  // faults whose gap the next capture shows
   PlayerLog log_;
 };
@@ -150,7 +151,16 @@ void Player::queue_frame(std::int64_t content) {
   } else {
     buffer = free_buffer();
     if (buffer < 0) buffer = prepared_buffer_;  // drawn for a frame a gap has skipped
-    if (buffer < 0) throw std::runtime_error("every output buffer is queued");
+    if (buffer < 0) {
+      retire_frames();
+      buffer = free_buffer();
+    }
+    if (buffer < 0) {
+      // vivid's output thread is that far behind (a starved guest): this frame is not
+      // played, and the capture shows the one before it again, counted as stale.
+      ++output_full_;
+      return;
+    }
     write_frame(buffer, content);
   }
   prepared_buffer_ = -1;  // used, or not the frame wanted: a gap or a hold skipped it
@@ -315,6 +325,7 @@ PlayerLog Player::run() {
        {"silent_first_fill", ticks_.first_fill_silent() ? 1 : 0},
        {"stale_captures", stale},
        {"held_frames", stale_holds},
+       {"output_full_frames", output_full_},
        {"sequence_gaps", gaps},
        {"laser_on_captures", laser_on},
        {"result_ready_pulses", result_rises},
