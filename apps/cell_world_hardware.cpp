@@ -41,6 +41,11 @@ ScannerSource& CellWorld::open_source(const CellSourceChoice& choice) {
                      ": names the simulated devices, but this cosmos was built without the "
                      "simulator (COSMOS_SIMULATOR=OFF)");
   auto source = std::make_unique<HardwareSource>(hardware, config.scanner);
+  // The devices are tried once here, so that a cell without them stops at once in one line
+  // naming the device, before its model base is read; the source itself starts only after
+  // that load (command_cell.cpp), since a camera streams and an encoder counts from start().
+  if (source->start() != SourceStatus::kOk) throw InputError(std::string(source->last_error()));
+  source->stop();
   state_->hardware = source.get();
   state_->source = std::make_unique<StreamCheckedSource>(
       std::move(source), config.scanner.encoder_ticks_per_profile, config.stream_check);

@@ -80,7 +80,6 @@ void run(const CellOptions& options) {
   CellWorld world(config);
   ScannerSource& source = world.open_source(
       {options.source, options.hardware, options.replay, options.parts, options.repeat});
-  if (source.start() != SourceStatus::kOk) throw InputError(std::string(source.last_error()));
   if (std::abs(source.mm_per_profile() - config.conditioning.grid_mm) > 1e-9)
     throw InputError(options.config +
                      ": conditioning.grid_mm must equal the belt travel per profile (" +
@@ -118,6 +117,11 @@ void run(const CellOptions& options) {
     web->show_state("starting");
   }
   context.stream_faults = world.stream_faults();
+
+  // The source starts last: a camera streams and an encoder counts from start(), and a slow
+  // model base load or recognizer set-up before the loop polls them would be lost frames,
+  // camera timeouts and encoder events.
+  if (source.start() != SourceStatus::kOk) throw InputError(std::string(source.last_error()));
 
   CellRunSettings settings;
   settings.line_rate_hz = config.scanner.line_rate_hz;

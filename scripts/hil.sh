@@ -14,7 +14,7 @@
 # Environment: HIL_STEPS (comma-separated guest steps, default all:
 # loop,lifecycle,formats,gpio,faults,cell),
 # HIL_PARTS (parts on the cell's conveyor, default 10),
-# HIL_TIMEOUT_S (the guest's wall-clock limit, default 900).
+# HIL_TIMEOUT_S (the guest's wall-clock limit, default 600).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build_dir=${COSMOS_BUILD_DIR:-$root/build}
@@ -22,7 +22,7 @@ hil_cache=${COSMOS_CACHE_DIR:-$HOME/.cache/cosmos-cell}/hil
 work=$build_dir/hil
 steps=${HIL_STEPS:-loop,lifecycle,formats,gpio,faults,cell}
 parts=${HIL_PARTS:-10}
-timeout_s=${HIL_TIMEOUT_S:-900}
+timeout_s=${HIL_TIMEOUT_S:-600}
 mkdir -p "$work" "$hil_cache"
 log=$work/hil.log
 : > "$log"
@@ -36,6 +36,8 @@ fail() {
 elapsed() { echo $(($(date +%s) - started)); }
 
 "$root/scripts/hil/host_packages.sh" "$log"
+command -v qemu-system-x86_64 > /dev/null ||
+  fail "the guest cannot boot: qemu-system-x86_64 is not on PATH after installing qemu-system-x86"
 "$root/scripts/setup.sh" >> "$log" 2>&1 || fail "scripts/setup.sh failed (see $log)"
 cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release >> "$log" 2>&1 ||
   fail "configuring $build_dir failed (see $log)"
@@ -82,16 +84,24 @@ say "initramfs $(($(stat -c %s "$work/initramfs.cpio") / 1048576)) MiB ($(elapse
 # The binaries use AVX2 and FMA (COSMOS_AVX2): qemu's TCG emulates them when asked.
 cpu=max,+avx,+avx2,+fma
 console=$work/console.log
+up_stamp=$work/guest-up-at
+rm -f "$up_stamp"
 boot_started=$(date +%s)
 set +e
 timeout --kill-after=10 "$timeout_s" qemu-system-x86_64 -accel tcg -cpu "$cpu" -smp 2 -m 3072 \
   -display none -monitor none -serial stdio -no-reboot -nic none \
   -kernel "$kernel_dir/vmlinuz" -initrd "$work/initramfs.cpio" \
   -append "console=ttyS0 quiet panic=-1 hil_steps=$steps hil_parts=$parts" < /dev/null 2>&1 |
-  tr -d '\r' | tee "$console" | grep -a --line-buffered -E '^(hil|cell): '
+  tr -d '\r' | tee "$console" | grep -a --line-buffered -E '^(hil|cell): ' |
+  while IFS= read -r line; do
+    # The boot ends where /init first speaks.
+    [[ $line == "hil: guest up"* && ! -f $up_stamp ]] && date +%s > "$up_stamp"
+    printf '%s\n' "$line"
+  done
 qemu_status=${PIPESTATUS[0]}
 set -e
-say "guest ran $(($(date +%s) - boot_started)) s (whole run $(elapsed) s)"
+guest_s=$(($(date +%s) - boot_started))
+say "guest ran $guest_s s (whole run $(elapsed) s)"
 
 if ! grep -aq '^hil: guest up' "$console"; then
   last=$(grep -av '^\s*$' "$console" | tail -n 1)
@@ -105,6 +115,11 @@ if [[ -z $exit_line ]]; then
   ((qemu_status == 124)) && fail "the guest did not finish within ${timeout_s} s (console: $console)"
   fail "the guest stopped before its checks finished (console: $console)"
 fi
+boot_s=$(($(< "$up_stamp") - boot_started))
+say "summary: boot $boot_s s (qemu start to /init), checks $((guest_s - boot_s)) s, whole run $(elapsed) s"
+# The cell step's figures (hil_check): parts, ADD-S, frames, gaps and the COSMOS_STATUS totals.
+grep -a '^hil: INFO summary: ' "$console" | sed 's/^hil: INFO summary: /hil: summary: /' || true
+grep -a -E '^hil: FAIL ' "$console" | sed 's/^hil: FAIL /hil: summary: failed: /' || true
 failed=${exit_line##* }
 ((failed == 0)) || fail "$failed guest step(s) failed (console: $console)"
 say "PASS all steps ($steps)"

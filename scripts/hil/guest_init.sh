@@ -114,6 +114,8 @@ cell_run() {
     --parts "$parts" --unpaced --duration-s "$duration" > /tmp/cell.out 2>&1
   cell_status=$?
   sed 's/^/cell: /' /tmp/cell.out
+  # A cell that failed leaves the player waiting for captures that never come.
+  [ $cell_status -ne 0 ] && kill $player 2> /dev/null
   wait $player
   player_status=$?
   cat /tmp/player.out

@@ -165,16 +165,22 @@ std::vector<ProbeCheck> probe_bridge(const BridgeProbeSettings& settings) {
       static_cast<long long>(corrupt ? corrupt->observed : -1),
       static_cast<unsigned long long>(stats.corrupted_frames)));
 
-  // Encoder: the count at each frame against the belt's (frame s at s · ticks_per_frame),
-  // before the first encoder fault and after the last.
+  // Encoder: the count at each frame against the count the belt had driven onto the lines
+  // when that frame was exposed (the player's record), before the first encoder fault and
+  // after the last: the bridge must count what the lines did, however well the player's
+  // belt kept pace with the capture clock (printed beside it).
   const PlayedFault* jiggle = fault_of(log, "jiggle");
   const PlayedFault* glitch = fault_of(log, "glitch");
+  std::map<std::int64_t, std::int64_t> belt_tick;
+  for (const PlayedCapture& capture : log.captures) belt_tick[capture.sequence] = capture.belt_tick;
   // The first second is left out: the belt is held until the lines are requested.
   const auto settled = static_cast<std::int64_t>(plan.capture_rate_hz);
-  std::vector<std::int64_t> lag_before, lag_after;
+  std::vector<std::int64_t> lag_before, lag_after, belt_off;
   for (const Seen& s : seen) {
-    const std::int64_t lag = s.ticks - s.sequence * plan.ticks_per_frame;
-    if (s.sequence < settled) continue;
+    const auto belt = belt_tick.find(s.sequence);
+    if (s.sequence < settled || belt == belt_tick.end()) continue;
+    const std::int64_t lag = s.ticks - belt->second;
+    belt_off.push_back(belt->second - s.sequence * plan.ticks_per_frame);
     if (jiggle && s.sequence < jiggle->sequence) lag_before.push_back(lag);
     if (glitch && s.sequence > glitch->sequence + 2) lag_after.push_back(lag);
   }
@@ -191,12 +197,13 @@ std::vector<ProbeCheck> probe_bridge(const BridgeProbeSettings& settings) {
       "bridge encoder: %lld steps, %llu reversals (the %lld-tick jiggle makes 2), %llu invalid "
       "transitions and %llu ignored edges (the glitch makes 1 invalid or 2 reversals); count "
       "minus the belt's at each frame: median %+lld ticks before the faults, %+lld after; %llu "
-      "edges lost",
+      "edges lost; the belt's count %+lld ticks (median) off %d a frame",
       static_cast<long long>(encoder.steps), static_cast<unsigned long long>(encoder.reversals),
       static_cast<long long>(jiggle ? jiggle->amount : -1),
       static_cast<unsigned long long>(encoder.invalid_transitions),
       static_cast<unsigned long long>(encoder.ignored_edges), static_cast<long long>(before),
-      static_cast<long long>(after), static_cast<unsigned long long>(lost_edges)));
+      static_cast<long long>(after), static_cast<unsigned long long>(lost_edges),
+      static_cast<long long>(median_of(belt_off)), plan.ticks_per_frame));
   const std::int64_t beam = log.count("beam_arrivals");
   const std::uint64_t filtered = eye.bounces + eye.rejected_pulses + eye.bridged_gaps;
   checks.push_back(check_line(

@@ -4,17 +4,20 @@
 // (player_log.hpp) and the conveyor's ground truth (frame_tape.hpp).
 //
 //   parts    at least required_fraction of the conveyor's parts identified with a pose within
-//            ADD-S 10 % of the part's diameter. A pose is judged where the robot would use it:
-//            in the cell frame at the encoder count of its last profile, against the part's
-//            true pose at the belt position of that profile's frame (frame s is exposed at tick
-//            s · ticks_per_frame, the player's belt). So the encoder count, the frame index
-//            and the stripe all have to be right.
+//            ADD-S 10 % of the part's diameter. A pose is judged as a robot tracking the belt
+//            from the pose's encoder count would use it, against the part's truth at the
+//            belt's true count of the pose's last frame (what the player's belt had driven
+//            onto the lines at that frame's exposure, player_log.hpp): the cell places a part
+//            by its frames' indices, so the frame index, the belt and the stripe all have to
+//            agree (docs/hil.md, "Where a pose is judged").
 //   frames   every frame the capture side was given reached the cell as a profile of that
 //            sequence number with its time stamp (within two frame periods after the fill
 //            began), except the one flagged corrupted; the cell's dropped count equals the
 //            sequence gaps; COSMOS_STATUS agrees.
 //   faults   each injected fault shows where it should (the skip's and the stall's gaps, the
-//            corrupted frame missing but not dropped) and the cell ran on to the end.
+//            corrupted frame missing but not dropped) and the cell ran on to the end; on
+//            COSMOS_STATUS as status_check.hpp says.
+// The last line is a summary of the figures (scripts/hil.sh repeats it).
 #include <vector>
 
 #include "core/profile.hpp"

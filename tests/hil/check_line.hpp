@@ -15,7 +15,7 @@ struct ProbeCheck {
 
 template <class... Values>
 ProbeCheck check_line(bool ok, const char* format, Values... values) {
-  char line[512];
+  char line[1024];
   std::snprintf(line, sizeof line, format, values...);
   return {ok, line, false};
 }

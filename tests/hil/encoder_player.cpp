@@ -1,7 +1,9 @@
 #include "tests/hil/encoder_player.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 
 #include "firmware_bridge/kernel_timestamp.hpp"
 
@@ -12,6 +14,8 @@ namespace {
 // waiting for the first, and later in case the cell requested its lines again.
 constexpr std::int64_t kArmPollNs = 20'000'000;
 constexpr std::int64_t kRefreshNs = 1'000'000'000;
+// Steps of a run of a few minutes (sixteen thousand and some), reserved once.
+constexpr std::size_t kStepsReserved = 1 << 16;
 
 }  // namespace
 
@@ -21,6 +25,7 @@ EncoderPlayer::EncoderPlayer(GpioSimLines& lines, const EncoderPlayerSettings& s
   lines_.drive(settings_.line_a, levels.a);
   lines_.drive(settings_.line_b, levels.b);
   lines_.drive(settings_.photo_eye, false);
+  steps_.reserve(kStepsReserved);
   thread_ = std::thread([this] { run(); });
 }
 
@@ -59,6 +64,14 @@ EncoderPlayerCounts EncoderPlayer::counts() const {
   return counts;
 }
 
+std::int64_t EncoderPlayer::tick_at(std::int64_t t_ns) const {
+  std::lock_guard lock(mutex_);
+  const auto after =
+      std::upper_bound(steps_.begin(), steps_.end(), t_ns,
+                       [](std::int64_t t, const Step& step) { return t < step.t_ns; });
+  return after == steps_.begin() ? 0 : std::prev(after)->tick;
+}
+
 void EncoderPlayer::drive_photo_eye(std::int64_t tick) {
   const std::int64_t conveyor_tick = tick - settings_.beam_offset_ticks;
   const std::vector<BeamInterruption>& beam = settings_.beam;
@@ -95,6 +108,7 @@ void EncoderPlayer::step_to(std::int64_t tick) {
     std::lock_guard lock(mutex_);
     ++counts_.edges;
     counts_.tick = tick_;
+    steps_.push_back({monotonic_now_ns(), tick_});
   }
 }
 

@@ -65,6 +65,9 @@ class EncoderPlayer {
   void jiggle(int ticks);
   void glitch();
   EncoderPlayerCounts counts() const;
+  // The count the belt had driven onto the lines at t_ns (CLOCK_MONOTONIC): the belt's true
+  // count at that moment, jiggles and the hold before the cell's lines included.
+  std::int64_t tick_at(std::int64_t t_ns) const;
   void stop();
 
  private:
@@ -83,7 +86,12 @@ class EncoderPlayer {
   std::deque<int> jiggles_;  // pending: ticks of each
   int glitches_pending_ = 0;
   EncoderPlayerCounts counts_;  // under mutex_
-  std::int64_t tick_ = 0;       // the thread's
+  struct Step {
+    std::int64_t t_ns = 0;  // when the lines showed `tick`
+    std::int64_t tick = 0;
+  };
+  std::vector<Step> steps_;  // under mutex_, in time order
+  std::int64_t tick_ = 0;    // the thread's
   bool eye_ = false;
   std::size_t next_beam_ = 0;
   std::thread thread_;

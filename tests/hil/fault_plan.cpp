@@ -33,7 +33,7 @@ FaultPlan plan_faults(const std::string& mode, const TapeHeader& conveyor) {
   const std::vector<FaultAt> in_order = {{"skip", 0, kSkipFrames},
                                          {"jiggle", 0, 3},
                                          {"glitch", 0, 0},
-                                         {"stall", 0, kStallMs},
+                                         {"stall", 0, kCellStallMs},
                                          {"corrupt", 0, 0}};
   // Gaps after part 0, 1, …: one fault each, the last gap before the end left quiet.
   const int gaps = static_cast<int>(parts.size()) - 1;

@@ -23,6 +23,10 @@ FaultPlan plan_faults(const std::string& mode, const TapeHeader& conveyor);
 
 // The stall's length: longer than the HIL camera's watchdog (config/hardware-hil.yaml).
 inline constexpr int kStallMs = 600;
+// The cell run's stall: long enough that the cell, even with frames still queued when it
+// began, waits through several of its status periods (config/cell-hil.yaml), so that
+// COSMOS_STATUS shows FAULT while it lasts; short enough for the gap between two parts.
+inline constexpr int kCellStallMs = 1200;
 // Frames the skip drops.
 inline constexpr int kSkipFrames = 5;
 

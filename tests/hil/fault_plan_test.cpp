@@ -33,6 +33,7 @@ TEST(FaultPlan, PutsEveryFaultOfTheCellRunBetweenParts) {
   EXPECT_EQ(plan.faults[0].kind, "skip");
   EXPECT_EQ(plan.faults[0].amount, kSkipFrames);
   EXPECT_EQ(plan.faults[3].kind, "stall");
+  EXPECT_EQ(plan.faults[3].amount, kCellStallMs);
   ASSERT_EQ(plan.bouncing_arrivals.size(), 1u);
   EXPECT_LT(plan.bouncing_arrivals[0], header.parts.size());
 }

@@ -14,8 +14,8 @@ namespace cosmos::hil {
 namespace {
 
 // The head, the frame behind it, the one drawn ahead, and room for vivid's output thread to
-// fall behind after a drop (it retires one frame per tick of its own).
-constexpr int kOutputBuffers = 8;
+// fall behind after a drop or on a loaded host (it retires one frame per tick of its own).
+constexpr int kOutputBuffers = 16;
 constexpr std::int64_t kEmpty = -1;
 constexpr std::int64_t kDoneIdleNs = 2'000'000'000;  // idle after the conveyor: the cell stopped
 
@@ -115,6 +115,7 @@ class Player {
   std::int64_t prepared_content_ = kEmpty;
   std::size_t next_fault_ = 0;
   std::int64_t drop_until_ns_ = 0;
+  std::int64_t output_full_ = 0;           // frames not played: every output buffer was queued
   std::vector<std::size_t> awaiting_gap_;  // faults whose gap the next capture shows
   PlayerLog log_;
 };
@@ -150,7 +151,16 @@ void Player::queue_frame(std::int64_t content) {
   } else {
     buffer = free_buffer();
     if (buffer < 0) buffer = prepared_buffer_;  // drawn for a frame a gap has skipped
-    if (buffer < 0) throw std::runtime_error("every output buffer is queued");
+    if (buffer < 0) {
+      retire_frames();
+      buffer = free_buffer();
+    }
+    if (buffer < 0) {
+      // vivid's output thread is that far behind (a starved guest): this frame is not
+      // played, and the capture shows the one before it again, counted as stale.
+      ++output_full_;
+      return;
+    }
     write_frame(buffer, content);
   }
   prepared_buffer_ = -1;  // used, or not the frame wanted: a gap or a hold skipped it
@@ -279,7 +289,7 @@ PlayerLog Player::run() {
       if (gap > 0 || drop_until_ns_ == 0) awaiting_gap_.clear();
     }
     last_sequence = tick.sequence;
-    log_.captures.push_back({tick.sequence, tick.t_ns, kEmpty, false});
+    log_.captures.push_back({tick.sequence, tick.t_ns, kEmpty, false, 0});
     laser_on += lines_.value(laser_line_) ? 1 : 0;
     const bool result_high = lines_.value(result_line_);
     result_rises += result_high && !result_was_high ? 1 : 0;
@@ -300,6 +310,12 @@ PlayerLog Player::run() {
   stream_.stream_off();
   encoder_.stop();
   resolve_contents();
+  // The count half a tick after the fill began: the belt's schedule puts a frame's exposure
+  // on a tick, which the encoder thread drives (and stamps) a moment after it is due.
+  const auto half_tick_ns =
+      static_cast<std::int64_t>(period_ns_ / (2.0 * tape_.header().ticks_per_profile));
+  for (PlayedCapture& capture : log_.captures)
+    capture.belt_tick = encoder_.tick_at(capture.t_ns + half_tick_ns);
   const EncoderPlayerCounts counts = encoder_.counts();
   std::int64_t stale = 0;
   for (const PlayedCapture& capture : log_.captures) stale += capture.stale ? 1 : 0;
@@ -309,6 +325,7 @@ PlayerLog Player::run() {
        {"silent_first_fill", ticks_.first_fill_silent() ? 1 : 0},
        {"stale_captures", stale},
        {"held_frames", stale_holds},
+       {"output_full_frames", output_full_},
        {"sequence_gaps", gaps},
        {"laser_on_captures", laser_on},
        {"result_ready_pulses", result_rises},

@@ -17,7 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr auto kThreadWait = std::chrono::milliseconds(100);
+// Long enough for a guest CPU the host has descheduled: an edge handed over before the
+// thread ran is lost for good, one handed over late only holds the belt back a moment.
+constexpr auto kThreadWait = std::chrono::milliseconds(1000);
 
 std::string read_attribute(const fs::path& path) {
   std::ifstream file(path);

@@ -54,7 +54,7 @@ class GpioSimLines {
   bool has_interrupt_thread(int offset) const {
     return !lines_[static_cast<std::size_t>(offset)].thread_status.empty();
   }
-  // Edges whose interrupt thread did not run within the wait (each waited 100 ms).
+  // Edges whose interrupt thread did not run within the wait (each waited 1 s).
   std::uint64_t unacknowledged_edges() const { return unacknowledged_; }
 
  private:

@@ -32,7 +32,7 @@ void write_player_log(const std::filesystem::path& file, const PlayerLog& log) {
     write_plan_line(out, log.plan);
     for (const PlayedCapture& capture : log.captures) {
       out << "capture " << capture.sequence << ' ' << capture.t_ns << ' ' << capture.content << ' '
-          << (capture.stale ? 1 : 0) << '\n';
+          << (capture.stale ? 1 : 0) << ' ' << capture.belt_tick << '\n';
     }
     for (const std::int64_t sequence : log.merged) out << "merged " << sequence << '\n';
     for (const PlayedFault& fault : log.faults) {
@@ -64,7 +64,8 @@ PlayerLog read_player_log(const std::filesystem::path& file) {
     } else if (kind == "capture") {
       PlayedCapture capture;
       int stale = 0;
-      ok = static_cast<bool>(line >> capture.sequence >> capture.t_ns >> capture.content >> stale);
+      ok = static_cast<bool>(line >> capture.sequence >> capture.t_ns >> capture.content >> stale >>
+                             capture.belt_tick);
       capture.stale = stale != 0;
       log.captures.push_back(capture);
     } else if (kind == "merged") {

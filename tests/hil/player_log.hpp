@@ -4,7 +4,7 @@
 // (its sequence number, when, and which conveyor profile it showed), the faults injected and
 // what they did, and the player's counters. One text line per record:
 //   plan LEAD_IN CONVEYOR_FRAMES END_SEQUENCE RATE_HZ TICKS_PER_FRAME CELL_DURATION_S
-//   capture SEQUENCE T_NS CONTENT STALE     (CONTENT: conveyor profile, -1 empty belt)
+//   capture SEQUENCE T_NS CONTENT STALE BELT_TICK   (CONTENT: conveyor profile, -1 empty belt)
 //   merged SEQUENCE                         (a fill whose event the player did not see)
 //   fault KIND SEQUENCE AMOUNT OBSERVED
 //   count NAME VALUE
@@ -30,6 +30,10 @@ struct PlayedCapture {
   std::int64_t t_ns = 0;     // when vivid began filling it (CLOCK_MONOTONIC)
   std::int64_t content = 0;  // conveyor profile shown, -1 the empty belt
   bool stale = false;        // not the profile its sequence number stands for
+  // The count the player's belt had driven onto the encoder lines at t_ns: the belt's true
+  // count of this frame (the sequence number times ticks_per_frame only while the belt keeps
+  // pace with the capture clock).
+  std::int64_t belt_tick = 0;
 };
 
 // skip: AMOUNT frames dropped by vivid (OBSERVED: the sequence gap that followed);

@@ -14,8 +14,9 @@ namespace fs = std::filesystem;
 TEST(PlayerLog, ReadsBackWhatWasWritten) {
   PlayerLog log;
   log.plan = {240, 3507, 3746, 29.97, 4, 127.5};
-  log.captures = {
-      {0, 1'000'000, -1, false}, {2, 67'000'000, -1, true}, {241, 8'000'000'000, 1, false}};
+  log.captures = {{0, 1'000'000, -1, false, 0},
+                  {2, 67'000'000, -1, true, 7},
+                  {241, 8'000'000'000, 1, false, 963}};
   log.merged = {17};
   log.faults = {{"skip", 900, 5, 5}, {"glitch", 1200, 0, -1}};
   log.counts = {{"captures", 3}, {"jiggles", 1}};
@@ -31,6 +32,8 @@ TEST(PlayerLog, ReadsBackWhatWasWritten) {
   EXPECT_TRUE(read.captures[1].stale);
   EXPECT_EQ(read.captures[2].t_ns, 8'000'000'000);
   EXPECT_EQ(read.captures[2].content, 1);
+  EXPECT_EQ(read.captures[1].belt_tick, 7);
+  EXPECT_EQ(read.captures[2].belt_tick, 963);
   ASSERT_EQ(read.faults.size(), 2u);
   EXPECT_EQ(read.faults[0].kind, "skip");
   EXPECT_EQ(read.faults[0].observed, 5);
@@ -43,7 +46,7 @@ TEST(PlayerLog, ReadsBackWhatWasWritten) {
 
 TEST(PlayerLog, NamesTheLineItCannotRead) {
   const fs::path file = fs::temp_directory_path() / "cosmos-player-log-bad.log";
-  std::ofstream(file) << "plan 1 2 3 4 5 6\ncapture 1 two 3 0\n";
+  std::ofstream(file) << "plan 1 2 3 4 5 6\ncapture 1 two 3 0 4\n";
   try {
     read_player_log(file);
     FAIL() << "no error";
