@@ -9,6 +9,7 @@
 #include "core/io/xxh64.hpp"
 #include "realtime/config/hardware_config.hpp"
 #include "realtime/sources/hardware_source.hpp"
+#include "scanner/simulated_mounting.hpp"
 #include "sim/model_base_build/catalog_content_hash.hpp"
 #include "sim/model_base_build/model_base_builder.hpp"
 #include "sim/model_base_build/model_base_parameters.hpp"
@@ -75,9 +76,15 @@ ScannerSource& CellWorld::open_source(const CellSourceChoice& choice) {
       state_->hardware = source.get();
       state_->source = std::move(source);
     } else {
+      // The belt runs and the camera renders by the true geometry (sim_source.truth); the
+      // hardware source steps and triangulates with what the cell is told.
+      const SimulatedMounting& truth = config.sim_source.truth;
       auto twins = std::make_unique<HardwareTwinSource>(
-          hardware, std::make_unique<SimulatedConveyor>(state_->catalog, config.scanner,
-                                                        source_settings(choice, config)));
+          hardware,
+          std::make_unique<SimulatedConveyor>(state_->catalog,
+                                              true_scanner_parameters(config.scanner, truth),
+                                              source_settings(choice, config)),
+          config.scanner, truth);
       state_->conveyor = &twins->conveyor();
       state_->hardware = &twins->hardware();
       state_->source = std::move(twins);

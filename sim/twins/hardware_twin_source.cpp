@@ -16,16 +16,27 @@ const SimulatedConveyor& checked(const HardwareConfig& config,
   return *conveyor;
 }
 
+ScannerParameters parameters_of(const std::unique_ptr<SimulatedConveyor>& conveyor) {
+  return conveyor ? conveyor->parameters() : ScannerParameters{};
+}
+
 }  // namespace
 
 HardwareTwinSource::HardwareTwinSource(const HardwareConfig& config,
                                        std::unique_ptr<SimulatedConveyor> conveyor,
                                        const SimulatedGpioSettings& gpio_settings)
+    : HardwareTwinSource(config, std::move(conveyor), parameters_of(conveyor), {}, gpio_settings) {}
+
+HardwareTwinSource::HardwareTwinSource(const HardwareConfig& config,
+                                       std::unique_ptr<SimulatedConveyor> conveyor,
+                                       const ScannerParameters& told,
+                                       const SimulatedMounting& truth,
+                                       const SimulatedGpioSettings& gpio_settings)
     : conveyor_(std::move(conveyor)),
       clock_(checked(config, conveyor_).parameters()),
-      camera_(*conveyor_, clock_, config.camera),
+      camera_(*conveyor_, clock_, config.camera, truth),
       gpio_(*conveyor_, clock_, config.gpio, gpio_settings),
-      hardware_(config, conveyor_->parameters(), camera_, gpio_) {}
+      hardware_(config, told, camera_, gpio_) {}
 
 HardwareTwinSource::~HardwareTwinSource() { hardware_.stop(); }
 

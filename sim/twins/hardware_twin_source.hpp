@@ -29,6 +29,12 @@ class HardwareTwinSource final : public ScannerSource {
   // std::invalid_argument unless config names the simulated camera and GPIO chip.
   HardwareTwinSource(const HardwareConfig& config, std::unique_ptr<SimulatedConveyor> conveyor,
                      const SimulatedGpioSettings& gpio_settings = {});
+  // A mis-mounted cell (scanner/simulated_mounting.hpp): the conveyor runs by the true
+  // parameters and the camera renders through `truth`, while the hardware source triangulates
+  // and steps the belt with `told`, the parameters the cell was given.
+  HardwareTwinSource(const HardwareConfig& config, std::unique_ptr<SimulatedConveyor> conveyor,
+                     const ScannerParameters& told, const SimulatedMounting& truth,
+                     const SimulatedGpioSettings& gpio_settings = {});
   ~HardwareTwinSource() override;
   HardwareTwinSource(const HardwareTwinSource&) = delete;
   HardwareTwinSource& operator=(const HardwareTwinSource&) = delete;

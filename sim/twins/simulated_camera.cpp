@@ -18,8 +18,8 @@ constexpr std::uint64_t kFrameStream = 0xF4A3E;
 }  // namespace
 
 SimulatedCamera::SimulatedCamera(const SimulatedConveyor& conveyor, SimulatedBeltClock& clock,
-                                 const CameraConfig& config)
-    : conveyor_(conveyor), clock_(clock), config_(config) {}
+                                 const CameraConfig& config, const SimulatedMounting& truth)
+    : conveyor_(conveyor), clock_(clock), config_(config), truth_(truth) {}
 
 SimulatedCamera::~SimulatedCamera() = default;
 
@@ -74,6 +74,7 @@ CameraStatus SimulatedCamera::start() noexcept {
       laser_->reserve(line_);
     }
     renderer_ = std::make_unique<CameraFrameRenderer>(drawing, geometry);
+    true_geometry_ = true_triangulation_geometry(drawing, truth_);
     const auto count = static_cast<std::size_t>(std::max(config_.buffer_count, 1));
     buffers_.clear();
     for (std::size_t i = 0; i < count; ++i) buffers_.push_back(renderer_->make_frame());
@@ -127,6 +128,7 @@ CameraStatus SimulatedCamera::next_frame(std::int64_t, FrameView& frame) noexcep
   const ScannerParameters& scanner = conveyor_.parameters();
   const std::int64_t ticks = scanner.encoder_ticks_of_profile(next_index_);
   laser_->trace(laser_y_belt_mm(scanner, next_index_), line_);
+  if (moves_camera(truth_)) project_through_true_camera();
   cv::Mat& buffer = buffers_[index];
   renderer_->render(line_, mix_seed(scanner.seed ^ kFrameStream, static_cast<std::uint64_t>(ticks)),
                     buffer);
@@ -149,6 +151,20 @@ CameraStatus SimulatedCamera::next_frame(std::int64_t, FrameView& frame) noexcep
   ++next_index_;
   ++stats_.frames;
   return CameraStatus::kOk;
+}
+
+void SimulatedCamera::project_through_true_camera() noexcept {
+  for (int i = 0; i < line_.width(); ++i) {
+    const auto s = static_cast<std::size_t>(i);
+    const Eigen::Vector3d point_belt_mm(line_.x_mm(i), 0.0, line_.z_mm[s]);
+    Eigen::Vector2d uv_px;
+    if (!true_geometry_.project_to_image(point_belt_mm, uv_px)) {
+      line_.state[s] = LaserSampleState::kOutOfRange;
+      continue;
+    }
+    line_.u_px[s] = static_cast<float>(uv_px.x());
+    line_.v_px[s] = static_cast<float>(uv_px.y());
+  }
 }
 
 CameraStatus SimulatedCamera::release_frame(const FrameView& frame) noexcept {

@@ -25,6 +25,12 @@
 // next_frame, release_frame and the controls on a closed camera are kWrongState; next_frame
 // with every buffer lent is kError. Exposure and gain are recorded, not drawn.
 // next_frame() renders into a preallocated buffer: no allocation, no exceptions.
+//
+// True geometry (scanner/simulated_mounting.hpp): a mounting that moves the camera re-projects
+// each lit belt-frame point through the true camera before drawing, so the frames are what
+// a mis-mounted scanner sees while the cell triangulates with the geometry it is told. Which
+// points are lit and seen stays the designed camera's call: the true one is a fraction of a
+// degree away.
 #include <cstdint>
 #include <memory>
 #include <opencv2/core/mat.hpp>
@@ -33,6 +39,7 @@
 #include "firmware_bridge/camera.hpp"
 #include "firmware_bridge/camera_config.hpp"
 #include "firmware_bridge/error_line.hpp"
+#include "scanner/simulated_mounting.hpp"
 #include "sim/camera_frame_renderer.hpp"
 #include "sim/laser_line_scanner.hpp"
 #include "sim/source/simulated_conveyor.hpp"
@@ -44,7 +51,7 @@ class SimulatedCamera final : public Camera {
  public:
   // The conveyor and the clock must outlive the camera.
   SimulatedCamera(const SimulatedConveyor& conveyor, SimulatedBeltClock& clock,
-                  const CameraConfig& config);
+                  const CameraConfig& config, const SimulatedMounting& truth = {});
   ~SimulatedCamera() override;
   SimulatedCamera(const SimulatedCamera&) = delete;
   SimulatedCamera& operator=(const SimulatedCamera&) = delete;
@@ -75,11 +82,14 @@ class SimulatedCamera final : public Camera {
 
  private:
   CameraStatus check_roi() noexcept;
+  void project_through_true_camera() noexcept;
   [[gnu::format(printf, 2, 3)]] CameraStatus fail(const char* format, ...) noexcept;
 
   const SimulatedConveyor& conveyor_;
   SimulatedBeltClock& clock_;
   CameraConfig config_;
+  SimulatedMounting truth_;
+  TriangulationGeometry true_geometry_;
   std::unique_ptr<LaserLineScanner> laser_;
   std::unique_ptr<CameraFrameRenderer> renderer_;
   LaserLine line_;
