@@ -21,7 +21,11 @@ BoardDetection detect_board(const cv::Mat& image, const CalibrationBoard& board,
   }
   std::vector<cv::Point2f> corners;
   const int flags = cv::CALIB_CB_NORMALIZE_IMAGE | cv::CALIB_CB_ACCURACY;
-  if (!cv::findChessboardCornersSB(grey, board.pattern_size(), corners, flags)) {
+  // The exhaustive search finds very oblique boards the quick one misses, at many times the
+  // cost: only when the quick one failed.
+  if (!cv::findChessboardCornersSB(grey, board.pattern_size(), corners, flags) &&
+      !cv::findChessboardCornersSB(grey, board.pattern_size(), corners,
+                                   flags | cv::CALIB_CB_EXHAUSTIVE)) {
     char reason[160];
     std::snprintf(reason, sizeof reason, "no %dx%d chessboard found", board.inner_columns,
                   board.inner_rows);

@@ -9,16 +9,6 @@
 namespace cosmos {
 namespace {
 
-// A square wave of period 2 · square_mm (+1, −1), box-filtered over `footprint_mm`.
-double smoothed_square_wave(double t_mm, double square_mm, double footprint_mm) {
-  const double u = t_mm / square_mm;
-  const double cell = std::floor(u);
-  const double f = u - cell;
-  const double parity = (static_cast<long long>(cell) & 1) ? -1.0 : 1.0;
-  const double to_edge_mm = std::min(f, 1.0 - f) * square_mm;
-  return parity * std::min(1.0, to_edge_mm / (0.5 * footprint_mm));
-}
-
 bool on_board(const CalibrationBoard& board, double x_mm, double y_mm) {
   const double sq = board.square_mm;
   return x_mm > -2.0 * sq && x_mm < (board.inner_columns + 1) * sq && y_mm > -2.0 * sq &&
@@ -60,35 +50,67 @@ BoardImageRenderer::BoardImageRenderer(const TriangulationGeometry& true_geometr
 cv::Mat BoardImageRenderer::render(const CalibrationBoard& board,
                                    const RigidTransform& T_camera_board, std::uint64_t seed) const {
   const CameraIntrinsics& k = geometry_.camera;
-  cv::Mat image(k.height_px, k.width_px, CV_8UC1);
+  const int width = k.width_px;
+  const int height = k.height_px;
+  cv::Mat image(height, width, CV_8UC1);
   const Eigen::Vector3d normal = T_camera_board.rotation.col(2);
   const double offset = normal.dot(T_camera_board.translation_mm);
   const RigidTransform T_board_camera = T_camera_board.inverse();
   const double sq = board.square_mm;
   const double full_scale = 255.0;
   const double electrons_per_level = levels_.full_well_electrons / full_scale;
+  // The print's level at a normalized ray; `edge` says whether a print edge lies within
+  // `reach_mm` of the point (then the pixel is supersampled).
+  const auto level_at = [&](double xn, double yn, double reach_mm, bool* edge) {
+    const Eigen::Vector3d ray(xn, yn, 1.0);
+    const double along = normal.dot(ray);
+    if (std::abs(along) < 1e-9) return kBeltLevel;
+    const double s = offset / along;
+    if (s <= 0) return kBeltLevel;
+    const Eigen::Vector3d b = T_board_camera.apply(s * ray);
+    if (edge) {
+      const auto near_grid = [&](double t) {
+        const double f = t / sq - std::floor(t / sq);
+        return std::min(f, 1.0 - f) * sq < reach_mm;
+      };
+      // Squares' edges and the board's outline both lie on the square grid.
+      *edge = near_grid(b.x()) || near_grid(b.y());
+    }
+    const double reflectance = board_reflectance(board, b.x(), b.y());
+    return reflectance < 0 ? kBeltLevel : reflectance;
+  };
+  const auto normalized_at = [&](double u, double v) {
+    const int u0 = std::clamp(static_cast<int>(std::floor(u)), 0, width - 2);
+    const int v0 = std::clamp(static_cast<int>(std::floor(v)), 0, height - 2);
+    const double fu = u - u0;
+    const double fv = v - v0;
+    const auto at = [&](int uu, int vv) {
+      return normalized_[static_cast<std::size_t>(vv) * width + uu];
+    };
+    const cv::Point2f top = at(u0, v0) * (1 - fu) + at(u0 + 1, v0) * fu;
+    const cv::Point2f bottom = at(u0, v0 + 1) * (1 - fu) + at(u0 + 1, v0 + 1) * fu;
+    return top * (1 - fv) + bottom * fv;
+  };
   SeededRandom random(seed);
-  for (int v = 0; v < k.height_px; ++v) {
+  for (int v = 0; v < height; ++v) {
     auto* row = image.ptr<std::uint8_t>(v);
-    for (int u = 0; u < k.width_px; ++u) {
-      const cv::Point2f& n = normalized_[static_cast<std::size_t>(v) * k.width_px + u];
-      const Eigen::Vector3d ray(n.x, n.y, 1.0);
-      const double along = normal.dot(ray);
-      double level = kBeltLevel;
-      if (std::abs(along) > 1e-9) {
-        const double s = offset / along;
-        const Eigen::Vector3d b = T_board_camera.apply(s * ray);
-        if (s > 0 && on_board(board, b.x(), b.y())) {
-          level = kWhiteLevel;
-          if (in_pattern(board, b.x(), b.y())) {
-            // The pixel's footprint on the board, widened by the board's obliquity.
-            const double footprint_mm =
-                s * ray.norm() / k.fx_px / std::max(0.2, std::abs(along) / ray.norm());
-            const double checker = smoothed_square_wave(b.x(), sq, footprint_mm) *
-                                   smoothed_square_wave(b.y(), sq, footprint_mm);
-            level = kBlackLevel + (kWhiteLevel - kBlackLevel) * 0.5 * (1.0 - checker);
+    for (int u = 0; u < width; ++u) {
+      const cv::Point2f& n = normalized_[static_cast<std::size_t>(v) * width + u];
+      const double depth =
+          std::abs(offset / std::max(1e-9, std::abs(normal.dot(Eigen::Vector3d(n.x, n.y, 1)))));
+      // Generously more than a pixel's footprint, for oblique views.
+      const double reach_mm = 4.0 * depth / k.fx_px;
+      bool edge = false;
+      double level = level_at(n.x, n.y, reach_mm, &edge);
+      if (edge) {
+        // A 4 × 4 box filter over the pixel: the corners fall where a sensor's would.
+        double sum = 0.0;
+        for (int i = 0; i < 4; ++i)
+          for (int j = 0; j < 4; ++j) {
+            const cv::Point2f m = normalized_at(u - 0.375 + 0.25 * i, v - 0.375 + 0.25 * j);
+            sum += level_at(m.x, m.y, 0.0, nullptr);
           }
-        }
+        level = sum / 16.0;
       }
       const double signal = level * full_scale;
       const double noisy = signal + std::sqrt(signal / electrons_per_level) * random.normal() +

@@ -1,9 +1,9 @@
 #pragma once
 // Images of the chessboard (calibration/calibration_board.hpp) as the TRUE camera of a
 // simulated cell sees it (scanner/simulated_mounting.hpp): every pixel's ray, undistorted
-// through the true lens, meets the board's plane; the checker there is box-filtered over
-// the pixel's footprint (the product of two smoothed square waves), so corners land where a
-// real sensor's would to a fraction of a pixel. The sensor's read and shot noise of
+// through the true lens, meets the board's plane and takes the print's level there; pixels
+// near an edge of the print average 4 × 4 rays over their area (a box filter), so corners
+// land where a real sensor's would to a fraction of a pixel. The sensor's read and shot noise of
 // CameraFrameParameters are added, seeded per image. Off the board lies the grey belt.
 #include <cstdint>
 #include <opencv2/core/mat.hpp>

@@ -63,6 +63,7 @@ RigidTransform CalibrationTargetSimulator::T_camera_belt() const {
 }
 
 RigidTransform CalibrationTargetSimulator::random_board_pose(const CalibrationBoard& board,
+                                                             bool facing_camera,
                                                              double max_tilt_deg,
                                                              double y_half_range_mm,
                                                              double z_max_mm) {
@@ -72,12 +73,22 @@ RigidTransform CalibrationTargetSimulator::random_board_pose(const CalibrationBo
   };
   const Eigen::Vector3d centre_board((board.inner_columns - 1) * board.square_mm * 0.5,
                                      (board.inner_rows - 1) * board.square_mm * 0.5, 0.0);
-  const std::vector<cv::Point3f> corners = board.object_points();
+  // The printed board's outline must be in view, not only its corners: the detector needs
+  // the white margin around the pattern.
+  const double sq = board.square_mm;
+  const std::vector<Eigen::Vector3d> outline = {
+      {-2 * sq, -2 * sq, 0},
+      {(board.inner_columns + 1) * sq, -2 * sq, 0},
+      {-2 * sq, (board.inner_rows + 1) * sq, 0},
+      {(board.inner_columns + 1) * sq, (board.inner_rows + 1) * sq, 0}};
   const CameraIntrinsics& k = geometry_.camera;
   for (int attempt = 0; attempt < 1000; ++attempt) {
-    // Printed side up: the board's z axis points down into the belt, away from the camera.
+    // Printed side up (the board's z axis down into the belt, away from the camera), or
+    // square to the camera's axis (the board frame along the camera frame).
     const Eigen::Matrix3d face_up =
-        Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d::UnitX()).toRotationMatrix();
+        facing_camera
+            ? geometry_.R_scanner_camera
+            : Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d::UnitX()).toRotationMatrix();
     const Eigen::Matrix3d tilt =
         (Eigen::AngleAxisd(uniform(-12, 12) * kRadPerDeg, Eigen::Vector3d::UnitZ()) *
          Eigen::AngleAxisd(uniform(-max_tilt_deg, max_tilt_deg) * kRadPerDeg,
@@ -86,13 +97,13 @@ RigidTransform CalibrationTargetSimulator::random_board_pose(const CalibrationBo
                            Eigen::Vector3d::UnitX()))
             .toRotationMatrix();
     RigidTransform T_belt_board;
-    T_belt_board.rotation = tilt * face_up;
+    T_belt_board.rotation = facing_camera ? face_up * tilt : tilt * face_up;
     const Eigen::Vector3d centre_belt(uniform(-45, 45), uniform(-y_half_range_mm, y_half_range_mm),
                                       uniform(0, z_max_mm));
     T_belt_board.translation_mm = centre_belt - T_belt_board.rotation * centre_board;
     bool visible = true;
-    for (const cv::Point3f& c : corners) {
-      const Eigen::Vector3d p = T_belt_board.apply(Eigen::Vector3d(c.x, c.y, c.z));
+    for (const Eigen::Vector3d& c : outline) {
+      const Eigen::Vector3d p = T_belt_board.apply(c);
       Eigen::Vector2d uv;
       if (p.z() < -1.0 || !geometry_.project_to_image(p, uv) || uv.x() < 20 ||
           uv.x() > k.width_px - 21 || uv.y() < 20 || uv.y() > k.height_px - 21) {
@@ -111,7 +122,7 @@ std::vector<BoardImage> CalibrationTargetSimulator::board_images(const Calibrati
   std::vector<BoardImage> images;
   for (int i = 0; i < count; ++i) {
     const RigidTransform T_camera_board =
-        T_camera_belt() * random_board_pose(board, 45.0, 40.0, 60.0);
+        T_camera_belt() * random_board_pose(board, true, 40.0, 40.0, 60.0);
     images.push_back({renderer.render(board, T_camera_board, mix_seed(seed_, 0xCA1 + draws_++)),
                       T_camera_board});
   }
@@ -126,7 +137,7 @@ std::vector<LaserImagePair> CalibrationTargetSimulator::laser_views(const Calibr
   for (int i = 0; i < count; ++i) {
     // Heights spread over the measuring range, so the lines span the plane.
     const double z_max = 10.0 + 90.0 * i / std::max(1, count - 1);
-    const RigidTransform T_belt_board = random_board_pose(board, 20.0, 8.0, z_max);
+    const RigidTransform T_belt_board = random_board_pose(board, false, 20.0, 8.0, z_max);
     const RigidTransform T_camera_board = T_camera_belt() * T_belt_board;
     const RigidTransform T_board_belt = T_belt_board.inverse();
     const Eigen::Vector3d normal = T_belt_board.rotation.col(2);

@@ -2,7 +2,8 @@
 // The calibration targets of a simulated cell, rendered through its TRUE geometry
 // (scanner/simulated_mounting.hpp), with the true values at hand to check a calibration
 // against:
-//   camera: board images in seeded poses over the field of view (tilted up to ±35°)
+//   camera: board images in seeded poses over the field of view (tilted up to ±40° from
+//           facing the camera)
 //   laser:  board image + stripe image pairs, the board held at several heights and tilts
 //           across the laser sheet
 //   belt:   stripe frames of the empty belt, and of the ramp block carried through the sheet
@@ -75,10 +76,11 @@ class CalibrationTargetSimulator {
   static constexpr double kPlateLengthMm = 150.0;
 
  private:
-  // A board pose in the belt frame, its printed side up, at random within the given bounds,
-  // whose every corner the true camera sees with a margin.
-  RigidTransform random_board_pose(const CalibrationBoard& board, double max_tilt_deg,
-                                   double y_half_range_mm, double z_max_mm);
+  // A board pose in the belt frame at random within the given bounds (tilted from lying
+  // printed side up, or from facing the camera square), whose whole outline the true camera
+  // sees with a margin.
+  RigidTransform random_board_pose(const CalibrationBoard& board, bool facing_camera,
+                                   double max_tilt_deg, double y_half_range_mm, double z_max_mm);
   RigidTransform T_camera_belt() const;
 
   ScannerParameters nominal_;
