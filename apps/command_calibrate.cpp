@@ -135,14 +135,9 @@ void run_belt(const CalibrateOptions& options) {
       calibrate_belt(read_frame_list(options.input), read_frame_list(options.block), block,
                      config.scanner, hardware.calibration, hardware.stripe);
   refuse_unless(result.ok, options.block, result.reason);
-  // The profile step is the grid's pitch (cosmos cell requires it); the grid keeps its start
-  // and as much of its width as whole steps allow.
-  ConditioningParameters conditioning = config.conditioning;
-  conditioning.grid_mm = result.encoder_mm_per_tick * config.scanner.encoder_ticks_per_profile;
-  conditioning.x_max_mm =
-      conditioning.x_min_mm +
-      std::floor((config.conditioning.x_max_mm - conditioning.x_min_mm) / conditioning.grid_mm) *
-          conditioning.grid_mm;
+  const ProfileSampling sampling =
+      profile_sampling_for(config.scanner, config.conditioning, result.encoder_mm_per_tick);
+  ConditioningParameters conditioning = sampling.conditioning;
   conditioning.belt_height_mm = result.belt_height_mm;
   conditioning.belt_slope_x = result.belt_slope_x;
   CalibrationReport report(options.report);
@@ -165,6 +160,7 @@ void run_belt(const CalibrateOptions& options) {
   update_yaml_file(options.hardware, {{"calibration.mount", yaml_of(result.mount)}});
   update_yaml_file(options.config,
                    {{"scanner.encoder_mm_per_tick", YAML::Node(result.encoder_mm_per_tick)},
+                    {"scanner.field_of_view_mm", YAML::Node(sampling.field_of_view_mm)},
                     {"conditioning", yaml_of(conditioning)}});
   report.write();
   std::fputs(report.text().c_str(), stdout);

@@ -18,6 +18,7 @@
 #include <string>
 
 #include "apps/command_registry.hpp"
+#include "calibration/belt_calibration.hpp"
 #include "calibration/frame_list.hpp"
 #include "calibration/target_file.hpp"
 #include "calibration/yaml_update.hpp"
@@ -100,16 +101,13 @@ void run_truth(const SimulateOptions& options) {
   calibration.camera = truth.camera;
   calibration.laser = truth.laser;
   calibration.mount = {true, truth.T_scanner_camera};
-  ConditioningParameters conditioning = config.conditioning;
-  conditioning.grid_mm = truth.encoder_mm_per_tick * config.scanner.encoder_ticks_per_profile;
-  conditioning.x_max_mm =
-      conditioning.x_min_mm +
-      std::floor((config.conditioning.x_max_mm - conditioning.x_min_mm) / conditioning.grid_mm) *
-          conditioning.grid_mm;
+  const ProfileSampling sampling =
+      profile_sampling_for(config.scanner, config.conditioning, truth.encoder_mm_per_tick);
   update_yaml_file(options.hardware, {{"calibration", yaml_of(calibration)}});
   update_yaml_file(options.config,
                    {{"scanner.encoder_mm_per_tick", YAML::Node(truth.encoder_mm_per_tick)},
-                    {"conditioning", yaml_of(conditioning)},
+                    {"scanner.field_of_view_mm", YAML::Node(sampling.field_of_view_mm)},
+                    {"conditioning", yaml_of(sampling.conditioning)},
                     {"cell.T_cell_scanner", yaml_of_transform(truth.T_cell_scanner)}});
   std::printf("calibrate truth: the simulated cell's true calibration written to %s and %s\n",
               options.hardware.c_str(), options.config.c_str());

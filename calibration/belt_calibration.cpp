@@ -162,4 +162,18 @@ BeltCalibrationResult calibrate_belt(const std::vector<StripeFrame>& empty_belt,
   return result;
 }
 
+ProfileSampling profile_sampling_for(const ScannerParameters& scanner,
+                                     const ConditioningParameters& conditioning,
+                                     double encoder_mm_per_tick) {
+  ProfileSampling sampling;
+  const double pitch_mm = encoder_mm_per_tick * scanner.encoder_ticks_per_profile;
+  sampling.field_of_view_mm = pitch_mm * scanner.points_per_profile;
+  sampling.conditioning = conditioning;
+  sampling.conditioning.grid_mm = pitch_mm;
+  sampling.conditioning.x_min_mm = -0.5 * sampling.field_of_view_mm + 0.5 * pitch_mm;
+  sampling.conditioning.x_max_mm =
+      sampling.conditioning.x_min_mm + pitch_mm * scanner.points_per_profile;
+  return sampling;
+}
+
 }  // namespace cosmos

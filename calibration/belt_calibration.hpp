@@ -22,6 +22,7 @@
 #include "calibration/calibration_targets.hpp"
 #include "calibration/stripe_frame.hpp"
 #include "firmware_bridge/laser_stripe_extraction.hpp"
+#include "scanner/conditioning_parameters.hpp"
 #include "scanner/scanner_calibration.hpp"
 
 namespace cosmos {
@@ -47,5 +48,18 @@ BeltCalibrationResult calibrate_belt(const std::vector<StripeFrame>& empty_belt,
                                      const ScannerParameters& nominal,
                                      const ScannerCalibration& calibration,
                                      const StripeExtractionParameters& extraction);
+
+// The profile grid a cell with this encoder needs: the belt's travel per profile is the grid's
+// pitch along the belt (cosmos cell requires it) and a model base's views have one pitch both
+// ways, so the profile's samples are respaced to it (field_of_view_mm = points_per_profile ·
+// pitch; with the camera calibrated the field no longer shapes the lens) and the grid is laid
+// on the samples from the first to the last, as config/cell.yaml's default grid is.
+struct ProfileSampling {
+  double field_of_view_mm = 0.0;
+  ConditioningParameters conditioning;
+};
+ProfileSampling profile_sampling_for(const ScannerParameters& scanner,
+                                     const ConditioningParameters& conditioning,
+                                     double encoder_mm_per_tick);
 
 }  // namespace cosmos

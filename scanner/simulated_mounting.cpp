@@ -7,7 +7,8 @@ namespace cosmos {
 
 TriangulationGeometry true_triangulation_geometry(const ScannerParameters& nominal,
                                                   const SimulatedMounting& mounting) {
-  TriangulationGeometry geometry = scanner_triangulation_geometry(nominal);
+  TriangulationGeometry geometry =
+      scanner_triangulation_geometry(true_scanner_parameters(nominal, mounting));
   constexpr double kRadPerDeg = std::numbers::pi / 180.0;
   // Both turns are about axes through the origin, so the optical axis still meets the belt's
   // laser line there: the image of the belt stays inside the ROI.
@@ -30,7 +31,8 @@ TriangulationGeometry true_triangulation_geometry(const ScannerParameters& nomin
 ScannerParameters true_scanner_parameters(const ScannerParameters& nominal,
                                           const SimulatedMounting& mounting) {
   ScannerParameters truth = nominal;
-  truth.encoder_mm_per_tick = nominal.encoder_mm_per_tick * mounting.encoder_scale;
+  if (mounting.encoder_mm_per_tick > 0.0) truth.encoder_mm_per_tick = mounting.encoder_mm_per_tick;
+  if (mounting.field_of_view_mm > 0.0) truth.field_of_view_mm = mounting.field_of_view_mm;
   return truth;
 }
 

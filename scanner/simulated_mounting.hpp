@@ -12,8 +12,13 @@
 //                         the belt's laser line slopes across the image
 //   height_offset_mm      the camera this much higher above the belt
 //   focal_scale, principal_shift_*_px, k1: the lens against the designed pinhole
-//   encoder_scale         belt travel per encoder tick over scanner.encoder_mm_per_tick
+//   encoder_mm_per_tick   the belt's true travel per encoder tick (0: the told one)
+//   field_of_view_mm      the field the camera was designed for (0: the told one), which the
+//                         design's focal length follows: a calibrated cell resamples its
+//                         profiles to its own grid (scanner.field_of_view_mm), the lens stays
 //   T_cell_scanner        where the scanner really is in the robot's frame
+// The absolute values keep the simulated cell the same physical cell while `cosmos calibrate`
+// rewrites the scanner: keys it was told.
 #include "core/parameter_visitor.hpp"
 #include "core/rigid_transform.hpp"
 #include "scanner/scanner_model.hpp"
@@ -29,7 +34,8 @@ struct SimulatedMounting {
   double principal_shift_u_px = 0.0;
   double principal_shift_v_px = 0.0;
   double k1 = 0.0;
-  double encoder_scale = 1.0;
+  double encoder_mm_per_tick = 0.0;
+  double field_of_view_mm = 0.0;
   RigidTransform T_cell_scanner;
 
   template <class Visitor>
@@ -46,8 +52,10 @@ struct SimulatedMounting {
     v("principal_shift_v_px", principal_shift_v_px, "true principal point row shift, px",
       Range{-200, 200});
     v("k1", k1, "true radial lens distortion r^2", Range{-1, 1});
-    v("encoder_scale", encoder_scale, "true belt travel per tick over encoder_mm_per_tick",
-      Range{0.8, 1.25});
+    v("encoder_mm_per_tick", encoder_mm_per_tick,
+      "true belt travel per encoder tick, mm (0: scanner.encoder_mm_per_tick)", Range{0, 100});
+    v("field_of_view_mm", field_of_view_mm,
+      "field the true camera was designed for, mm (0: scanner.field_of_view_mm)", Range{0, 5000});
     v("T_cell_scanner", T_cell_scanner,
       "true scanner frame in the cell frame: rotation_deg [rx, ry, rz], translation_mm");
   }
@@ -58,7 +66,8 @@ struct SimulatedMounting {
 TriangulationGeometry true_triangulation_geometry(const ScannerParameters& nominal,
                                                   const SimulatedMounting& mounting);
 
-// `nominal` with the true belt travel per tick: the parameters the simulated belt runs by.
+// `nominal` with the true belt travel per tick and designed field of view: the parameters the
+// simulated belt and camera run by.
 ScannerParameters true_scanner_parameters(const ScannerParameters& nominal,
                                           const SimulatedMounting& mounting);
 
