@@ -11,6 +11,7 @@
 #include "realtime/sources/hardware_source.hpp"
 #include "realtime/sources/repeating_source.hpp"
 #include "realtime/sources/stream_checked_source.hpp"
+#include "scanner/simulated_mounting.hpp"
 #include "sim/model_base_build/catalog_content_hash.hpp"
 #include "sim/model_base_build/model_base_builder.hpp"
 #include "sim/model_base_build/model_base_parameters.hpp"
@@ -79,11 +80,15 @@ ScannerSource& CellWorld::open_source(const CellSourceChoice& choice) {
       state_->hardware = source.get();
       opened = std::move(source);
     } else {
+      // The belt runs and the camera renders by the true geometry (sim_source.truth); the
+      // hardware source steps and triangulates with what the cell is told.
+      const SimulatedMounting& truth = config.sim_source.truth;
       auto twins = std::make_unique<HardwareTwinSource>(
           hardware,
-          std::make_unique<SimulatedConveyor>(state_->catalog, config.scanner,
+          std::make_unique<SimulatedConveyor>(state_->catalog,
+                                              true_scanner_parameters(config.scanner, truth),
                                               source_settings(choice, config)),
-          SimulatedGpioSettings{}, config.faults);
+          config.scanner, truth, SimulatedGpioSettings{}, config.faults);
       state_->conveyor = &twins->conveyor();
       state_->hardware = &twins->hardware();
       opened = std::move(twins);

@@ -61,6 +61,8 @@ std::string parameters_markdown() {
                     "the V4L2 camera that images the laser line");
   hardware_sections("gpio", hardware.gpio, "the conveyor encoder, the photo eye and the outputs");
   hardware_sections("stripe", hardware.stripe, "the laser stripe's extraction from each frame");
+  hardware_sections("calibration", hardware.calibration,
+                    "the measured camera, laser plane and mount (`cosmos calibrate`)");
 
   text.append(
       "\n## Model base\n\n"

@@ -131,8 +131,8 @@ YAML::Node load_root(const YamlInputErrors& errors) {
   std::set<std::string> seen;
   for (const auto& item : root) {
     const std::string key = item.first.IsScalar() ? item.first.Scalar() : "?";
-    if (key != "camera" && key != "gpio" && key != "stripe") {
-      errors.fail(item.first, key, "unknown section (known: camera, gpio, stripe)");
+    if (key != "camera" && key != "gpio" && key != "stripe" && key != "calibration") {
+      errors.fail(item.first, key, "unknown section (known: camera, gpio, stripe, calibration)");
     }
     if (!seen.insert(key).second) errors.fail(item.first, key, "section given twice");
   }
@@ -156,6 +156,8 @@ HardwareConfig read_hardware_config(const fs::path& yaml_path) {
   read_gpio(errors, gpio, config.gpio);
   YamlSectionReader stripe(errors, root["stripe"], "stripe");
   read_stripe(stripe, config.camera.pixel_format, config.stripe);
+  YamlSectionReader calibration(errors, root["calibration"], "calibration");
+  read_yaml_parameters(calibration, config.calibration);
   if (config.camera_simulated() && !config.gpio_simulated()) {
     gpio.fail("chip",
               "camera.device is simulated, so gpio.chip must be too: the simulated camera's "

@@ -9,6 +9,8 @@
 //   gpio:     GpioConfig's visit() keys; encoder_a is required, encoder_b too in quadrature
 //   stripe:   method (centre_of_gravity|gaussian_three_point), threshold,
 //             min_peak_intensity, window_half_width_px (ranges in the pixel format's levels)
+//   calibration: ScannerCalibration (scanner/scanner_calibration.hpp), what `cosmos calibrate`
+//             measured of the camera, the laser plane and the camera's mount; optional
 // docs/parameters.md lists the camera and gpio keys with their defaults and ranges.
 //
 // A line is a name (`ENC_A`), an offset (`17`) or a map {name: ENC_A | offset: 17,
@@ -30,6 +32,7 @@
 #include "firmware_bridge/camera_config.hpp"
 #include "firmware_bridge/gpio_config.hpp"
 #include "firmware_bridge/laser_stripe_extraction.hpp"
+#include "scanner/scanner_calibration.hpp"
 
 namespace cosmos {
 
@@ -43,6 +46,8 @@ struct HardwareConfig {
   // Grey levels of the camera's pixel format. The 8-bit defaults scale to the format's full
   // scale when not given; the saturation level is always the format's full scale.
   StripeExtractionParameters stripe;
+  // The measured geometry; what it leaves uncalibrated is the scanner: section's design.
+  ScannerCalibration calibration;
   // The watchdog of one wait for a frame: a stalled camera shows as a timeout, not a hang.
   std::int64_t frame_timeout_us = 100'000;
 

@@ -9,6 +9,7 @@
 
 #include "core/parameter_visitor.hpp"
 #include "scanner/scanner_model.hpp"
+#include "scanner/simulated_mounting.hpp"
 
 namespace cosmos {
 
@@ -52,14 +53,18 @@ struct SimulatedConveyorSettings {
   }
 };
 
-// The `sim_source:` section: the conveyor, and how the simulated source scans it.
+// The `sim_source:` section: the conveyor, how the simulated source scans it, and the true
+// geometry the hardware twins render through (scanner/simulated_mounting.hpp; the source's
+// own modes deliver the design's profiles and ignore it).
 struct SimulatedSourceSettings : SimulatedConveyorSettings {
   ScanMode mode = ScanMode::kProfile;
+  SimulatedMounting truth;
 
   template <class Visitor>
   void visit(Visitor& v) {
     SimulatedConveyorSettings::visit(v);
     v("mode", mode, "profile: calibrated profiles; camera: sensor frames and stripe extraction");
+    v("truth", truth, "the simulated cell's true geometry, where it departs from the design");
   }
 };
 

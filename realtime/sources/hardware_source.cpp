@@ -65,9 +65,9 @@ SourceStatus HardwareSource::start() {
   if (check_camera_fits_sensor() != SourceStatus::kOk) return SourceStatus::kError;
   width_ = parameters_.points_per_profile;
   const CameraConfig& camera = config_.camera;
-  profiler_ =
-      std::make_unique<StripeProfiler>(scanner_triangulation_geometry(parameters_), config_.stripe,
-                                       camera.roi_top_px, camera.height_px, camera.width_px);
+  profiler_ = std::make_unique<StripeProfiler>(
+      calibrated_triangulation_geometry(parameters_, config_.calibration), config_.stripe,
+      camera.roi_top_px, camera.height_px, camera.width_px);
 
   // The camera first: it is the device a machine without scanner hardware lacks first.
   if (camera_->start() != CameraStatus::kOk) {

@@ -22,12 +22,29 @@ HardwareTwinSource::HardwareTwinSource(const HardwareConfig& config,
                                        std::unique_ptr<SimulatedConveyor> conveyor,
                                        const SimulatedGpioSettings& gpio_settings,
                                        const FaultInjectionSettings& faults)
+    : HardwareTwinSource(config, std::move(conveyor), nullptr, SimulatedMounting{}, gpio_settings,
+                         faults) {}
+
+HardwareTwinSource::HardwareTwinSource(const HardwareConfig& config,
+                                       std::unique_ptr<SimulatedConveyor> conveyor,
+                                       const ScannerParameters& told,
+                                       const SimulatedMounting& truth,
+                                       const SimulatedGpioSettings& gpio_settings,
+                                       const FaultInjectionSettings& faults)
+    : HardwareTwinSource(config, std::move(conveyor), &told, truth, gpio_settings, faults) {}
+
+HardwareTwinSource::HardwareTwinSource(const HardwareConfig& config,
+                                       std::unique_ptr<SimulatedConveyor> conveyor,
+                                       const ScannerParameters* told,
+                                       const SimulatedMounting& truth,
+                                       const SimulatedGpioSettings& gpio_settings,
+                                       const FaultInjectionSettings& faults)
     : conveyor_(std::move(conveyor)),
       clock_(checked(config, conveyor_).parameters()),
       faults_(faults),
-      camera_(*conveyor_, clock_, config.camera, faults_),
+      camera_(*conveyor_, clock_, config.camera, faults_, truth),
       gpio_(*conveyor_, clock_, config.gpio, gpio_settings, faults_),
-      hardware_(config, conveyor_->parameters(), camera_, gpio_) {}
+      hardware_(config, told ? *told : conveyor_->parameters(), camera_, gpio_) {}
 
 HardwareTwinSource::~HardwareTwinSource() { hardware_.stop(); }
 

@@ -32,6 +32,13 @@ class HardwareTwinSource final : public ScannerSource {
   HardwareTwinSource(const HardwareConfig& config, std::unique_ptr<SimulatedConveyor> conveyor,
                      const SimulatedGpioSettings& gpio_settings = {},
                      const FaultInjectionSettings& faults = {});
+  // A mis-mounted cell (scanner/simulated_mounting.hpp): the conveyor runs by the true
+  // parameters and the camera renders through `truth`, while the hardware source triangulates
+  // and steps the belt with `told`, the parameters the cell was given.
+  HardwareTwinSource(const HardwareConfig& config, std::unique_ptr<SimulatedConveyor> conveyor,
+                     const ScannerParameters& told, const SimulatedMounting& truth,
+                     const SimulatedGpioSettings& gpio_settings = {},
+                     const FaultInjectionSettings& faults = {});
   ~HardwareTwinSource() override;
   HardwareTwinSource(const HardwareTwinSource&) = delete;
   HardwareTwinSource& operator=(const HardwareTwinSource&) = delete;
@@ -56,6 +63,12 @@ class HardwareTwinSource final : public ScannerSource {
   const SimulatedGpioLines& gpio() const { return gpio_; }
 
  private:
+  // Both public constructors: `told` null = the conveyor's own parameters.
+  HardwareTwinSource(const HardwareConfig& config, std::unique_ptr<SimulatedConveyor> conveyor,
+                     const ScannerParameters* told, const SimulatedMounting& truth,
+                     const SimulatedGpioSettings& gpio_settings,
+                     const FaultInjectionSettings& faults);
+
   std::unique_ptr<SimulatedConveyor> conveyor_;
   SimulatedBeltClock clock_;
   FaultPlan faults_;

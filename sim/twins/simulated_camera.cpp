@@ -20,8 +20,9 @@ constexpr std::uint64_t kFrameStream = 0xF4A3E;
 }  // namespace
 
 SimulatedCamera::SimulatedCamera(const SimulatedConveyor& conveyor, SimulatedBeltClock& clock,
-                                 const CameraConfig& config, const FaultPlan& faults)
-    : conveyor_(conveyor), clock_(clock), config_(config), faults_(faults) {}
+                                 const CameraConfig& config, const FaultPlan& faults,
+                                 const SimulatedMounting& truth)
+    : conveyor_(conveyor), clock_(clock), config_(config), faults_(faults), truth_(truth) {}
 
 SimulatedCamera::~SimulatedCamera() = default;
 
@@ -76,6 +77,7 @@ CameraStatus SimulatedCamera::start() noexcept {
       laser_->reserve(line_);
     }
     renderer_ = std::make_unique<CameraFrameRenderer>(drawing, geometry);
+    true_geometry_ = true_triangulation_geometry(drawing, truth_);
     const auto count = static_cast<std::size_t>(std::max(config_.buffer_count, 1));
     buffers_.clear();
     for (std::size_t i = 0; i < count; ++i) buffers_.push_back(renderer_->make_frame());
@@ -169,6 +171,7 @@ CameraStatus SimulatedCamera::next_frame(std::int64_t timeout_us, FrameView& fra
   laser_->trace(laser_y_belt_mm(scanner, next_index_), line_);
   if (faults_.active(InjectedFault::kLaserOff, next_index_))
     std::fill(line_.state.begin(), line_.state.end(), LaserSampleState::kLaserShadow);
+  if (moves_camera(truth_)) project_through_true_camera();
   cv::Mat& buffer = buffers_[index];
   renderer_->render(line_, mix_seed(scanner.seed ^ kFrameStream, static_cast<std::uint64_t>(ticks)),
                     buffer);
@@ -194,6 +197,20 @@ CameraStatus SimulatedCamera::next_frame(std::int64_t timeout_us, FrameView& fra
   ++next_index_;
   ++stats_.frames;
   return CameraStatus::kOk;
+}
+
+void SimulatedCamera::project_through_true_camera() noexcept {
+  for (int i = 0; i < line_.width(); ++i) {
+    const auto s = static_cast<std::size_t>(i);
+    const Eigen::Vector3d point_belt_mm(line_.x_mm(i), 0.0, line_.z_mm[s]);
+    Eigen::Vector2d uv_px;
+    if (!true_geometry_.project_to_image(point_belt_mm, uv_px)) {
+      line_.state[s] = LaserSampleState::kOutOfRange;
+      continue;
+    }
+    line_.u_px[s] = static_cast<float>(uv_px.x());
+    line_.v_px[s] = static_cast<float>(uv_px.y());
+  }
 }
 
 CameraStatus SimulatedCamera::release_frame(const FrameView& frame) noexcept {

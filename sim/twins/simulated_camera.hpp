@@ -32,6 +32,11 @@
 // timeout, the belt moving on, and says kTimeout (counted in stats().timeouts) until the
 // stall's frames have passed; with the laser off a frame shows the belt with no stripe at all.
 // Only the stall blocks (for real time: a camera's wait is wall-clock time).
+// True geometry (scanner/simulated_mounting.hpp): a mounting that moves the camera re-projects
+// each lit belt-frame point through the true camera before drawing, so the frames are what
+// a mis-mounted scanner sees while the cell triangulates with the geometry it is told. Which
+// points are lit and seen stays the designed camera's call: the true one is a fraction of a
+// degree away.
 #include <cstdint>
 #include <memory>
 #include <opencv2/core/mat.hpp>
@@ -40,6 +45,7 @@
 #include "firmware_bridge/camera.hpp"
 #include "firmware_bridge/camera_config.hpp"
 #include "firmware_bridge/error_line.hpp"
+#include "scanner/simulated_mounting.hpp"
 #include "sim/camera_frame_renderer.hpp"
 #include "sim/laser_line_scanner.hpp"
 #include "sim/source/fault_plan.hpp"
@@ -52,7 +58,8 @@ class SimulatedCamera final : public Camera {
  public:
   // The conveyor and the clock must outlive the camera.
   SimulatedCamera(const SimulatedConveyor& conveyor, SimulatedBeltClock& clock,
-                  const CameraConfig& config, const FaultPlan& faults = FaultPlan{});
+                  const CameraConfig& config, const FaultPlan& faults = FaultPlan{},
+                  const SimulatedMounting& truth = {});
   ~SimulatedCamera() override;
   SimulatedCamera(const SimulatedCamera&) = delete;
   SimulatedCamera& operator=(const SimulatedCamera&) = delete;
@@ -85,6 +92,7 @@ class SimulatedCamera final : public Camera {
   CameraStatus check_roi() noexcept;
   // Skips the frames an injected gap or stall loses; kTimeout after waiting out a stall.
   CameraStatus inject_losses(std::int64_t timeout_us) noexcept;
+  void project_through_true_camera() noexcept;
   [[gnu::format(printf, 2, 3)]] CameraStatus fail(const char* format, ...) noexcept;
 
   const SimulatedConveyor& conveyor_;
@@ -92,6 +100,8 @@ class SimulatedCamera final : public Camera {
   CameraConfig config_;
   FaultPlan faults_;
   std::uint64_t frames_lost_ = 0;  // lost since the last frame handed out
+  SimulatedMounting truth_;
+  TriangulationGeometry true_geometry_;
   std::unique_ptr<LaserLineScanner> laser_;
   std::unique_ptr<CameraFrameRenderer> renderer_;
   LaserLine line_;

@@ -158,7 +158,7 @@ TEST_F(HardwareConfigTest, BadKeysTypesAndRangesNameFileLineAndKey) {
                 "encoder_a, encoder_b, encoder_mode, laser_enable, photo_eye, "
                 "photo_eye_debounce_us, photo_eye_min_off_us, photo_eye_min_on_us, result_ready)");
   EXPECT_EQ(error_of(gpio + "lights: on\n"),
-            at(4) + ": lights: unknown section (known: camera, gpio, stripe)");
+            at(4) + ": lights: unknown section (known: camera, gpio, stripe, calibration)");
   EXPECT_EQ(error_of("camera: [1, 2]\n" + gpio), at(1) + ": camera: expected a map, got a list");
   EXPECT_EQ(error_of("camera:\n  gain: 1\n  gain: 2\n" + gpio),
             at(3) + ": camera.gain: key given twice");

@@ -1,0 +1,65 @@
+#pragma once
+// The scanner frame from the belt, and the encoder's millimetres per tick.
+//
+// Frame: the empty belt's stripe, triangulated through the calibrated camera and laser
+// plane, is the belt's line in the laser sheet. The scanner frame is built on it as the
+// design defines it (scanner/scanner_model.hpp): y the laser plane's normal (away from the
+// camera: the direction of travel), x along the belt's line (the sensor's columns' way),
+// z = x × y up from the belt, the origin on the belt's line below where the optical axis meets
+// the sheet. The sheet is taken as square to the belt: its tilt along the travel is not
+// observable from a line of the belt.
+//
+// Encoder: the ramp block (calibration_targets.hpp) carried through the sheet; its top's
+// height in each frame (the median of the points above the belt) rises by
+// rise_per_mm · mm_per_tick per tick, so a straight-line fit of height against encoder count
+// over the ramp's middle gives mm_per_tick.
+//
+// Reported against the belt: the camera's roll about the travel direction, its height above
+// the belt, and the residual belt plane in the new frame (written to conditioning:).
+#include <string>
+#include <vector>
+
+#include "calibration/calibration_targets.hpp"
+#include "calibration/stripe_frame.hpp"
+#include "firmware_bridge/laser_stripe_extraction.hpp"
+#include "scanner/conditioning_parameters.hpp"
+#include "scanner/scanner_calibration.hpp"
+
+namespace cosmos {
+
+struct BeltCalibrationResult {
+  bool ok = false;
+  std::string reason;
+  CalibratedMount mount;
+  double encoder_mm_per_tick = 0.0;
+  double roll_deg = 0.0;          // the camera's x axis against the belt's line
+  double camera_height_mm = 0.0;  // camera centre above the belt
+  double belt_height_mm = 0.0;    // residual belt plane z = height + slope_x x, new frame
+  double belt_slope_x = 0.0;
+  double belt_rms_mm = 0.0;                          // belt points about that plane
+  double ramp_rms_mm = 0.0;                          // ramp heights about their line
+  std::vector<Eigen::Vector3d> belt_points_scanner;  // for the report
+  std::vector<Eigen::Vector2d> ramp_ticks_height;    // (ticks, height) of each used frame
+};
+
+// `camera` and `laser` calibrated; `nominal` supplies the designed camera where uncalibrated.
+BeltCalibrationResult calibrate_belt(const std::vector<StripeFrame>& empty_belt,
+                                     const std::vector<StripeFrame>& ramp, const RampBlock& block,
+                                     const ScannerParameters& nominal,
+                                     const ScannerCalibration& calibration,
+                                     const StripeExtractionParameters& extraction);
+
+// The profile grid a cell with this encoder needs: the belt's travel per profile is the grid's
+// pitch along the belt (cosmos cell requires it) and a model base's views have one pitch both
+// ways, so the profile's samples are respaced to it (field_of_view_mm = points_per_profile ·
+// pitch; with the camera calibrated the field no longer shapes the lens) and the grid is laid
+// on the samples from the first to the last, as config/cell.yaml's default grid is.
+struct ProfileSampling {
+  double field_of_view_mm = 0.0;
+  ConditioningParameters conditioning;
+};
+ProfileSampling profile_sampling_for(const ScannerParameters& scanner,
+                                     const ConditioningParameters& conditioning,
+                                     double encoder_mm_per_tick);
+
+}  // namespace cosmos
