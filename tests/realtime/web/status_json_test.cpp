@@ -48,8 +48,10 @@ TEST(StatusJson, CarriesEveryFieldWithItsValue) {
   EXPECT_EQ(json.at("parts_rejected"), 10);
   EXPECT_EQ(json.at("recognition_queue_depth"), 11);
   EXPECT_EQ(json.at("publish_queue_depth"), 12);
-  EXPECT_EQ(json.at("camera_timeouts"), 105);
-  EXPECT_EQ(json.at("runs_dropped"), 115);
+  const CellStatus sent = distinct_status();
+  CellStatus::visit_totals(sent, [&json](const char* name, std::int64_t total, const char*) {
+    EXPECT_EQ(json.at(name), total) << name;
+  });
   std::size_t totals = 0;
   const CellStatus empty;
   CellStatus::visit_totals(empty, [&totals](const char*, std::int64_t, const char*) { ++totals; });
