@@ -92,9 +92,9 @@ timeout --kill-after=10 "$timeout_s" qemu-system-x86_64 -accel tcg -cpu "$cpu" -
   -display none -monitor none -serial stdio -no-reboot -nic none \
   -kernel "$kernel_dir/vmlinuz" -initrd "$work/initramfs.cpio" \
   -append "console=ttyS0 quiet panic=-1 hil_steps=$steps hil_parts=$parts" < /dev/null 2>&1 |
-  tr -d '\r' | tee "$console" | grep -a --line-buffered -E '^(hil|cell): ' |
+  stdbuf -oL tr -d '\r' | tee "$console" | grep -a --line-buffered -E '^(hil|cell): ' |
   while IFS= read -r line; do
-    # The boot ends where /init first speaks.
+    # The boot ends where /init first speaks (tr line-buffered, so that the line arrives then).
     [[ $line == "hil: guest up"* && ! -f $up_stamp ]] && date +%s > "$up_stamp"
     printf '%s\n' "$line"
   done
