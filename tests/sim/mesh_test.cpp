@@ -186,5 +186,72 @@ TEST_F(MeshFiles, GarbageIsAnAssimpFailureOnOneLine) {
   expect_one_line_naming(load_error(path), path, "assimp cannot read it");
 }
 
+// A binary little-endian PLY of the tetrahedron above (float x, y, z; uchar count, int
+// indices), optionally with one face index changed and the vertex count claimed.
+std::string binary_tetra_ply(int bad_index = -1, const std::string& vertex_count = "4") {
+  std::string out = "ply\nformat binary_little_endian 1.0\nelement vertex " + vertex_count +
+                    "\nproperty float x\nproperty float y\nproperty float z\n"
+                    "element face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  const float vertices[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 2, 0}, {0, 0, 4}};
+  for (const auto& vertex : vertices) out.append(reinterpret_cast<const char*>(vertex), 12);
+  const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  for (int f = 0; f < 4; ++f) {
+    out.push_back(3);
+    for (int k = 0; k < 3; ++k) {
+      const int index = f == 2 && k == 1 && bad_index >= 0 ? bad_index : faces[f][k];
+      out.append(reinterpret_cast<const char*>(&index), 4);
+    }
+  }
+  return out;
+}
+
+TEST_F(MeshFiles, BinaryPlyTetrahedronIsRead) {
+  const TriangleMesh mesh = read_mesh_file(write("tetra.ply", binary_tetra_ply()));
+  EXPECT_EQ(mesh.vertices.size(), 4u);
+  EXPECT_EQ(mesh.triangles.size(), 4u);
+}
+
+// A 200-byte PLY header announcing 2e9 vertices made assimp reserve for them (16 GB and
+// growing): the claim is weighed against the file's size before assimp reads it.
+TEST_F(MeshFiles, PlyHeaderClaimingMoreVerticesThanTheFileHoldsIsRefusedAtOnce) {
+  const fs::path binary = write("huge.ply", binary_tetra_ply(-1, "2000000000"));
+  expect_one_line_naming(load_error(binary), binary,
+                         "header claims 2000000000 vertex elements, more than its");
+  const fs::path ascii =
+      write("huge_ascii.ply",
+            "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+            "property float z\nelement face 900000000\nproperty list uchar int vertex_indices\n"
+            "end_header\n0 0 0\n1 0 0\n0 2 0\n0 0 4\n3 0 2 1\n");
+  expect_one_line_naming(load_error(ascii), ascii, "header claims 900000000 face elements");
+}
+
+TEST_F(MeshFiles, OffHeaderClaimingMoreElementsThanTheFileHoldsIsRefused) {
+  const fs::path vertices =
+      write("huge.off", "OFF\n1000000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  expect_one_line_naming(load_error(vertices), vertices, "header claims 1000000000 vertices");
+  const fs::path faces = write("faces.off", "OFF\n3 2000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  expect_one_line_naming(load_error(faces), faces, "header claims 2000000000 faces");
+}
+
+// Faces indexing vertices the file does not have were accepted silently: assimp's OFF reader
+// clamps the index to the last vertex.
+TEST_F(MeshFiles, FaceIndexingAMissingVertexIsRefusedInEachIndexedFormat) {
+  const fs::path off =
+      write("bad.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 9 3\n");
+  expect_one_line_naming(load_error(off), off, "face 1 indexes vertex 9, the file has 4 vertices");
+  const fs::path negative = write("negative.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n");
+  expect_one_line_naming(load_error(negative), negative, "face 0 indexes vertex -1");
+  std::string ascii = kTetraPly;
+  ascii.replace(ascii.rfind("3 1 2 3"), 7, "3 1 7 3");
+  const fs::path ascii_ply = write("bad_ascii.ply", ascii);
+  expect_one_line_naming(load_error(ascii_ply), ascii_ply,
+                         "face 2 indexes vertex 7, the file has 4 vertices");
+  const fs::path binary_ply = write("bad_binary.ply", binary_tetra_ply(1000));
+  expect_one_line_naming(load_error(binary_ply), binary_ply,
+                         "face 2 indexes vertex 1000, the file has 4 vertices");
+  const fs::path obj = write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 8\n");
+  expect_one_line_naming(load_error(obj), obj, "");
+}
+
 }  // namespace
 }  // namespace cosmos
