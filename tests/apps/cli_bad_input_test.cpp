@@ -187,8 +187,8 @@ TEST_F(CliBadInput, SynthOptionsReachTheSurface) {
 // --smoothing-iterations ran for minutes.
 TEST_F(CliBadInput, InspectOptionsAreHeldToTheParametersRanges) {
   write_valid_range(file("ok.tiff"));
-  const std::string base = "inspect '" + file("ok.tiff").string() + "' --out '" +
-                           file("out").string() + "' ";
+  const std::string base =
+      "inspect '" + file("ok.tiff").string() + "' --out '" + file("out").string() + "' ";
   expect_one_line_failure(base + "--smoothing-iterations 100000000",
                           "--smoothing-iterations: cosmos.smoothing.iterations must be in [0, "
                           "1000], got 100000000");
@@ -207,6 +207,24 @@ TEST_F(CliBadInput, EvalOptionsAreRangeChecked) {
   expect_one_line_failure(base + "--threads 1000000000", "--threads: must be in [1, 1024]");
   expect_one_line_failure(base + "--tests 0", "--tests: must be in [1, 1000000], got 0");
   expect_one_line_failure(base + "--noise-mm 1e6", "--noise-mm: scanner.z_noise_mm must be in");
+}
+
+// A damaged image whose decoder throws inside OpenCV: imread printed its own line on stderr
+// before the reader's.
+TEST_F(CliBadInput, DamagedImagesGiveOnlyTheReadersLine) {
+  write_valid_range(file("cut.tiff"));
+  const std::string tiff = read_text(file("cut.tiff"));
+  testing::write_text_file(file("cut.tiff"), tiff.substr(0, tiff.size() / 2));
+  expect_inspect_rejects(file("cut.tiff"), "cut.tiff");
+  testing::write_text_file(file("header.tiff"), tiff.substr(0, 12));
+  fs::copy_file(file("cut.yaml"), file("header.yaml"));
+  expect_inspect_rejects(file("header.tiff"), "header.tiff");
+  testing::write_text_file(file("huge.pfm"), "Pf\n100000 100000\n-1.0\n0000");
+  fs::copy_file(file("cut.yaml"), file("huge.yaml"));
+  expect_inspect_rejects(file("huge.pfm"), "huge.pfm");
+  testing::write_text_file(file("short.pfm"), "Pf\n8 6\n-1.0\n0000");
+  fs::copy_file(file("cut.yaml"), file("short.yaml"));
+  expect_inspect_rejects(file("short.pfm"), "short.pfm");
 }
 
 TEST_F(CliBadInput, CellRejectsAPartCountOutOfRange) {
