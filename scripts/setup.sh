@@ -11,6 +11,7 @@ packages=(
   libgpiod-dev
   liblcm-dev liblcm-bin libglib2.0-dev iproute2
   libflatbuffers-dev flatbuffers-compiler
+  clang libclang-rt-14-dev  # the libFuzzer harnesses (scripts/fuzz.sh)
 )
 
 missing=()
