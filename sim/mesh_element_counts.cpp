@@ -162,8 +162,16 @@ class BinaryReader {
 };
 
 void check_ply(const fs::path& path, const std::string& bytes) {
-  const std::size_t header_end = bytes.find("end_header");
-  if (bytes.rfind("ply", 0) != 0 || header_end == std::string::npos) return;  // assimp refuses
+  if (bytes.rfind("ply", 0) != 0) return;  // assimp refuses it
+  // The header ends at a line of its own (a line "element face 4end_header" is no end).
+  std::size_t header_end = bytes.find("\nend_header");
+  while (header_end != std::string::npos) {
+    const std::size_t after = header_end + 11;
+    if (after == bytes.size() || bytes[after] == '\n' || bytes[after] == '\r') break;
+    header_end = bytes.find("\nend_header", after);
+  }
+  if (header_end == std::string::npos) fail(path, "PLY header has no end_header line");
+  ++header_end;
   const std::size_t body = std::min(bytes.find('\n', header_end) + 1, bytes.size());
   std::istringstream header(bytes.substr(0, header_end));
   std::string line, format;
@@ -205,6 +213,19 @@ void check_ply(const fs::path& path, const std::string& bytes) {
       }
       elements.back().properties.push_back(property);
     }
+  }
+  // What the reader takes from the file, declared as it expects: assimp reads a face element
+  // without its index list, or vertices without x, y, z, past its buffers.
+  for (const PlyElement& element : elements) {
+    const auto has = [&](const char* name, bool list) {
+      return std::any_of(
+          element.properties.begin(), element.properties.end(),
+          [&](const PlyProperty& p) { return p.name == name && (p.count_bytes > 0) == list; });
+    };
+    if (element.name == "vertex" && !(has("x", false) && has("y", false) && has("z", false)))
+      fail(path, "PLY vertex element without properties x, y, z");
+    if (element.name == "face" && !has("vertex_indices", true) && !has("vertex_index", true))
+      fail(path, "PLY face element without a vertex_indices list");
   }
   const bool ascii = format == "ascii";
   if (!ascii && format != "binary_little_endian" && format != "binary_big_endian") return;

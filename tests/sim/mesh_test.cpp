@@ -253,5 +253,26 @@ TEST_F(MeshFiles, FaceIndexingAMissingVertexIsRefusedInEachIndexedFormat) {
   expect_one_line_naming(load_error(obj), obj, "");
 }
 
+// Found by fuzz_mesh_ply: a face element declared without its index list ("element face
+// 4end_header", the list's line erased) made assimp read past its buffers.
+TEST_F(MeshFiles, PlyElementsWithoutWhatTheReaderNeedsAreRefused) {
+  std::string no_list = binary_tetra_ply();
+  no_list.replace(no_list.find("\nproperty list"),
+                  std::string("\nproperty list uchar int vertex_indices").size(), "");
+  const fs::path faces = write("no_list.ply", no_list);
+  expect_one_line_naming(load_error(faces), faces,
+                         "PLY face element without a vertex_indices list");
+  std::string glued = binary_tetra_ply();
+  const std::string list_and_end = "4\nproperty list uchar int vertex_indices\nend_header";
+  glued.replace(glued.find(list_and_end), list_and_end.size(), "4end_header");
+  const fs::path end = write("glued.ply", glued);
+  expect_one_line_naming(load_error(end), end, "PLY header has no end_header line");
+  std::string no_z = kTetraPly;
+  no_z.replace(no_z.find("property float z\n"), 17, "property float w\n");
+  const fs::path vertices = write("no_z.ply", no_z);
+  expect_one_line_naming(load_error(vertices), vertices,
+                         "PLY vertex element without properties x, y, z");
+}
+
 }  // namespace
 }  // namespace cosmos
