@@ -191,7 +191,8 @@ void check_ply(const fs::path& path, const std::string& bytes) {
         fail(path, "element " + element.name + " has count '" + count + "'");
       element.count = *value;
       elements.push_back(element);
-    } else if (keyword == "property" && !elements.empty()) {
+    } else if (keyword == "property") {
+      if (elements.empty()) fail(path, "PLY property before any element");
       PlyProperty property;
       std::string type;
       words >> type;
@@ -212,6 +213,10 @@ void check_ply(const fs::path& path, const std::string& bytes) {
         if (property.bytes == 0) fail(path, "property " + type + " has an unknown type");
       }
       elements.back().properties.push_back(property);
+    } else if (!keyword.empty() && keyword != "ply" && keyword != "comment" &&
+               keyword != "obj_info") {
+      // assimp skips what it does not know and can then loop on the body forever.
+      fail(path, "PLY header line '" + line + "' is not a PLY header keyword");
     }
   }
   // What the reader takes from the file, declared as it expects: assimp reads a face element
@@ -302,13 +307,16 @@ void check_off(const fs::path& path, const std::string& bytes) {
   std::istringstream words(*first);
   std::string keyword;
   words >> keyword;
-  if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0) return;
   std::string counts_line;
-  std::getline(words, counts_line);
-  if (counts_line.find_first_not_of(" \t\r") == std::string::npos) {
-    const auto next = data_line(text);
-    if (!next) return;
-    counts_line = *next;
+  if (keyword.size() >= 3 && keyword.compare(keyword.size() - 3, 3, "OFF") == 0) {
+    std::getline(words, counts_line);
+    if (counts_line.find_first_not_of(" \t\r") == std::string::npos) {
+      const auto next = data_line(text);
+      if (!next) return;
+      counts_line = *next;
+    }
+  } else {
+    counts_line = *first;  // assimp reads a file without the OFF keyword from its counts
   }
   std::istringstream counts(counts_line);
   std::string vertex_token, face_token;

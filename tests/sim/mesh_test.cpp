@@ -274,5 +274,19 @@ TEST_F(MeshFiles, PlyElementsWithoutWhatTheReaderNeedsAreRefused) {
                          "PLY vertex element without properties x, y, z");
 }
 
+// Found by fuzz_mesh_off and fuzz_mesh_ply: assimp reads an OFF file without its keyword from
+// the counts on its first line (2e18 vertices: out of memory), and skips an unknown PLY
+// header line, then loops on the body.
+TEST_F(MeshFiles, HeaderlessOffCountsAndUnknownPlyHeaderLinesAreRefused) {
+  const fs::path off = write("headerless.off", "2222222222222222222 2 0\n0 0 0\n1 0 0\n");
+  expect_one_line_naming(load_error(off), off, "header claims 2222222222222222222 vertices");
+  const fs::path ply =
+      write("typo.ply",
+            "ply\nformat ascii 1.0\nelemlement face 4\nproperty list uchar int vertex_indices\n"
+            "end_header\n3 0 1 2\n");
+  expect_one_line_naming(load_error(ply), ply,
+                         "PLY header line 'elemlement face 4' is not a PLY header keyword");
+}
+
 }  // namespace
 }  // namespace cosmos
