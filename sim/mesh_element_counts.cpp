@@ -162,7 +162,9 @@ class BinaryReader {
 };
 
 void check_ply(const fs::path& path, const std::string& bytes) {
-  if (bytes.rfind("ply", 0) != 0) return;  // assimp refuses it
+  // assimp takes other spellings ("plY") and then loops on the body.
+  if (bytes.rfind("ply\n", 0) != 0 && bytes.rfind("ply\r\n", 0) != 0)
+    fail(path, "not a PLY file (its first line is not 'ply')");
   // The header ends at a line of its own (a line "element face 4end_header" is no end).
   std::size_t header_end = bytes.find("\nend_header");
   while (header_end != std::string::npos) {
@@ -331,18 +333,34 @@ void check_off(const fs::path& path, const std::string& bytes) {
   if (static_cast<double>(*vertices) * 6 + static_cast<double>(*faces) * 2 >
       static_cast<double>(body_bytes))
     fail(path, too_many("faces", *faces, body_bytes));
-  for (long long v = 0; v < *vertices; ++v)
-    if (!data_line(text)) return;  // assimp refuses a file that ends early
+  // Every line as the format has it: assimp parses garbage in a line as it can (and crashed
+  // on a face line of non-digits).
+  for (long long v = 0; v < *vertices; ++v) {
+    const auto line = data_line(text);
+    if (!line) fail(path, "ends inside vertex " + std::to_string(v));
+    std::istringstream vertex(*line);
+    std::string x, y, z;
+    vertex >> x >> y >> z;
+    if (!number(x) || !number(y) || !number(z))
+      fail(path, "vertex " + std::to_string(v) + " is not three numbers: '" + *line + "'");
+  }
   for (long long f = 0; f < *faces; ++f) {
     const auto line = data_line(text);
-    if (!line) return;
+    if (!line) fail(path, "ends inside face " + std::to_string(f));
     std::istringstream face(*line);
-    long long corners = 0;
-    if (!(face >> corners)) continue;
-    for (long long k = 0; k < corners; ++k) {
-      long long index = 0;
-      if (!(face >> index)) break;
-      if (index < 0 || index >= *vertices) fail(path, missing_vertex(f, index, *vertices));
+    std::string token;
+    face >> token;
+    const auto corners = integer(token);
+    if (!corners || *corners < 0 || *corners > static_cast<long long>(body_bytes))
+      fail(path,
+           "face " + std::to_string(f) + " does not start with its vertex count: '" + *line + "'");
+    for (long long k = 0; k < *corners; ++k) {
+      face >> token;
+      const auto index = face ? integer(token) : std::nullopt;
+      if (!index)
+        fail(path, "face " + std::to_string(f) + " has fewer than " + std::to_string(*corners) +
+                       " vertex indices");
+      if (*index < 0 || *index >= *vertices) fail(path, missing_vertex(f, *index, *vertices));
     }
   }
 }

@@ -89,8 +89,8 @@ TEST_F(SimCli, BadMeshesNameTheFileAndTheReason) {
   expect_one_line_failure(scan_mesh("nan.off"), "nan.off: vertex");
   write("part.xyz", kBoxOff);
   expect_one_line_failure(scan_mesh("part.xyz"), "part.xyz: unknown mesh extension");
-  expect_one_line_failure(scan_mesh("box.off", "0"), "box.off: size_mm must be finite and > 0");
-  expect_one_line_failure(scan_mesh("box.off", "abc"), "--size-mm 'abc'");
+  expect_one_line_failure(scan_mesh("box.off", "0"), "--size-mm: must be in (0, 5000], got 0");
+  expect_one_line_failure(scan_mesh("box.off", "abc"), "--size-mm: 'abc' is not a number");
   EXPECT_FALSE(fs::exists(file("out.tiff")));
 }
 

@@ -181,9 +181,11 @@ TEST_F(MeshFiles, NonPositiveTargetSizeIsRefused) {
   expect_one_line_naming(load_error(path, -5.0), path, "size_mm must be finite and > 0");
 }
 
-TEST_F(MeshFiles, GarbageIsAnAssimpFailureOnOneLine) {
+TEST_F(MeshFiles, GarbageIsRefusedOnOneLine) {
   const fs::path path = write("garbage.ply", "this is not\na ply file\n");
-  expect_one_line_naming(load_error(path), path, "assimp cannot read it");
+  expect_one_line_naming(load_error(path), path, "not a PLY file");
+  const fs::path stl = write("garbage.stl", "this is not\nan stl file\n");
+  expect_one_line_naming(load_error(stl), stl, "assimp cannot read it");
 }
 
 // A binary little-endian PLY of the tetrahedron above (float x, y, z; uchar count, int
@@ -286,6 +288,15 @@ TEST_F(MeshFiles, HeaderlessOffCountsAndUnknownPlyHeaderLinesAreRefused) {
             "end_header\n3 0 1 2\n");
   expect_one_line_naming(load_error(ply), ply,
                          "PLY header line 'elemlement face 4' is not a PLY header keyword");
+  const fs::path spelled = write("spelled.ply", "plY\nformat ascii 1.0\nend_header\n");
+  expect_one_line_naming(load_error(spelled), spelled, "its first line is not 'ply'");
+  const fs::path garbage =
+      write("garbage_face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n\xcd\xda 7 4\n");
+  expect_one_line_naming(load_error(garbage), garbage,
+                         "face 0 does not start with its vertex count");
+  const fs::path short_face = write("short_face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n");
+  expect_one_line_naming(load_error(short_face), short_face,
+                         "face 0 has fewer than 3 vertex indices");
 }
 
 }  // namespace
