@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -78,6 +79,13 @@ std::optional<double> number(const std::string& token) {
   } catch (const std::exception&) {
   }
   return std::nullopt;
+}
+
+// A value read from the file, which may be any double.
+std::string number_text(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
 }
 
 std::string too_many(const std::string& what, long long count, std::size_t body_bytes) {
@@ -273,16 +281,18 @@ void check_ply(const fs::path& path, const std::string& bytes) {
         }
         const auto length = read(property.count_bytes, property.count_signed, true);
         if (!length) truncated();
-        if (*length < 0 || *length > static_cast<double>(body_bytes))
+        if (!(*length >= 0 && *length <= static_cast<double>(body_bytes)) ||
+            *length != std::floor(*length))
           fail(path, element.name + " " + std::to_string(e) + " has a list of " +
-                         std::to_string(static_cast<long long>(*length)) + " values");
+                         number_text(*length) + " values");
         const bool indices =
             faces && (property.name == "vertex_indices" || property.name == "vertex_index");
         for (long long k = 0; k < static_cast<long long>(*length); ++k) {
           const auto index = read(property.bytes, property.item_signed, property.integer_type);
           if (!index) truncated();
           if (indices && !(*index >= 0 && *index < static_cast<double>(vertices)))
-            fail(path, missing_vertex(e, static_cast<long long>(*index), vertices));
+            fail(path, "face " + std::to_string(e) + " indexes vertex " + number_text(*index) +
+                           ", the file has " + std::to_string(vertices) + " vertices");
         }
       }
     }
@@ -351,9 +361,10 @@ void check_off(const fs::path& path, const std::string& bytes) {
     std::string token;
     face >> token;
     const auto corners = integer(token);
-    if (!corners || *corners < 0 || *corners > static_cast<long long>(body_bytes))
-      fail(path,
-           "face " + std::to_string(f) + " does not start with its vertex count: '" + *line + "'");
+    // A face has 3 corners at least (assimp crashed on one of none).
+    if (!corners || *corners < 3 || *corners > static_cast<long long>(body_bytes))
+      fail(path, "face " + std::to_string(f) +
+                     " does not start with a vertex count of 3 or more: '" + *line + "'");
     for (long long k = 0; k < *corners; ++k) {
       face >> token;
       const auto index = face ? integer(token) : std::nullopt;

@@ -293,7 +293,7 @@ TEST_F(MeshFiles, HeaderlessOffCountsAndUnknownPlyHeaderLinesAreRefused) {
   const fs::path garbage =
       write("garbage_face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n\xcd\xda 7 4\n");
   expect_one_line_naming(load_error(garbage), garbage,
-                         "face 0 does not start with its vertex count");
+                         "face 0 does not start with a vertex count of 3 or more");
   const fs::path short_face = write("short_face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n");
   expect_one_line_naming(load_error(short_face), short_face,
                          "face 0 has fewer than 3 vertex indices");
