@@ -243,7 +243,10 @@ void check_ply(const fs::path& path, const std::string& bytes) {
       fail(path, "PLY face element without a vertex_indices list");
   }
   const bool ascii = format == "ascii";
-  if (!ascii && format != "binary_little_endian" && format != "binary_big_endian") return;
+  // assimp reads a format it does not know by its first letters, trusting the counts.
+  if (!ascii && format != "binary_little_endian" && format != "binary_big_endian")
+    fail(path,
+         "PLY format '" + format + "' is none of ascii, binary_little_endian, binary_big_endian");
   // The fewest bytes an element can take: its scalars and list counts (empty lists), or in
   // text one digit and one separator per value.
   const std::size_t body_bytes = bytes.size() - body;

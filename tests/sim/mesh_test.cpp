@@ -288,6 +288,11 @@ TEST_F(MeshFiles, HeaderlessOffCountsAndUnknownPlyHeaderLinesAreRefused) {
             "end_header\n3 0 1 2\n");
   expect_one_line_naming(load_error(ply), ply,
                          "PLY header line 'elemlement face 4' is not a PLY header keyword");
+  std::string format = binary_tetra_ply(-1, "333333333333333334");
+  format.replace(format.find("binary_little_endian"), 20, "binary_littleary_little_endian");
+  const fs::path formats = write("format.ply", format);
+  expect_one_line_naming(load_error(formats), formats,
+                         "PLY format 'binary_littleary_little_endian' is none of");
   const fs::path spelled = write("spelled.ply", "plY\nformat ascii 1.0\nend_header\n");
   expect_one_line_naming(load_error(spelled), spelled, "its first line is not 'ply'");
   const fs::path garbage =
