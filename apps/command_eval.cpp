@@ -15,6 +15,7 @@
 
 #include "apps/command_registry.hpp"
 #include "apps/model_base_progress.hpp"
+#include "apps/option_range.hpp"
 #include "core/input_error.hpp"
 #include "core/io/model_base_file.hpp"
 #include "core/io/recorded_parameters.hpp"
@@ -27,6 +28,11 @@ namespace cosmos::cli {
 namespace {
 
 namespace fs = std::filesystem;
+
+// A million scans is days of evaluation; a thread per core of the largest machine is plenty
+// (each std::thread reserves its stack: a billion of them end in std::system_error).
+constexpr double kMaxTests = 1e6;
+constexpr double kMaxThreads = 1024;
 
 struct EvalOptions {
   std::string model_base;
@@ -147,11 +153,15 @@ void install(CLI::App& root) {
       ->add_option("--config", options->config,
                    "cell config whose scanner: section overrides the defaults")
       ->type_name("FILE");
-  command->add_option("--tests", options->tests, "scans of known parts")->capture_default_str();
+  command->add_option("--tests", options->tests, "scans of known parts")
+      ->check(within_range<int>(Range{1, kMaxTests}))
+      ->capture_default_str();
   command->add_option("--seed", options->seed, "seed of the test plan, poses and noise")
       ->capture_default_str();
   command->add_option("--noise-mm", options->noise_mm, "z noise sigma (default: the scanner's)")
-      ->type_name("MM");
+      ->type_name("MM")
+      ->check(declared_range<ScannerParameters, double>(
+          "scanner", [](ScannerParameters& p, double mm) { p.z_noise_mm = mm; }));
   command
       ->add_option("--unknown", options->unknown, "catalog parts not in the base, to be rejected")
       ->delimiter(',')
@@ -161,6 +171,7 @@ void install(CLI::App& root) {
       ->delimiter(',')
       ->type_name("TEST,...");
   command->add_option("--threads", options->threads, "worker threads (timings are per thread)")
+      ->check(within_range<int>(Range{1, kMaxThreads}))
       ->capture_default_str();
   command->add_option("--out", options->out, "output directory")->type_name("DIR");
   command->callback([options] { run(*options); });

@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "apps/command_registry.hpp"
+#include "apps/option_range.hpp"
 #include "core/input_error.hpp"
 #include "core/io/cosmos_json.hpp"
 #include "core/io/range_image_file.hpp"
@@ -23,11 +24,6 @@ struct InspectOptions {
   CosmosParameters cosmos;  // the defaults, with the options' overrides
 };
 
-void require_non_negative(const char* option, int value) {
-  if (value < 0)
-    throw InputError(std::string(option) + ": must be >= 0, got " + std::to_string(value));
-}
-
 std::size_t fitted_pixels(const ViewAnalysis& analysis) {
   std::size_t count = 0;
   for (SurfaceLabel label : analysis.field.label.values())
@@ -36,8 +32,6 @@ std::size_t fitted_pixels(const ViewAnalysis& analysis) {
 }
 
 void run_inspect(const InspectOptions& options) {
-  require_non_negative("--smoothing-iterations", options.cosmos.smoothing.iterations);
-  require_non_negative("--max-patches", options.cosmos.segmentation.max_patches);
   const auto start = std::chrono::steady_clock::now();
 
   const RangeImage image = read_range_image(options.range_path);
@@ -83,13 +77,17 @@ void install_inspect(CLI::App& root) {
       ->required();
   command
       ->add_option("--smoothing-iterations", options->cosmos.smoothing.iterations,
-                   "curvature-consistency iterations (>= 0)")
+                   "curvature-consistency iterations (cosmos.smoothing.iterations)")
       ->type_name("N")
+      ->check(declared_range<CosmosParameters, int>(
+          "cosmos", [](CosmosParameters& p, int n) { p.smoothing.iterations = n; }))
       ->capture_default_str();
   command
       ->add_option("--max-patches", options->cosmos.segmentation.max_patches,
-                   "adaptive CSMP budget, §5.4.3 (>= 0; 0 = fixed shape-diameter limit)")
+                   "adaptive CSMP budget, §5.4.3 (0 = fixed shape-diameter limit)")
       ->type_name("N")
+      ->check(declared_range<CosmosParameters, int>(
+          "cosmos", [](CosmosParameters& p, int n) { p.segmentation.max_patches = n; }))
       ->capture_default_str();
   command->callback([options] { run_inspect(*options); });
 }

@@ -17,6 +17,7 @@
 #include "apps/model_base_progress.hpp"
 #include "core/input_error.hpp"
 #include "core/io/model_base_file.hpp"
+#include "core/parameter_range_check.hpp"
 #include "realtime/config/cell_config.hpp"
 #include "sim/model_base_build/model_base_builder.hpp"
 #include "sim/part_catalog.hpp"
@@ -62,8 +63,9 @@ ModelBaseBuildSettings build_settings(const BuildOptions& options) {
     fail("build", "--views '" + options.views + "': expected an integer in [1, 320]");
   if (!options.threads.empty()) {
     settings.threads = parse_number<int>("--threads", options.threads, "a positive integer");
-    if (settings.threads < 1)
-      fail("build", "--threads '" + options.threads + "': expected a positive integer");
+    // Each std::thread reserves its stack: a billion of them end in std::system_error.
+    if (settings.threads < 1 || settings.threads > 1024)
+      fail("build", "--threads '" + options.threads + "': expected an integer in [1, 1024]");
   }
   if (!options.cluster_level.empty() && !options.clusters.empty())
     fail("build", "give either --cluster-level or --clusters, not both");
@@ -79,6 +81,9 @@ ModelBaseBuildSettings build_settings(const BuildOptions& options) {
     if (settings.grouping.cluster_count < 1)
       fail("build", "--clusters '" + options.clusters + "': expected a positive integer");
   }
+  // The options override the grouping parameters: held to their declared ranges.
+  if (const auto problem = first_out_of_range(settings.grouping, "grouping"))
+    fail("build", (options.clusters.empty() ? "--cluster-level: " : "--clusters: ") + *problem);
   return settings;
 }
 

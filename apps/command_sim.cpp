@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "apps/command_registry.hpp"
+#include "apps/option_range.hpp"
 #include "apps/sim_frame_dump.hpp"
 #include "core/input_error.hpp"
 #include "core/io/range_image_file.hpp"
@@ -265,8 +266,11 @@ void install(CLI::App& root) {
   scan->add_option("--mesh", scan_options->mesh,
                    "mesh file (.off, .ply, .stl, .obj) instead of --part")
       ->type_name("PATH");
+  // No part larger than the highest camera mount (scanner.camera_height_mm's bound) passes
+  // beneath the scanner; 1e9 mm asked the scan for an unbounded range image.
   scan->add_option("--size-mm", scan_options->size_mm, "largest extent of the --mesh part")
-      ->type_name("MM");
+      ->type_name("MM")
+      ->check(within_range<double>(Range::above(0, 5000)));
   scan->add_option("--rotation-deg", scan_options->rotation_deg,
                    "rotation Rz·Ry·Rx of the part (degrees)")
       ->expected(1, 3)
@@ -277,7 +281,9 @@ void install(CLI::App& root) {
                  "a stable resting pose on the convex hull, from the seed");
   scan->add_option("--noise-mm", scan_options->noise_mm,
                    "z noise sigma of profile mode (default: config)")
-      ->type_name("MM");
+      ->type_name("MM")
+      ->check(declared_range<ScannerParameters, double>(
+          "scanner", [](ScannerParameters& p, double mm) { p.z_noise_mm = mm; }));
   scan->add_option("--mode", scan_options->mode, "profile (geometry) or camera (rendered frames)")
       ->capture_default_str();
   scan->add_option("--frames", scan_options->frames,

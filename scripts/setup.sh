@@ -21,6 +21,7 @@ packages=(
   # The client kit: the Java message classes (cosmos_lcm_types.jar) are compiled against LCM's
   # Java runtime.
   default-jdk-headless liblcm-java
+  clang libclang-rt-14-dev  # the libFuzzer harnesses (scripts/fuzz.sh)
 )
 for argument in "$@"; do
   case $argument in

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "core/input_error.hpp"
+#include "sim/mesh_element_counts.hpp"
 
 namespace cosmos {
 namespace {
@@ -124,6 +125,7 @@ Eigen::AlignedBox3f bounding_box(const TriangleMesh& mesh) {
 
 TriangleMesh read_mesh_file(const std::filesystem::path& path) {
   check_file(path);
+  check_mesh_element_counts(path);
   Assimp::Importer importer;
   // Points and lines carry no surface to scan; sorting by primitive type and removing them
   // leaves only triangles after triangulation.

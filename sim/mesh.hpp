@@ -5,8 +5,9 @@
 // catalog's size_mm: the files' own units (often unit boxes or arbitrary) never matter.
 //
 // Every defect of the file (missing, unknown extension, unreadable by assimp, no triangles,
-// NaN/inf coordinates, all vertices at one point) throws cosmos::InputError with one line
-// naming the file and the reason.
+// NaN/inf coordinates, all vertices at one point, a PLY/OFF header claiming more elements
+// than the file holds, a face indexing a missing vertex: sim/mesh_element_counts.hpp) throws
+// cosmos::InputError with one line naming the file and the reason.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <filesystem>

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "core/io/model_base_generated.h"
+#include "core/modelbase/model_base_ranges.hpp"
 
 namespace cosmos {
 namespace {
@@ -240,6 +241,10 @@ std::optional<std::string> decode_registration(const fb::RegistrationPoints* in,
 
 std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::size_t payload_bytes,
                                              std::shared_ptr<const void> owner, ModelBase& out) {
+  // The root offset and the identifier come first: a shorter payload has neither (and the
+  // identifier check would read past it).
+  if (payload_bytes < 8)
+    return "payload of " + std::to_string(payload_bytes) + " bytes, shorter than its 8-byte start";
   if (!fb::ModelBaseBufferHasIdentifier(payload)) return std::string("no CSMB payload identifier");
   // The defaults (one million tables) are too few for 20 x 320 views of ~30 tables each.
   flatbuffers::Verifier verifier(payload, payload_bytes, 64, 1u << 30);
@@ -299,7 +304,8 @@ std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::s
         return error;
     }
   }
-  return std::nullopt;
+  // The verifier proved the offsets; the values the recognizer trusts are checked here.
+  return model_base_out_of_range(out);
 }
 
 }  // namespace cosmos

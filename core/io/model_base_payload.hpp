@@ -22,8 +22,9 @@ void encode_model_base(const ModelBase& base, flatbuffers::FlatBufferBuilder& bu
 std::size_t estimated_payload_bytes(const ModelBase& base);
 
 // Verifies (FlatBuffers Verifier and the base's own invariants: array lengths, indices in
-// range) and decodes. The registration arrays of `out` point into `payload`, which `owner`
-// keeps alive. Returns the reason the payload is corrupt, nullopt on success.
+// range, every value in range: core/modelbase/model_base_ranges.hpp) and decodes. The registration
+// arrays of `out` point into `payload`, which `owner` keeps alive. Returns the reason the payload
+// is corrupt, nullopt on success.
 std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::size_t payload_bytes,
                                              std::shared_ptr<const void> owner, ModelBase& out);
 

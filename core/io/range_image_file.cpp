@@ -10,6 +10,7 @@
 #include <cstring>
 #include <fstream>
 #include <initializer_list>
+#include <iostream>
 #include <opencv2/core.hpp>
 #include <opencv2/core/utils/logger.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -60,19 +61,40 @@ ImageFormat format_of(const fs::path& image_path) {
        "unknown range image extension '" + extension + "' (expected .tif, .tiff or .pfm)");
 }
 
-// OpenCV logs its own decoder complaints to stderr; the reader reports every failure itself
-// as one InputError line, so OpenCV is silenced for the duration of a call.
+// OpenCV reports a decoder's failure on its own before the reader can: its logger, its error
+// callback, and imread's own lines on std::cerr ("imread_('...'): can't read header: ...").
+// The reader reports every failure itself as one InputError line, so all three are silenced
+// for the duration of a call.
+int ignore_opencv_error(int, const char*, const char*, const char*, int, void*) { return 0; }
+
 class QuietOpenCv {
  public:
-  QuietOpenCv() : previous_(cv::utils::logging::getLogLevel()) {
+  QuietOpenCv()
+      : previous_level_(cv::utils::logging::getLogLevel()),
+        previous_handler_(cv::redirectError(ignore_opencv_error, nullptr, &previous_data_)),
+        previous_cerr_(std::cerr.rdbuf(&discard_)) {
     cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
   }
-  ~QuietOpenCv() { cv::utils::logging::setLogLevel(previous_); }
+  ~QuietOpenCv() {
+    std::cerr.rdbuf(previous_cerr_);
+    cv::redirectError(previous_handler_, previous_data_);
+    cv::utils::logging::setLogLevel(previous_level_);
+  }
   QuietOpenCv(const QuietOpenCv&) = delete;
   QuietOpenCv& operator=(const QuietOpenCv&) = delete;
 
  private:
-  cv::utils::logging::LogLevel previous_;
+  // A stream buffer that drops whatever is written to it.
+  struct Discard : std::streambuf {
+    int overflow(int c) override { return traits_type::not_eof(c); }
+    std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
+  };
+
+  Discard discard_;
+  cv::utils::logging::LogLevel previous_level_;
+  void* previous_data_ = nullptr;
+  cv::ErrorCallback previous_handler_;
+  std::streambuf* previous_cerr_;
 };
 
 std::string depth_name(int depth) {

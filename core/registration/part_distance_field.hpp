@@ -11,6 +11,7 @@
 // Distances are accurate to half a voxel diagonal: enough to rank starts, never used for the
 // final pose (ch. 6 registration on the views does that).
 #include <Eigen/Core>
+#include <cstddef>
 #include <vector>
 
 #include "core/parameter_visitor.hpp"
@@ -37,7 +38,13 @@ class PartDistanceField {
   PartDistanceField(const std::vector<Eigen::Vector3d>& points_part_mm,
                     const PartDistanceFieldParameters& parameters);
 
+  // The grid never holds more voxels (16 Mi floats, 64 MiB; a 500 mm part at the default
+  // 2 mm voxel fits): points spread wider get a coarser voxel than asked for.
+  static constexpr std::size_t kMaxVoxels = std::size_t{1} << 24;
+
   bool empty() const { return distance_mm_.empty(); }
+  std::size_t voxel_count() const { return distance_mm_.size(); }
+  double voxel_mm() const { return voxel_mm_; }
   // Distance to the part's surface; beyond the grid, at least the margin (the grid edge's
   // value plus the way out). The gradient is that of the trilinear interpolant (zero
   // outside the grid).

@@ -2,6 +2,8 @@
 // Encoding and decoding of generated LCM message types into caller-owned buffers, so that
 // publishing reuses one buffer (lcm::LCM::publish(channel, msg) would allocate per message)
 // and decoding of untrusted bytes (network, log files) reports failure instead of throwing.
+#include <cosmos_lcm/cell_status_t.hpp>
+#include <cosmos_lcm/part_pose_t.hpp>
 #include <cosmos_lcm/range_profile_t.hpp>
 #include <cstddef>
 #include <cstdint>
@@ -41,6 +43,45 @@ template <class Message>
 bool decode_message(const void* data, std::size_t size, Message& message) {
   static_assert(!std::is_same_v<Message, cosmos_lcm::range_profile_t>,
                 "decode a range_profile_t with its maximum width");
+  return detail::decode_generated(data, size, message);
+}
+
+// The generated decode of a string reads its length L (the bytes plus a '\0'), checks only
+// L <= the bytes left, then copies L - 1 bytes: L = INT_MIN overflows to INT_MAX and copies
+// 2 GB from past the message (other L <= 0 make std::string throw, which is caught). The
+// strings of part_pose_t and cell_status_t are checked here first, at the offsets their
+// types give them (realtime/lcm/types/*.lcm; fields added after the last string move none).
+namespace detail {
+inline std::int64_t encoded_int32(const std::uint8_t* bytes) {
+  const std::uint32_t bits = (std::uint32_t{bytes[0]} << 24) | (std::uint32_t{bytes[1]} << 16) |
+                             (std::uint32_t{bytes[2]} << 8) | std::uint32_t{bytes[3]};
+  return static_cast<std::int32_t>(bits);
+}
+// The string whose length is at `offset`: true when its length is in [1, bytes left]; `offset`
+// then moves past it. False when the bytes end first (decode refuses those itself).
+inline bool valid_encoded_string(const void* data, std::size_t size, std::size_t& offset) {
+  if (size < offset + 4) return true;
+  const std::int64_t length = encoded_int32(static_cast<const std::uint8_t*>(data) + offset);
+  if (length < 1 || static_cast<std::uint64_t>(length) > size - offset - 4) return false;
+  offset += 4 + static_cast<std::size_t>(length);
+  return true;
+}
+}  // namespace detail
+
+// part_pose_t: hash, utime, part_seq, encoder_ticks, part_name, part_index, view_index,
+// status, reason, ...
+inline bool decode_message(const void* data, std::size_t size, cosmos_lcm::part_pose_t& message) {
+  std::size_t offset = 8 + 3 * 8;
+  if (!detail::valid_encoded_string(data, size, offset)) return false;
+  offset += 4 + 4 + 1;
+  if (!detail::valid_encoded_string(data, size, offset)) return false;
+  return detail::decode_generated(data, size, message);
+}
+
+// cell_status_t: hash, utime, state, state_text, ...
+inline bool decode_message(const void* data, std::size_t size, cosmos_lcm::cell_status_t& message) {
+  std::size_t offset = 8 + 8 + 1;
+  if (!detail::valid_encoded_string(data, size, offset)) return false;
   return detail::decode_generated(data, size, message);
 }
 

@@ -183,6 +183,50 @@ TEST_F(CliBadInput, SynthOptionsReachTheSurface) {
 
 // The option sets sim_source.parts and is checked against its declared range before the
 // config is read: 0 and -3 used to run the config's parts.
+// Numeric options are held to the ranges of the parameters they set: a huge
+// --smoothing-iterations ran for minutes.
+TEST_F(CliBadInput, InspectOptionsAreHeldToTheParametersRanges) {
+  write_valid_range(file("ok.tiff"));
+  const std::string base =
+      "inspect '" + file("ok.tiff").string() + "' --out '" + file("out").string() + "' ";
+  expect_one_line_failure(base + "--smoothing-iterations 100000000",
+                          "--smoothing-iterations: cosmos.smoothing.iterations must be in [0, "
+                          "1000], got 100000000");
+  expect_one_line_failure(base + "--smoothing-iterations -2",
+                          "--smoothing-iterations: cosmos.smoothing.iterations must be in");
+  expect_one_line_failure(base + "--max-patches -1",
+                          "--max-patches: cosmos.segmentation.max_patches must be in [0, 10000]");
+  expect_one_line_failure(base + "--max-patches 2.5", "--max-patches: '2.5' is not a whole number");
+  EXPECT_FALSE(fs::exists(file("out")));
+}
+
+TEST_F(CliBadInput, EvalOptionsAreRangeChecked) {
+  const std::string base = "eval --modelbase '" + file("absent.cmb").string() + "' --out '" +
+                           file("eval").string() + "' ";
+  expect_one_line_failure(base + "--threads 0", "--threads: must be in [1, 1024], got 0");
+  expect_one_line_failure(base + "--threads 1000000000", "--threads: must be in [1, 1024]");
+  expect_one_line_failure(base + "--tests 0", "--tests: must be in [1, 1000000], got 0");
+  expect_one_line_failure(base + "--noise-mm 1e6", "--noise-mm: scanner.z_noise_mm must be in");
+}
+
+// A damaged image whose decoder throws inside OpenCV: imread printed its own line on stderr
+// before the reader's.
+TEST_F(CliBadInput, DamagedImagesGiveOnlyTheReadersLine) {
+  write_valid_range(file("cut.tiff"));
+  const std::string tiff = read_text(file("cut.tiff"));
+  testing::write_text_file(file("cut.tiff"), tiff.substr(0, tiff.size() / 2));
+  expect_inspect_rejects(file("cut.tiff"), "cut.tiff");
+  testing::write_text_file(file("header.tiff"), tiff.substr(0, 12));
+  fs::copy_file(file("cut.yaml"), file("header.yaml"));
+  expect_inspect_rejects(file("header.tiff"), "header.tiff");
+  testing::write_text_file(file("huge.pfm"), "Pf\n100000 100000\n-1.0\n0000");
+  fs::copy_file(file("cut.yaml"), file("huge.yaml"));
+  expect_inspect_rejects(file("huge.pfm"), "huge.pfm");
+  testing::write_text_file(file("short.pfm"), "Pf\n8 6\n-1.0\n0000");
+  fs::copy_file(file("cut.yaml"), file("short.yaml"));
+  expect_inspect_rejects(file("short.pfm"), "short.pfm");
+}
+
 TEST_F(CliBadInput, CellRejectsAPartCountOutOfRange) {
   expect_one_line_failure("cell --parts 0 --config '" + file("absent.yaml").string() + "'",
                           "--parts: sim_source.parts must be in [1, 1000000], got 0");

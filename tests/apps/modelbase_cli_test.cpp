@@ -221,6 +221,10 @@ TEST_F(ModelBaseCli, BadOptionsAreRefusedInOneLine) {
   expect_one_line_failure("modelbase build " + catalog + "--views 0" + out, "--views '0'");
   expect_one_line_failure("modelbase build " + catalog + "--views 321" + out, "--views '321'");
   expect_one_line_failure("modelbase build " + catalog + "--threads x" + out, "--threads 'x'");
+  expect_one_line_failure("modelbase build " + catalog + "--threads 1000000" + out,
+                          "--threads '1000000': expected an integer in [1, 1024]");
+  expect_one_line_failure("modelbase build " + catalog + "--clusters 1000" + out,
+                          "--clusters: grouping.cluster_count: must be in [0, 320], got 1000");
   expect_one_line_failure("modelbase build " + catalog + "--cluster-level 1e-4 --clusters 5" + out,
                           "not both");
   expect_one_line_failure("modelbase build " + catalog + "--cluster-level -1" + out,

@@ -89,8 +89,8 @@ TEST_F(SimCli, BadMeshesNameTheFileAndTheReason) {
   expect_one_line_failure(scan_mesh("nan.off"), "nan.off: vertex");
   write("part.xyz", kBoxOff);
   expect_one_line_failure(scan_mesh("part.xyz"), "part.xyz: unknown mesh extension");
-  expect_one_line_failure(scan_mesh("box.off", "0"), "box.off: size_mm must be finite and > 0");
-  expect_one_line_failure(scan_mesh("box.off", "abc"), "--size-mm 'abc'");
+  expect_one_line_failure(scan_mesh("box.off", "0"), "--size-mm: must be in (0, 5000], got 0");
+  expect_one_line_failure(scan_mesh("box.off", "abc"), "--size-mm: 'abc' is not a number");
   EXPECT_FALSE(fs::exists(file("out.tiff")));
 }
 
@@ -124,7 +124,14 @@ TEST_F(SimCli, BadPartsConfigsAndOptionsAreOneLine) {
                           "one of");
   expect_one_line_failure("sim scan --part box" + catalog + out + " --seed -1", "--seed '-1'");
   expect_one_line_failure("sim scan --part box" + catalog + out + " --noise-mm -1",
-                          "--noise-mm '-1'");
+                          "--noise-mm: scanner.z_noise_mm must be in [0, 10], got -1");
+  expect_one_line_failure("sim scan --part box" + catalog + out + " --noise-mm 50",
+                          "--noise-mm: scanner.z_noise_mm must be in [0, 10], got 50");
+  // 1e9 mm asked the scan for an unbounded range image (std::bad_alloc).
+  expect_one_line_failure("sim scan --mesh '" + file("box.off") + "' --size-mm 1e9" + out,
+                          "--size-mm: must be in (0, 5000], got 1e9");
+  expect_one_line_failure("sim scan --mesh '" + file("box.off") + "' --size-mm 0" + out,
+                          "--size-mm: must be in (0, 5000], got 0");
   expect_one_line_failure("sim views --part box" + catalog + " --out '" + file("v") + "' --count 0",
                           "--count '0'");
   expect_one_line_failure("sim views --part nosuch" + catalog + " --out '" + file("v") + "'",

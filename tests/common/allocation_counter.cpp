@@ -14,6 +14,11 @@ void* counted_allocation(std::size_t size) {
   throw std::bad_alloc();
 }
 
+void* counted_nothrow_allocation(std::size_t size) noexcept {
+  ++allocations;
+  return std::malloc(size == 0 ? 1 : size);
+}
+
 void* counted_aligned_allocation(std::size_t size, std::align_val_t alignment) {
   ++allocations;
   const auto align = static_cast<std::size_t>(alignment);
@@ -37,6 +42,16 @@ void* operator new(std::size_t size, std::align_val_t alignment) {
 void* operator new[](std::size_t size, std::align_val_t alignment) {
   return cosmos::test::counted_aligned_allocation(size, alignment);
 }
+// The nothrow forms too: left to the library's, they would allocate where this file's delete
+// frees (a mismatch AddressSanitizer reports).
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+  return cosmos::test::counted_nothrow_allocation(size);
+}
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
+  return cosmos::test::counted_nothrow_allocation(size);
+}
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }

@@ -181,9 +181,127 @@ TEST_F(MeshFiles, NonPositiveTargetSizeIsRefused) {
   expect_one_line_naming(load_error(path, -5.0), path, "size_mm must be finite and > 0");
 }
 
-TEST_F(MeshFiles, GarbageIsAnAssimpFailureOnOneLine) {
+TEST_F(MeshFiles, GarbageIsRefusedOnOneLine) {
   const fs::path path = write("garbage.ply", "this is not\na ply file\n");
-  expect_one_line_naming(load_error(path), path, "assimp cannot read it");
+  expect_one_line_naming(load_error(path), path, "not a PLY file");
+  const fs::path stl = write("garbage.stl", "this is not\nan stl file\n");
+  expect_one_line_naming(load_error(stl), stl, "assimp cannot read it");
+}
+
+// A binary little-endian PLY of the tetrahedron above (float x, y, z; uchar count, int
+// indices), optionally with one face index changed and the vertex count claimed.
+std::string binary_tetra_ply(int bad_index = -1, const std::string& vertex_count = "4") {
+  std::string out = "ply\nformat binary_little_endian 1.0\nelement vertex " + vertex_count +
+                    "\nproperty float x\nproperty float y\nproperty float z\n"
+                    "element face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  const float vertices[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 2, 0}, {0, 0, 4}};
+  for (const auto& vertex : vertices) out.append(reinterpret_cast<const char*>(vertex), 12);
+  const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  for (int f = 0; f < 4; ++f) {
+    out.push_back(3);
+    for (int k = 0; k < 3; ++k) {
+      const int index = f == 2 && k == 1 && bad_index >= 0 ? bad_index : faces[f][k];
+      out.append(reinterpret_cast<const char*>(&index), 4);
+    }
+  }
+  return out;
+}
+
+TEST_F(MeshFiles, BinaryPlyTetrahedronIsRead) {
+  const TriangleMesh mesh = read_mesh_file(write("tetra.ply", binary_tetra_ply()));
+  EXPECT_EQ(mesh.vertices.size(), 4u);
+  EXPECT_EQ(mesh.triangles.size(), 4u);
+}
+
+// A 200-byte PLY header announcing 2e9 vertices made assimp reserve for them (16 GB and
+// growing): the claim is weighed against the file's size before assimp reads it.
+TEST_F(MeshFiles, PlyHeaderClaimingMoreVerticesThanTheFileHoldsIsRefusedAtOnce) {
+  const fs::path binary = write("huge.ply", binary_tetra_ply(-1, "2000000000"));
+  expect_one_line_naming(load_error(binary), binary,
+                         "header claims 2000000000 vertex elements, more than its");
+  const fs::path ascii =
+      write("huge_ascii.ply",
+            "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+            "property float z\nelement face 900000000\nproperty list uchar int vertex_indices\n"
+            "end_header\n0 0 0\n1 0 0\n0 2 0\n0 0 4\n3 0 2 1\n");
+  expect_one_line_naming(load_error(ascii), ascii, "header claims 900000000 face elements");
+}
+
+TEST_F(MeshFiles, OffHeaderClaimingMoreElementsThanTheFileHoldsIsRefused) {
+  const fs::path vertices =
+      write("huge.off", "OFF\n1000000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  expect_one_line_naming(load_error(vertices), vertices, "header claims 1000000000 vertices");
+  const fs::path faces = write("faces.off", "OFF\n3 2000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  expect_one_line_naming(load_error(faces), faces, "header claims 2000000000 faces");
+}
+
+// Faces indexing vertices the file does not have were accepted silently: assimp's OFF reader
+// clamps the index to the last vertex.
+TEST_F(MeshFiles, FaceIndexingAMissingVertexIsRefusedInEachIndexedFormat) {
+  const fs::path off =
+      write("bad.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 9 3\n");
+  expect_one_line_naming(load_error(off), off, "face 1 indexes vertex 9, the file has 4 vertices");
+  const fs::path negative = write("negative.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n");
+  expect_one_line_naming(load_error(negative), negative, "face 0 indexes vertex -1");
+  std::string ascii = kTetraPly;
+  ascii.replace(ascii.rfind("3 1 2 3"), 7, "3 1 7 3");
+  const fs::path ascii_ply = write("bad_ascii.ply", ascii);
+  expect_one_line_naming(load_error(ascii_ply), ascii_ply,
+                         "face 2 indexes vertex 7, the file has 4 vertices");
+  const fs::path binary_ply = write("bad_binary.ply", binary_tetra_ply(1000));
+  expect_one_line_naming(load_error(binary_ply), binary_ply,
+                         "face 2 indexes vertex 1000, the file has 4 vertices");
+  const fs::path obj = write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 8\n");
+  expect_one_line_naming(load_error(obj), obj, "");
+}
+
+// Found by fuzz_mesh_ply: a face element declared without its index list ("element face
+// 4end_header", the list's line erased) made assimp read past its buffers.
+TEST_F(MeshFiles, PlyElementsWithoutWhatTheReaderNeedsAreRefused) {
+  std::string no_list = binary_tetra_ply();
+  no_list.replace(no_list.find("\nproperty list"),
+                  std::string("\nproperty list uchar int vertex_indices").size(), "");
+  const fs::path faces = write("no_list.ply", no_list);
+  expect_one_line_naming(load_error(faces), faces,
+                         "PLY face element without a vertex_indices list");
+  std::string glued = binary_tetra_ply();
+  const std::string list_and_end = "4\nproperty list uchar int vertex_indices\nend_header";
+  glued.replace(glued.find(list_and_end), list_and_end.size(), "4end_header");
+  const fs::path end = write("glued.ply", glued);
+  expect_one_line_naming(load_error(end), end, "PLY header has no end_header line");
+  std::string no_z = kTetraPly;
+  no_z.replace(no_z.find("property float z\n"), 17, "property float w\n");
+  const fs::path vertices = write("no_z.ply", no_z);
+  expect_one_line_naming(load_error(vertices), vertices,
+                         "PLY vertex element without properties x, y, z");
+}
+
+// Found by fuzz_mesh_off and fuzz_mesh_ply: assimp reads an OFF file without its keyword from
+// the counts on its first line (2e18 vertices: out of memory), and skips an unknown PLY
+// header line, then loops on the body.
+TEST_F(MeshFiles, HeaderlessOffCountsAndUnknownPlyHeaderLinesAreRefused) {
+  const fs::path off = write("headerless.off", "2222222222222222222 2 0\n0 0 0\n1 0 0\n");
+  expect_one_line_naming(load_error(off), off, "header claims 2222222222222222222 vertices");
+  const fs::path ply =
+      write("typo.ply",
+            "ply\nformat ascii 1.0\nelemlement face 4\nproperty list uchar int vertex_indices\n"
+            "end_header\n3 0 1 2\n");
+  expect_one_line_naming(load_error(ply), ply,
+                         "PLY header line 'elemlement face 4' is not a PLY header keyword");
+  std::string format = binary_tetra_ply(-1, "333333333333333334");
+  format.replace(format.find("binary_little_endian"), 20, "binary_littleary_little_endian");
+  const fs::path formats = write("format.ply", format);
+  expect_one_line_naming(load_error(formats), formats,
+                         "PLY format 'binary_littleary_little_endian' is none of");
+  const fs::path spelled = write("spelled.ply", "plY\nformat ascii 1.0\nend_header\n");
+  expect_one_line_naming(load_error(spelled), spelled, "its first line is not 'ply'");
+  const fs::path garbage =
+      write("garbage_face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n\xcd\xda 7 4\n");
+  expect_one_line_naming(load_error(garbage), garbage,
+                         "face 0 does not start with a vertex count of 3 or more");
+  const fs::path short_face = write("short_face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n");
+  expect_one_line_naming(load_error(short_face), short_face,
+                         "face 0 has fewer than 3 vertex indices");
 }
 
 }  // namespace

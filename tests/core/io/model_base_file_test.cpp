@@ -7,8 +7,10 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <random>
 #include <string>
@@ -277,6 +279,18 @@ TEST_F(ModelBaseFile, DamageBehindAValidChecksumIsCaughtByTheVerifier) {
   EXPECT_GT(refused, 0);
 }
 
+// A header announcing an empty payload: the identifier check read 4 bytes past the file.
+TEST_F(ModelBaseFile, HeaderWithoutPayloadIsRefused) {
+  write_model_base(hand_made_base(), path_);
+  std::string content = bytes().substr(0, kModelBaseHeaderBytes);
+  for (int k = 0; k < 8; ++k) content[16 + static_cast<std::size_t>(k)] = 0;  // payload bytes
+  const std::uint64_t checksum = xxh64(content.data(), 0);
+  for (int k = 0; k < 8; ++k)
+    content[24 + static_cast<std::size_t>(k)] = static_cast<char>(checksum >> (8 * k));
+  put_bytes(content);
+  expect_refusal("corrupted: payload of 0 bytes, shorter than its 8-byte start");
+}
+
 TEST_F(ModelBaseFile, OtherFormatVersionIsRefused) {
   write_model_base(hand_made_base(), path_);
   std::string content = bytes();
@@ -302,6 +316,72 @@ TEST_F(ModelBaseFile, OtherParametersAreRefusedNamingTheKey) {
 TEST_F(ModelBaseFile, MissingFileIsRefused) {
   fs::remove(path_);
   expect_refusal("cannot open");
+}
+
+// A base written with absurd values (a writer bug or a crafted file: the checksum matches)
+// passes the FlatBuffers verifier; each value the recognizer trusts is refused with one line
+// naming the view and the value, instead of reaching the pose search's distance field.
+TEST_F(ModelBaseFile, AbsurdValuesBehindAValidChecksumAreRefusedNamingThem) {
+  const auto refusal_of = [&](const std::function<void(ModelBase&)>& damage) {
+    ModelBase base = hand_made_base();
+    for (ModelBaseView& view : base.views) {
+      view.registration_packed = pack_registration_points(view.registration);
+      view.registration = {};
+    }
+    damage(base);
+    write_model_base(base, path_);
+    return refusal();
+  };
+  const auto expect_refused = [&](const std::function<void(ModelBase&)>& damage,
+                                  const std::string& needle) {
+    const std::string message = refusal_of(damage);
+    EXPECT_EQ(message.rfind(path_.string() + ": corrupted: ", 0), 0u) << message;
+    EXPECT_NE(message.find(needle), std::string::npos) << "'" << needle << "' not in: " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  };
+  EXPECT_EQ(refusal_of([](ModelBase&) {}), "");
+  expect_refused([](ModelBase& b) { b.views[2].T_scanner_part.translation_mm.x() = 1e300; },
+                 "view 2: T_scanner_part translation_mm.x is 1e+300, expected within +-10000");
+  expect_refused([](ModelBase& b) { b.views[1].T_scanner_part.rotation(0, 0) = 3; },
+                 "view 1: T_scanner_part rotation's |R^T R - I|");
+  expect_refused([](ModelBase& b) { b.views[0].registration_packed.origin_y_mm = std::nan(""); },
+                 "view 0: registration origin_y_mm is nan");
+  expect_refused([](ModelBase& b) { b.views[4].registration_packed.spacing_x_mm = 0; },
+                 "view 4: registration spacing_x_mm is 0");
+  expect_refused(
+      [](ModelBase& b) {
+        b.views[3].direction_part = {0, 0, 7};
+      },
+      "view 3: direction_part length is 7");
+  expect_refused([](ModelBase& b) { b.parts[1].size_mm = -1; }, "part 1: size_mm is -1");
+  expect_refused([](ModelBase& b) { b.views[0].moments[4] = INFINITY; }, "view 0: moment 5 is inf");
+  expect_refused([](ModelBase& b) { b.views[1].cosmos.patches[0].centroid_mm.z() = -1e7; },
+                 "view 1: patch 0 centroid_mm.z is -1e+07");
+  expect_refused([](ModelBase& b) { b.clusters[2].centroid[0] = std::nan(""); },
+                 "cluster 2: moment 1 is nan");
+}
+
+// A point height is stored in the packed arrays the file's bytes hold: patched in place
+// behind a recomputed checksum.
+TEST_F(ModelBaseFile, AbsurdPointHeightInTheFileIsRefused) {
+  write_model_base(hand_made_base(), path_);
+  std::string content = bytes();
+  const ModelBase read = read_model_base(path_);
+  // The loaded base's arrays point into its file's bytes, which `storage` holds from the
+  // header on: the height's offset in the file is its distance from there.
+  const PackedRegistrationPoints& packed = read.views[3].registration_packed;
+  const auto offset =
+      static_cast<std::size_t>(reinterpret_cast<const char*>(packed.plane.data() + 3 * 7) -
+                               static_cast<const char*>(packed.storage.get()));
+  ASSERT_LT(offset + 4, content.size());
+  const float absurd = 3e38f;
+  std::memcpy(content.data() + offset, &absurd, 4);
+  const std::uint64_t checksum =
+      xxh64(content.data() + kModelBaseHeaderBytes, content.size() - kModelBaseHeaderBytes);
+  for (int k = 0; k < 8; ++k)
+    content[24 + static_cast<std::size_t>(k)] = static_cast<char>(checksum >> (8 * k));
+  put_bytes(content);
+  expect_refusal("height_mm is 3e+38, expected within +-10000");
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -155,6 +156,42 @@ TEST(PartDistanceField, NoPointsGiveAnEmptyFieldThatAlignsNothing) {
   const RigidTransform aligned = align_in_distance_field(scene, field, start, 5, 10.0);
   EXPECT_EQ(aligned.translation_mm, start.translation_mm);
   EXPECT_DOUBLE_EQ(field_truncated_mean_square_mm2(scene, field, start, 10.0), 100.0);
+}
+
+// Points a kilometre and more apart (a crafted model base) would ask for a grid of 10^18
+// voxels at 2 mm, its size in int overflowing: the grid stays within its bound, coarser, and
+// still finds the points.
+TEST(PartDistanceField, AbsurdlySpreadPointsGetABoundedCoarserGrid) {
+  const std::vector<Eigen::Vector3d> points = {Eigen::Vector3d::Zero(),
+                                               Eigen::Vector3d(1e9, -1e9, 1e9)};
+  const PartDistanceField field(points, {});
+  ASSERT_FALSE(field.empty());
+  EXPECT_LE(field.voxel_count(), PartDistanceField::kMaxVoxels);
+  EXPECT_GT(field.voxel_count(), PartDistanceField::kMaxVoxels / 4);
+  EXPECT_GT(field.voxel_mm(), 2.0);
+  EXPECT_LT(field.distance_mm(points[0]), field.voxel_mm());
+  EXPECT_LT(field.distance_mm(points[1]), field.voxel_mm());
+}
+
+TEST(PartDistanceField, NonFinitePointsAreIgnoredAndExtremeOnesLeaveItEmpty) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const PartDistanceField with_nan({Eigen::Vector3d(nan, 0, 0), Eigen::Vector3d(1, 2, 3)}, {});
+  ASSERT_FALSE(with_nan.empty());
+  EXPECT_NEAR(with_nan.distance_mm(Eigen::Vector3d(1, 2, 3)), 0.0, 1e-6);
+  // Their extent overflows a double: no grid can span it.
+  const PartDistanceField extreme({Eigen::Vector3d(-1e308, 0, 0), Eigen::Vector3d(1e308, 0, 0)},
+                                  {});
+  EXPECT_TRUE(extreme.empty());
+}
+
+TEST(PartDistanceField, ASinglePointWithoutMarginStillInterpolates) {
+  PartDistanceFieldParameters parameters;
+  parameters.margin_mm = 0;
+  const PartDistanceField field({Eigen::Vector3d(4, 5, 6)}, parameters);
+  ASSERT_FALSE(field.empty());
+  EXPECT_EQ(field.voxel_count(), 8u);
+  EXPECT_NEAR(field.distance_mm(Eigen::Vector3d(4, 5, 6)), 0.0, 1e-6);
+  EXPECT_NEAR(field.distance_mm(Eigen::Vector3d(4, 5, 16)), 10.0, 1e-6);
 }
 
 }  // namespace

@@ -95,6 +95,39 @@ TEST(LcmEncoding, ForeignAndDamagedBytesAreRefused) {
       decode_message(profile_bytes.data(), profile_bytes.size(), kMaxProfileWidth, profile));
 }
 
+void set_int32(std::vector<std::uint8_t>& bytes, std::size_t offset, std::uint32_t value) {
+  for (int k = 0; k < 4; ++k)
+    bytes[offset + static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(value >> (24 - 8 * k));
+}
+
+// A string length of INT_MIN passed the generated decode's check and overflowed to INT_MAX:
+// a 2 GB copy from past the datagram (found by fuzz/fuzz_lcm_message.cpp). Every string of
+// both types, and lengths that are zero or longer than the message, are refused.
+TEST(LcmEncoding, StringLengthsOutsideTheMessageAreRefusedBeforeDecoding) {
+  const auto pose_bytes = encoded(testing::sample_pose(1), cosmos_lcm::part_pose_t{});
+  const std::size_t name_offset = 8 + 3 * 8;
+  cosmos_lcm::part_pose_t pose{};
+  ASSERT_TRUE(decode_message(pose_bytes.data(), pose_bytes.size(), pose));
+  const std::size_t reason_offset = name_offset + 4 + pose.part_name.size() + 1 + 4 + 4 + 1;
+  for (const std::size_t offset : {name_offset, reason_offset})
+    for (const std::uint32_t length : {0x80000000u, 0u, 0xFFFFFFFFu, 1000000u}) {
+      auto damaged = pose_bytes;
+      set_int32(damaged, offset, length);
+      EXPECT_FALSE(decode_message(damaged.data(), damaged.size(), pose))
+          << "offset " << offset << ", length " << length;
+    }
+
+  const auto status_bytes =
+      encoded(testing::sample_status("scanning"), cosmos_lcm::cell_status_t{});
+  cosmos_lcm::cell_status_t status{};
+  ASSERT_TRUE(decode_message(status_bytes.data(), status_bytes.size(), status));
+  for (const std::uint32_t length : {0x80000000u, 0u, 0x7FFFFFFFu}) {
+    auto damaged = status_bytes;
+    set_int32(damaged, 8 + 8 + 1, length);
+    EXPECT_FALSE(decode_message(damaged.data(), damaged.size(), status)) << "length " << length;
+  }
+}
+
 void set_width(std::vector<std::uint8_t>& bytes, std::uint32_t width) {
   const std::uint8_t big_endian[] = {
       static_cast<std::uint8_t>(width >> 24), static_cast<std::uint8_t>(width >> 16),

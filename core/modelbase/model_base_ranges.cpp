@@ -1,0 +1,156 @@
+#include "core/modelbase/model_base_ranges.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace cosmos {
+namespace {
+
+// Collects the first value out of range; later checks are skipped once one is found.
+class RangeCheck {
+ public:
+  explicit RangeCheck(const ModelBaseRanges& ranges) : ranges_(ranges) {}
+
+  bool failed() const { return reason_.has_value(); }
+  std::optional<std::string> reason() const { return reason_; }
+  const ModelBaseRanges& ranges() const { return ranges_; }
+
+  void finite(const std::string& where, const std::string& name, double value) {
+    if (!failed() && !std::isfinite(value)) fail(where, name, value, "a finite number");
+  }
+  void within(const std::string& where, const std::string& name, double value, double limit) {
+    if (!failed() && !(std::abs(value) <= limit))
+      fail(where, name, value, "within +-" + number(limit));
+  }
+  void between(const std::string& where, const std::string& name, double value, double low,
+               double high) {
+    if (!failed() && !(value >= low && value <= high))
+      fail(where, name, value, "in [" + number(low) + ", " + number(high) + "]");
+  }
+  void coordinates(const std::string& where, const std::string& name, const Eigen::Vector3d& v) {
+    for (int axis = 0; axis < 3; ++axis)
+      within(where, name + "." + "xyz"[axis], v[axis], ranges_.max_coordinate_mm);
+  }
+  void finite_vector(const std::string& where, const std::string& name, const Eigen::Vector3d& v) {
+    for (int axis = 0; axis < 3; ++axis) finite(where, name + "." + "xyz"[axis], v[axis]);
+  }
+  void unit_vector(const std::string& where, const std::string& name, const Eigen::Vector3d& v) {
+    finite_vector(where, name, v);
+    if (!failed() && !(std::abs(v.norm() - 1.0) <= ranges_.max_unit_vector_error))
+      fail(where, name + " length", v.norm(), "1");
+  }
+  void rigid(const std::string& where, const std::string& name, const RigidTransform& T) {
+    for (int k = 0; k < 9; ++k) finite(where, name + " rotation", T.rotation(k / 3, k % 3));
+    if (failed()) return;
+    const double error =
+        (T.rotation.transpose() * T.rotation - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+    if (!(error <= ranges_.max_rotation_error))
+      fail(where, name + " rotation's |R^T R - I|", error, "a rotation");
+    coordinates(where, name + " translation_mm", T.translation_mm);
+  }
+
+ private:
+  static std::string number(double value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+  }
+  void fail(const std::string& where, const std::string& name, double value,
+            const std::string& expected) {
+    reason_ = where + ": " + name + " is " + number(value) + ", expected " + expected;
+  }
+
+  const ModelBaseRanges& ranges_;
+  std::optional<std::string> reason_;
+};
+
+void check_cosmos(RangeCheck& check, const std::string& where, const CosmosView& cosmos) {
+  check.between(where, "visible_area_mm2", cosmos.visible_area_mm2, 0, 1e12);
+  for (std::size_t p = 0; p < cosmos.patches.size() && !check.failed(); ++p) {
+    const Csmp& patch = cosmos.patches[p];
+    const std::string name = "patch " + std::to_string(p) + " ";
+    check.between(where, name + "area_mm2", patch.area_mm2, 0, 1e12);
+    check.finite_vector(where, name + "mean_normal", patch.mean_normal);
+    check.finite(where, name + "shape_index", patch.shape_index);
+    check.finite(where, name + "shape_index_min", patch.shape_index_min);
+    check.finite(where, name + "shape_index_max", patch.shape_index_max);
+    check.finite(where, name + "mean_curvedness_per_mm", patch.mean_curvedness_per_mm);
+    check.coordinates(where, name + "centroid_mm", patch.centroid_mm);
+  }
+  for (std::size_t g = 0; g < cosmos.gauss_map.size() && !check.failed(); ++g) {
+    const GaussMapPoint& point = cosmos.gauss_map[g];
+    const std::string name = "Gauss-map point " + std::to_string(g) + " ";
+    check.finite_vector(where, name + "direction", point.direction);
+    for (const SupportTerm& term : point.terms) {
+      check.finite(where, name + "shape_index", term.shape_index);
+      check.between(where, name + "area_mm2", term.area_mm2, 0, 1e12);
+      check.finite(where, name + "curvedness_area", term.curvedness_area);
+    }
+  }
+}
+
+// The registration points' positions are the grid's cell centres and the stored heights
+// (packed_registration_points.hpp): bounding the grid and the heights bounds every point.
+void check_registration(RangeCheck& check, const std::string& where,
+                        const PackedRegistrationPoints& packed) {
+  const ModelBaseRanges& ranges = check.ranges();
+  check.between(where, "registration grid_width", packed.grid_width, 0,
+                ranges.max_grid_cells_per_side);
+  check.between(where, "registration grid_height", packed.grid_height, 0,
+                ranges.max_grid_cells_per_side);
+  check.within(where, "registration origin_x_mm", packed.origin_x_mm, ranges.max_coordinate_mm);
+  check.within(where, "registration origin_y_mm", packed.origin_y_mm, ranges.max_coordinate_mm);
+  check.between(where, "registration spacing_x_mm", packed.spacing_x_mm, 1e-6,
+                ranges.max_spacing_mm);
+  check.between(where, "registration spacing_y_mm", packed.spacing_y_mm, 1e-6,
+                ranges.max_spacing_mm);
+  check.within(where, "registration grid extent in x (mm)", packed.spacing_x_mm * packed.grid_width,
+               ranges.max_coordinate_mm);
+  check.within(where, "registration grid extent in y (mm)",
+               packed.spacing_y_mm * packed.grid_height, ranges.max_coordinate_mm);
+  check.between(where, "registration curvature_step", packed.curvature_step, 0, 1e6);
+  check.between(where, "registration residual_step_mm", packed.residual_step_mm, 0, 1e6);
+  check.between(where, "registration z_noise_sigma_mm", packed.z_noise_sigma_mm, 0, 1e3);
+  for (Eigen::Index k = 0; k < packed.fit_cofactor.size() && !check.failed(); ++k)
+    check.finite(where, "registration fit_cofactor", packed.fit_cofactor.data()[k]);
+  for (std::size_t k = 0; k < packed.plane.size() && !check.failed(); ++k) {
+    if (k % 3 == 0)
+      check.within(where, "registration point " + std::to_string(k / 3) + " height_mm",
+                   packed.plane[k], ranges.max_coordinate_mm);
+    else
+      check.finite(where, "registration point " + std::to_string(k / 3) + " slope",
+                   packed.plane[k]);
+  }
+}
+
+void check_moments(RangeCheck& check, const std::string& where, const MomentVector& moments) {
+  for (std::size_t m = 0; m < moments.size(); ++m)
+    check.finite(where, "moment " + std::to_string(m + 1), moments[m]);
+}
+
+}  // namespace
+
+std::optional<std::string> model_base_out_of_range(const ModelBase& base,
+                                                   const ModelBaseRanges& ranges) {
+  RangeCheck check(ranges);
+  for (std::size_t p = 0; p < base.parts.size() && !check.failed(); ++p) {
+    const std::string where = "part " + std::to_string(p);
+    check.between(where, "size_mm", base.parts[p].size_mm, 0, ranges.max_coordinate_mm);
+    check.between(where, "diameter_mm", base.parts[p].diameter_mm, 0, ranges.max_coordinate_mm);
+  }
+  for (std::size_t v = 0; v < base.views.size() && !check.failed(); ++v) {
+    const ModelBaseView& view = base.views[v];
+    const std::string where = "view " + std::to_string(v);
+    check.between(where, "view_index", view.view_index, 0, 1 << 20);
+    check.unit_vector(where, "direction_part", view.direction_part);
+    check.rigid(where, "T_scanner_part", view.T_scanner_part);
+    check_cosmos(check, where, view.cosmos);
+    check_moments(check, where, view.moments);
+    check_registration(check, where, view.registration_packed);
+  }
+  for (std::size_t c = 0; c < base.clusters.size() && !check.failed(); ++c)
+    check_moments(check, "cluster " + std::to_string(c), base.clusters[c].centroid);
+  return check.reason();
+}
+
+}  // namespace cosmos
