@@ -85,6 +85,44 @@ int estimated_parts(double area_mm2, const ModelBase& base) {
   return std::max(1, static_cast<int>(std::ceil(area_mm2 / std::max(largest_mm2, 1.0) - 0.25)));
 }
 
+// Where the blob narrows to a neck along one axis (rows: along the belt, parts touching end
+// to end; columns: across it, parts side by side): the counts of its pixels per row (or
+// column) at most a fifth of the largest, one cut per neck at its narrowest, away from the
+// blob's ends.
+std::vector<int> necks(const std::vector<int>& count) {
+  constexpr double kNeckFraction = 0.2;
+  constexpr int kEnd = 40;  // 16 mm at 0.4 mm: a part is longer and wider than that
+  const int widest = count.empty() ? 0 : *std::max_element(count.begin(), count.end());
+  int first = -1, last = -1;
+  for (int k = 0; k < static_cast<int>(count.size()); ++k)
+    if (count[static_cast<std::size_t>(k)] > 0) {
+      if (first < 0) first = k;
+      last = k;
+    }
+  const auto narrow = [&](int k) {
+    return count[static_cast<std::size_t>(k)] <= kNeckFraction * widest;
+  };
+  std::vector<int> cuts;
+  for (int k = first + kEnd; k < last - kEnd; ++k) {
+    if (!narrow(k)) continue;
+    int narrowest = k;
+    for (; k < last - kEnd && narrow(k); ++k)
+      if (count[static_cast<std::size_t>(k)] < count[static_cast<std::size_t>(narrowest)])
+        narrowest = k;
+    if (cuts.empty() || narrowest - cuts.back() >= kEnd) cuts.push_back(narrowest);
+  }
+  return cuts;
+}
+
+std::vector<int> pixels_per(const RangeImage& image, bool rows) {
+  std::vector<int> count(static_cast<std::size_t>(rows ? image.height() : image.width()), 0);
+  for (int row = 0; row < image.height(); ++row)
+    for (int column = 0; column < image.width(); ++column)
+      if (!std::isnan(image.z_mm(column, row)))
+        ++count[static_cast<std::size_t>(rows ? row : column)];
+  return count;
+}
+
 }  // namespace
 
 double typical_view_area_mm2(const ModelBase& base) {
@@ -103,69 +141,103 @@ BlobRecognition recognize_blob(PartBuilder& builder, const PartRecognitionContex
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
   };
   PartView view = extract_part_view(builder, context);
-  double features_ms = since(start);
   const int width = view.image.width();
   const double min_remaining_mm2 =
       parameters.min_remaining_fraction * typical_view_area_mm2(*context.model_base);
-  std::vector<std::uint8_t> excluded(static_cast<std::size_t>(width) * view.image.height(), 0);
   BlobRecognition blob;
   for (int row = 0; row < view.image.height(); row += 2)
     for (int column = 0; column < width; column += 2)
       if (const float z = view.image.z_mm(column, row); !std::isnan(z))
         blob.points_loop_mm.emplace_back(view.image.x_mm(column), view.image.y_mm(row), z);
   blob.image = view.image;
-  Remaining remaining = remaining_of(view.image);
-  for (;;) {
-    const std::int64_t seq = part_seq + static_cast<std::int64_t>(blob.parts.size());
-    PartRecognition recognition = recognize_part_view(view, builder, context, seq, features_ms);
-    if (recognition.result.status != RecognitionStatus::kOk) {
-      const int count = estimated_parts(remaining.interior_mm2, *context.model_base);
-      const std::string why = recognition.pose.reason;
-      if (count > 1)
-        recognition.pose.reason =
-            "unresolved cluster of " + std::to_string(count) + " parts: " + why;
-      else if (!blob.parts.empty())
-        recognition.pose.reason = "merged with a neighbour, not recognized: " + why;
-      place_rejection(remaining, builder, context, recognition);
-      blob.parts.push_back(std::move(recognition));
-      for (int k = 1; k < count; ++k) {
-        PartRecognition more = blob.parts.back();
-        more.pose.part_seq = part_seq + static_cast<std::int64_t>(blob.parts.size());
-        blob.parts.push_back(std::move(more));
+  // The scene loop over one region of the blob (pixels outside it excluded from the start).
+  const auto recognize_region = [&](std::vector<std::uint8_t> excluded, bool skip_small) {
+    PartView view = extract_part_view(builder, context, &excluded);
+    Remaining remaining = remaining_of(view.image);
+    if (skip_small && remaining.interior_mm2 < min_remaining_mm2) return;
+    double features_ms = since(start);
+    for (;;) {
+      const std::int64_t seq = part_seq + static_cast<std::int64_t>(blob.parts.size());
+      PartRecognition recognition = recognize_part_view(view, builder, context, seq, features_ms);
+      if (recognition.result.status != RecognitionStatus::kOk) {
+        const int count = estimated_parts(remaining.interior_mm2, *context.model_base);
+        const std::string why = recognition.pose.reason;
+        if (count > 1)
+          recognition.pose.reason =
+              "unresolved cluster of " + std::to_string(count) + " parts: " + why;
+        else if (!blob.parts.empty())
+          recognition.pose.reason = "merged with a neighbour, not recognized: " + why;
+        place_rejection(remaining, builder, context, recognition);
+        blob.parts.push_back(std::move(recognition));
+        for (int k = 1; k < count; ++k) {
+          PartRecognition more = blob.parts.back();
+          more.pose.part_seq = part_seq + static_cast<std::int64_t>(blob.parts.size());
+          blob.parts.push_back(std::move(more));
+        }
+        break;
       }
-      break;
+      const PartSearchModel& model = context.recognizer->part_search_model(recognition.result.part);
+      const std::vector<std::uint8_t> explained =
+          explained_pixels(view.image, model.field, recognition.result.T_scanner_part,
+                           parameters.explained_distance_mm);
+      set_profiles_of(explained, width, builder, recognition);
+      blob.parts.push_back(std::move(recognition));
+      for (std::size_t i = 0; i < excluded.size(); ++i) excluded[i] |= explained[i];
+      const auto cut = std::chrono::steady_clock::now();
+      view = extract_part_view(builder, context, &excluded);
+      remaining = remaining_of(view.image);
+      if (remaining.interior_mm2 < min_remaining_mm2) break;
+      if (static_cast<int>(blob.parts.size()) >= parameters.max_parts_per_blob) {
+        // What remains is reported, not recognized: the blob has used its recognitions.
+        PartRecognition rest = blob.parts.back();
+        rest.result = RecognitionResult{};
+        rest.pose.status = PoseStatus::kRejected;
+        rest.pose.part_name.clear();
+        rest.pose.part_index = rest.pose.view_index = -1;
+        rest.pose.score = rest.pose.registration_rms_mm = 0;
+        rest.pose.part_seq = part_seq + static_cast<std::int64_t>(blob.parts.size());
+        rest.pose.reason =
+            "unresolved cluster of " +
+            std::to_string(estimated_parts(remaining.interior_mm2, *context.model_base)) +
+            " parts: more than max_parts_per_blob in one blob";
+        place_rejection(remaining, builder, context, rest);
+        blob.parts.push_back(std::move(rest));
+        break;
+      }
+      features_ms = since(cut);
     }
-    const PartSearchModel& model = context.recognizer->part_search_model(recognition.result.part);
-    const std::vector<std::uint8_t> explained =
-        explained_pixels(view.image, model.field, recognition.result.T_scanner_part,
-                         parameters.explained_distance_mm);
-    set_profiles_of(explained, width, builder, recognition);
-    blob.parts.push_back(std::move(recognition));
-    for (std::size_t i = 0; i < excluded.size(); ++i) excluded[i] |= explained[i];
-    const auto cut = std::chrono::steady_clock::now();
-    view = extract_part_view(builder, context, &excluded);
-    remaining = remaining_of(view.image);
-    if (remaining.interior_mm2 < min_remaining_mm2) break;
-    if (static_cast<int>(blob.parts.size()) >= parameters.max_parts_per_blob) {
-      // What remains is reported, not recognized: the blob has used its recognitions.
-      PartRecognition rest = blob.parts.back();
-      rest.result = RecognitionResult{};
-      rest.pose.status = PoseStatus::kRejected;
-      rest.pose.part_name.clear();
-      rest.pose.part_index = rest.pose.view_index = -1;
-      rest.pose.score = rest.pose.registration_rms_mm = 0;
-      rest.pose.part_seq = part_seq + static_cast<std::int64_t>(blob.parts.size());
-      rest.pose.reason =
-          "unresolved cluster of " +
-          std::to_string(estimated_parts(remaining.interior_mm2, *context.model_base)) +
-          " parts: more than max_parts_per_blob in one blob";
-      place_rejection(remaining, builder, context, rest);
-      blob.parts.push_back(std::move(rest));
-      break;
+  };
+  recognize_region(
+      std::vector<std::uint8_t>(static_cast<std::size_t>(width) * view.image.height(), 0), false);
+  // Nothing recognized in a blob with necks (touching parts meet in a few pixels): each
+  // stretch between necks is recognized on its own, along the belt first, then across it.
+  const int height = view.image.height();
+  const auto none_recognized = [&blob] {
+    return std::none_of(blob.parts.begin(), blob.parts.end(), [](const PartRecognition& part) {
+      return part.pose.status == PoseStatus::kOk;
+    });
+  };
+  for (const bool along_rows : {true, false}) {
+    const std::vector<int> cuts = necks(pixels_per(view.image, along_rows));
+    if (cuts.empty() || !none_recognized()) continue;
+    blob.parts.clear();
+    int begin = 0;
+    for (std::size_t k = 0; k <= cuts.size(); ++k) {
+      const int end = k < cuts.size() ? cuts[k] : (along_rows ? height : width);
+      std::vector<std::uint8_t> outside(static_cast<std::size_t>(width) * height, 1);
+      for (int row = 0; row < height; ++row)
+        for (int column = 0; column < width; ++column) {
+          const int at = along_rows ? row : column;
+          if (at >= begin && at < end) outside[static_cast<std::size_t>(row) * width + column] = 0;
+        }
+      recognize_region(std::move(outside), true);
+      begin = end;
     }
-    features_ms = since(cut);
   }
-  if (builder.truncated) {
+  // Stretches all too small to be parts: the blob as a whole is what gets reported.
+  if (blob.parts.empty())
+    recognize_region(std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height, 0), false);
+  if (builder.truncated && builder.tracked_rows > builder.cosmos.rows()) {
     // The rows beyond the builders' held more of the blob: one ERROR for that rest.
     PartRecognition rest = blob.parts.back();
     rest.result = RecognitionResult{};

@@ -30,7 +30,7 @@ struct BlobRecognitionParameters {
   double explained_distance_mm = 3.0;
   // What remains is another part when its interior area is at least this fraction of the
   // median visible area of the base's views (CosmosView::visible_area_mm2).
-  double min_remaining_fraction = 0.3;
+  double min_remaining_fraction = 0.15;
   int max_parts_per_blob = 6;  // recognitions per blob at most
 };
 

@@ -62,7 +62,13 @@ RangeImage union_image(const std::vector<const RangeImage*>& pieces) {
 
 }  // namespace
 
+void PieceJoiner::remember(const Recognized& part) {
+  recent_.push_back(part);
+  if (recent_.size() > kRecentParts) recent_.pop_front();
+}
+
 void PieceJoiner::release(Piece& piece, std::vector<JoinedRecognition>& out) {
+  for (const Recognized& part : piece.parts) remember(part);
   for (JoinedRecognition& rejection : piece.rejections) out.push_back(std::move(rejection));
   piece.rejections.clear();
 }
@@ -71,14 +77,14 @@ bool PieceJoiner::recognize_together(const Piece& piece, const PartBuilder& buil
                                      std::vector<JoinedRecognition>& out) {
   std::vector<const RangeImage*> images{&piece.image};
   for (const Piece& held : held_)
-    if (near(held, piece)) images.push_back(&held.image);
+    if (!held.recognized && near(held, piece)) images.push_back(&held.image);
   if (images.size() < 2) return false;
   RecognitionResult result = context_.recognizer->recognize(union_image(images));
   if (result.status != RecognitionStatus::kOk) return false;
   PartRecognition together = recognition_of(std::move(result), builder, context_, 0);
   std::int64_t first_profile = piece.first_profile;
   for (auto held = held_.begin(); held != held_.end();) {
-    if (near(*held, piece)) {
+    if (!held->recognized && near(*held, piece)) {
       first_profile = std::min(first_profile, held->first_profile);
       held = held_.erase(held);
     } else {
@@ -93,18 +99,24 @@ bool PieceJoiner::recognize_together(const Piece& piece, const PartBuilder& buil
 }
 
 bool PieceJoiner::explained_by_recent(const Piece& piece) const {
-  if (piece.points_loop_mm.empty()) return false;
-  for (const Recognized& part : recent_) {
-    if (!near(piece, part)) continue;
+  std::vector<Recognized> near_parts;
+  for (const Recognized& part : recent_)
+    if (near(piece, part)) near_parts.push_back(part);
+  return explained_by(piece.points_loop_mm, near_parts);
+}
+
+bool PieceJoiner::explained_by(const std::vector<Eigen::Vector3d>& points,
+                               const std::vector<Recognized>& parts) const {
+  if (points.empty()) return false;
+  for (const Recognized& part : parts) {
     const PartDistanceField& field = context_.recognizer->part_search_model(part.part).field;
     const RigidTransform T_part_loop = part.T_loop_part.inverse();
     std::size_t on_surface = 0;
-    for (const Eigen::Vector3d& point : piece.points_loop_mm)
+    for (const Eigen::Vector3d& point : points)
       on_surface +=
           field.distance_mm(T_part_loop.apply(point)) <= context_.blob.explained_distance_mm ? 1
                                                                                              : 0;
-    if (static_cast<double>(on_surface) >=
-        kExplainedFraction * static_cast<double>(piece.points_loop_mm.size()))
+    if (static_cast<double>(on_surface) >= kExplainedFraction * static_cast<double>(points.size()))
       return true;
   }
   return false;
@@ -112,49 +124,71 @@ bool PieceJoiner::explained_by_recent(const Piece& piece) const {
 
 std::vector<JoinedRecognition> PieceJoiner::add(BlobRecognition blob, const PartBuilder& builder) {
   std::vector<JoinedRecognition> out;
-  bool any_recognized = false;
-  for (const PartRecognition& part : blob.parts) {
-    if (part.pose.status != PoseStatus::kOk) continue;
-    any_recognized = true;
-    recent_.push_back(
-        {part.result.part, part.result.T_scanner_part, part.first_profile, part.last_profile});
-    if (recent_.size() > kRecentParts) recent_.pop_front();
-  }
-  // Held pieces this blob's parts explain are theirs; the others wait, or go out.
+  std::vector<Recognized> parts;
+  for (const PartRecognition& part : blob.parts)
+    if (part.pose.status == PoseStatus::kOk)
+      parts.push_back(
+          {part.result.part, part.result.T_scanner_part, part.first_profile, part.last_profile});
+  const bool any_recognized = !parts.empty();
+  const bool soft_linked = builder.has_soft_successor || builder.soft_link_of >= 0;
+  Piece current;
+  current.points_loop_mm = std::move(blob.points_loop_mm);
+  current.first_profile = builder.first_profile;
+  current.last_profile = builder.first_profile + builder.cosmos.rows() - 1;
+  current.recognized = any_recognized;
+  current.parts = parts;
+  bool drop_current = false;
+  // Held pieces: explained by this blob's parts, theirs; recognized too, the smaller of the
+  // two is a duplicate; the others wait, or go out.
   for (auto piece = held_.begin(); piece != held_.end();) {
-    const bool explained = any_recognized && explained_by_recent(*piece);
-    if (explained || ++piece->blobs_waited > kBlobsToWait) {
-      if (!explained) {
-        // Nearby held pieces none of which was recognized, alone or together: one part.
-        for (auto other = std::next(piece); other != held_.end();) {
-          if (!near(*piece, *other)) {
-            ++other;
-            continue;
-          }
-          other = held_.erase(other);
-        }
-        release(*piece, out);
+    bool drop = false;
+    if (any_recognized && near(*piece, current)) {
+      const bool held_explained = explained_by(piece->points_loop_mm, parts);
+      const bool current_explained =
+          piece->recognized && soft_linked && explained_by(current.points_loop_mm, piece->parts);
+      if (piece->recognized && (held_explained || current_explained)) {
+        (piece->points_loop_mm.size() < current.points_loop_mm.size() ? drop : drop_current) = true;
+      } else {
+        drop = held_explained;
       }
+    }
+    if (drop) {
+      piece = held_.erase(piece);
+    } else if (++piece->blobs_waited > kBlobsToWait) {
+      if (!piece->recognized) {
+        // Nearby held pieces none of which was recognized, alone or together: one part.
+        for (auto other = std::next(piece); other != held_.end();)
+          other =
+              !other->recognized && near(*piece, *other) ? held_.erase(other) : std::next(other);
+      }
+      release(*piece, out);
       piece = held_.erase(piece);
     } else {
       ++piece;
     }
   }
+  if (drop_current) return out;
+  if (soft_linked && any_recognized && !builder.truncated) {
+    // A part recognized in an earlier piece explains this one: a duplicate.
+    if (explained_by_recent(current)) return out;
+    if (builder.has_soft_successor) {
+      for (PartRecognition& part : blob.parts)
+        current.rejections.push_back({std::move(part), builder.completed_ns});
+      held_.push_back(std::move(current));
+      return out;
+    }
+  }
   // A softly linked blob with nothing recognized in it may be a piece: of a part already
   // recognized, or of one still to come.
-  const bool soft_linked = builder.has_soft_successor || builder.soft_link_of >= 0;
   if (soft_linked && !any_recognized && !blob.parts.empty() && !builder.truncated && !blob.merged) {
-    Piece piece;
-    piece.points_loop_mm = std::move(blob.points_loop_mm);
-    piece.first_profile = builder.first_profile;
-    piece.last_profile = builder.first_profile + builder.cosmos.rows() - 1;
-    piece.image = std::move(blob.image);
-    if (explained_by_recent(piece) || recognize_together(piece, builder, out)) return out;
+    current.image = std::move(blob.image);
+    if (explained_by_recent(current) || recognize_together(current, builder, out)) return out;
     for (PartRecognition& part : blob.parts)
-      piece.rejections.push_back({std::move(part), builder.completed_ns});
-    held_.push_back(std::move(piece));
+      current.rejections.push_back({std::move(part), builder.completed_ns});
+    held_.push_back(std::move(current));
     return out;
   }
+  for (const Recognized& part : parts) remember(part);
   for (PartRecognition& part : blob.parts) out.push_back({std::move(part), builder.completed_ns});
   return out;
 }
@@ -164,8 +198,9 @@ std::vector<JoinedRecognition> PieceJoiner::finish() {
   while (!held_.empty()) {
     Piece piece = std::move(held_.front());
     held_.pop_front();
-    for (auto other = held_.begin(); other != held_.end();)
-      other = near(piece, *other) ? held_.erase(other) : std::next(other);
+    if (!piece.recognized)
+      for (auto other = held_.begin(); other != held_.end();)
+        other = !other->recognized && near(piece, *other) ? held_.erase(other) : std::next(other);
     release(piece, out);
   }
   return out;

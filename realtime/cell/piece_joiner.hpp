@@ -9,7 +9,9 @@
 // share), the piece is that part's and is not reported. Pieces that nothing explains alone
 // are recognized together, as one range image of their surfaces (a part cut by its shadows
 // into pieces none of which is recognizable); what is left is reported: one rejection per
-// group of nearby pieces.
+// group of nearby pieces. A piece recognized on its own while the part it belongs to is
+// recognized too (two poses for one part) is a duplicate: of two softly linked blobs whose
+// parts explain each other, the smaller one's poses are dropped.
 #include <cstdint>
 #include <deque>
 #include <vector>
@@ -35,18 +37,22 @@ class PieceJoiner {
   std::vector<JoinedRecognition> finish();
 
  private:
-  struct Piece {
-    std::vector<JoinedRecognition> rejections;
-    std::vector<Eigen::Vector3d> points_loop_mm;
-    RangeImage image;
-    std::int64_t first_profile = 0, last_profile = 0;
-    int blobs_waited = 0;
-  };
   struct Recognized {
     int part = -1;
     RigidTransform T_loop_part;
     std::int64_t first_profile = 0, last_profile = 0;
   };
+  struct Piece {
+    std::vector<JoinedRecognition> rejections;  // or its poses, when recognized
+    bool recognized = false;
+    std::vector<Recognized> parts;  // recognized in it
+    std::vector<Eigen::Vector3d> points_loop_mm;
+    RangeImage image;
+    std::int64_t first_profile = 0, last_profile = 0;
+    int blobs_waited = 0;
+  };
+  bool explained_by(const std::vector<Eigen::Vector3d>& points,
+                    const std::vector<Recognized>& parts) const;
   bool explained_by_recent(const Piece& piece) const;
   bool near(const Piece& piece, const Recognized& part) const;
   bool near(const Piece& a, const Piece& b) const;
@@ -55,6 +61,7 @@ class PieceJoiner {
   bool recognize_together(const Piece& piece, const PartBuilder& builder,
                           std::vector<JoinedRecognition>& out);
   void release(Piece& piece, std::vector<JoinedRecognition>& out);
+  void remember(const Recognized& part);
 
   const PartRecognitionContext& context_;
   std::deque<Piece> held_;
