@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "apps/cell_model_base.hpp"
+#include "realtime/cell/part_recognition.hpp"
 #include "realtime/config/cell_config.hpp"
 #include "realtime/sources/scanner_source.hpp"
 #include "realtime/sources/stream_fault_log.hpp"
@@ -51,6 +52,17 @@ class CellWorld {
   // in profiles [first, last] ("" for none).
   bool has_ground_truth() const;
   std::string simulated_part_in(std::int64_t first_profile, std::int64_t last_profile) const;
+  // The placed part a pose (or a rejection) stands for, found by its position on the belt
+  // among the parts its profiles cross (so each of a blob's parts finds its own truth), and
+  // for a pose of that part its ADD-S error; placed_index -1 when none.
+  struct SimulatedTruth {
+    int placed_index = -1;
+    std::string name;
+    double add_s_mm = -1;  // -1: not an OK pose of the true part
+  };
+  SimulatedTruth simulated_truth_of(const PartRecognition& recognition,
+                                    const RigidTransform& T_cell_scanner, double mm_per_tick) const;
+  std::int64_t simulated_parts_placed() const;  // 0 without ground truth
   // A pose went out: a hardware source (real or on the twins) pulses result_ready for it.
   // Safe from the publisher thread (HardwareSource::announce_result).
   void announce_pose_published();

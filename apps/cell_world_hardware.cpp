@@ -76,6 +76,13 @@ bool CellWorld::has_ground_truth() const { return false; }
 
 std::string CellWorld::simulated_part_in(std::int64_t, std::int64_t) const { return ""; }
 
+CellWorld::SimulatedTruth CellWorld::simulated_truth_of(const PartRecognition&,
+                                                        const RigidTransform&, double) const {
+  return {};
+}
+
+std::int64_t CellWorld::simulated_parts_placed() const { return 0; }
+
 void CellWorld::announce_pose_published() {
   if (state_->hardware) state_->hardware->announce_result();
 }

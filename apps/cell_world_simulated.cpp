@@ -1,5 +1,7 @@
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <memory>
 
 #include "apps/cell_replay_source.hpp"
 #include "apps/cell_world.hpp"
@@ -12,6 +14,8 @@
 #include "realtime/sources/repeating_source.hpp"
 #include "realtime/sources/stream_checked_source.hpp"
 #include "scanner/simulated_mounting.hpp"
+#include "sim/evaluation/add_s_distance.hpp"
+#include "sim/mesh.hpp"
 #include "sim/model_base_build/catalog_content_hash.hpp"
 #include "sim/model_base_build/model_base_builder.hpp"
 #include "sim/model_base_build/model_base_parameters.hpp"
@@ -56,10 +60,13 @@ struct CellWorld::State {
   const SimulatedConveyor* conveyor = nullptr;  // the source's, when it has one
   HardwareSource* hardware = nullptr;           // the source's, when it is one
   std::int64_t repeat_profiles = 0;             // --repeat: profiles per pass of the belt
+  // Per catalog part, its mesh's vertices for ADD-S, loaded on first use.
+  mutable std::map<std::string, std::unique_ptr<AddSDistance>> add_s;
 };
 
 CellWorld::CellWorld(const CellConfig& config)
-    : state_(new State{config, read_part_catalog(config.cell.catalog), nullptr}) {}
+    : state_(new State{
+          config, read_part_catalog(config.cell.catalog), nullptr, nullptr, nullptr, {}}) {}
 
 CellWorld::~CellWorld() = default;
 
@@ -153,6 +160,37 @@ std::string CellWorld::simulated_part_in(std::int64_t first_profile,
   const PlacedSimPart* placed =
       state_->conveyor->placed_part_scanned_in(first_profile, last_profile);
   return placed ? placed->name : "";
+}
+
+CellWorld::SimulatedTruth CellWorld::simulated_truth_of(const PartRecognition& recognition,
+                                                        const RigidTransform& T_cell_scanner,
+                                                        double mm_per_tick) const {
+  SimulatedTruth truth;
+  if (!state_->conveyor) return truth;
+  const PartPose& pose = recognition.pose;
+  const RigidTransform T_belt_part = belt_pose_of(pose, T_cell_scanner, mm_per_tick);
+  const PlacedSimPart* placed = state_->conveyor->placed_part_at(
+      T_belt_part.translation_mm, recognition.first_profile, recognition.last_profile);
+  if (!placed) return truth;
+  truth.placed_index = static_cast<int>(placed - state_->conveyor->placed_parts().data());
+  truth.name = placed->name;
+  if (pose.status != PoseStatus::kOk || pose.part_name != placed->name) return truth;
+  std::unique_ptr<AddSDistance>& add_s = state_->add_s[placed->name];
+  if (!add_s) {
+    const PartEntry* entry = state_->catalog.find(placed->name);
+    if (!entry) return truth;
+    const TriangleMesh mesh = load_mesh(entry->mesh_path, entry->size_mm);
+    std::vector<Eigen::Vector3d> points_mm;
+    for (const Eigen::Vector3f& vertex : mesh.vertices) points_mm.push_back(vertex.cast<double>());
+    add_s = std::make_unique<AddSDistance>(points_mm);
+  }
+  const RigidPose true_pose{placed->T_belt_part.rotation(), placed->T_belt_part.translation()};
+  truth.add_s_mm = add_s->add_s_mm(true_pose, {T_belt_part.rotation, T_belt_part.translation_mm});
+  return truth;
+}
+
+std::int64_t CellWorld::simulated_parts_placed() const {
+  return state_->conveyor ? static_cast<std::int64_t>(state_->conveyor->placed_parts().size()) : 0;
 }
 
 void CellWorld::announce_pose_published() {

@@ -7,6 +7,8 @@
 #include <thread>
 
 #include "firmware_bridge/kernel_timestamp.hpp"
+#include "realtime/cell/blob_recognition.hpp"
+#include "realtime/cell/piece_joiner.hpp"
 #include "realtime/rt/deadline_pacer.hpp"
 #include "realtime/rt/latency_histogram.hpp"
 #include "realtime/rt/spsc_ring.hpp"
@@ -33,7 +35,7 @@ struct SharedStatus {
   // The source's last call timed out: the camera stalls while this lasts.
   std::atomic<bool> source_stalled{false};
   std::atomic<std::int64_t> time_p50_ns{0}, time_p99_ns{0}, time_max_ns{0};
-  std::atomic<std::int64_t> parts_recognized{0}, parts_rejected{0};
+  std::atomic<std::int64_t> parts_recognized{0}, parts_rejected{0}, blobs_merged{0};
   std::atomic<bool> fault{false};
   // The source's one line, written before `fault` is set (release) and read after it.
   std::array<char, 256> fault_reason{};
@@ -44,10 +46,24 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
                     SpscRing<CompletedPose>& poses, SharedStatus& status,
                     const CellRunSettings& settings) {
   std::int64_t part_seq = 0;
+  const auto publish = [&](JoinedRecognition&& joined) {
+    PartRecognition& recognition = joined.recognition;
+    recognition.pose.part_seq = part_seq++;
+    (recognition.pose.status == PoseStatus::kOk ? status.parts_recognized : status.parts_rejected)
+        .fetch_add(1, std::memory_order_relaxed);
+    CompletedPose completed{std::move(recognition), joined.completed_ns};
+    while (!poses.try_push(std::move(completed))) std::this_thread::sleep_for(kIdleWait);
+  };
+  PieceJoiner joiner(context);
   for (;;) {
+    // Parts the loop dropped are reported too (ERROR poses): none passes unannounced.
+    LostPart lost;
+    while (loop.lost_parts().try_pop(lost))
+      publish({report_lost_part(lost, context, 0), monotonic_now_ns()});
     int index = -1;
     if (!loop.completed().try_pop(index)) {
-      if (status.acquisition_done.load(std::memory_order_acquire) && loop.completed().empty())
+      if (status.acquisition_done.load(std::memory_order_acquire) && loop.completed().empty() &&
+          loop.lost_parts().empty())
         break;
       std::this_thread::sleep_for(kIdleWait);
       continue;
@@ -55,13 +71,13 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
     if (settings.recognizer_delay_ms > 0)
       std::this_thread::sleep_for(std::chrono::milliseconds(settings.recognizer_delay_ms));
     PartBuilder& builder = loop.builder(index);
-    CompletedPose completed{recognize_part(builder, context, part_seq++), builder.completed_ns};
-    (completed.recognition.pose.status == PoseStatus::kOk ? status.parts_recognized
-                                                          : status.parts_rejected)
-        .fetch_add(1, std::memory_order_relaxed);
+    BlobRecognition blob = recognize_blob(builder, context, 0);
+    status.blobs_merged.fetch_add(blob.merged ? 1 : 0, std::memory_order_relaxed);
+    std::vector<JoinedRecognition> ready = joiner.add(std::move(blob), builder);
     loop.returned().try_push(index);  // room for every builder: never full
-    while (!poses.try_push(std::move(completed))) std::this_thread::sleep_for(kIdleWait);
+    for (JoinedRecognition& joined : ready) publish(std::move(joined));
   }
+  for (JoinedRecognition& joined : joiner.finish()) publish(std::move(joined));
   status.recognizer_done.store(true, std::memory_order_release);
 }
 
@@ -101,6 +117,7 @@ CellStatus status_message(ScanLoop& loop, const SharedStatus& shared,
   status.parts_dropped = counters.parts_dropped;
   status.parts_truncated = counters.parts_truncated;
   status.runs_dropped = counters.runs_dropped;
+  status.blobs_merged = shared.blobs_merged;
   status.recognition_queue_depth = static_cast<std::int32_t>(loop.completed().size());
   status.publish_queue_depth = static_cast<std::int32_t>(poses.size());
   return status;

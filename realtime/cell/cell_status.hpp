@@ -43,6 +43,7 @@ struct CellStatus {
   std::int64_t parts_dropped = 0;
   std::int64_t parts_truncated = 0;
   std::int64_t runs_dropped = 0;
+  std::int64_t blobs_merged = 0;
 
   std::int32_t recognition_queue_depth = 0;
   std::int32_t publish_queue_depth = 0;
@@ -73,6 +74,8 @@ struct CellStatus {
     v("parts_truncated", self.parts_truncated, "parts longer than the builders' rows");
     v("runs_dropped", self.runs_dropped,
       "runs of data beyond the tracker's per-row or open limits");
+    v("blobs_merged", self.blobs_merged,
+      "blobs holding several parts (touching or not separated): one pose or rejection each");
   }
 };
 

@@ -19,9 +19,14 @@ struct PartPose {
   std::int64_t utime_us = 0;       // the part's last profile's t_us (source clock)
   std::int64_t part_seq = 0;       // running number of parts seen by the cell
   std::int64_t encoder_ticks = 0;  // encoder count at which T_cell_part holds (conveyor tracking)
-  std::string part_name;           // catalog name, empty when rejected
-  std::int32_t part_index = -1;    // catalog index, -1 when rejected
-  std::int32_t view_index = -1;    // matched model-base view, -1 when none
+  // The blob the pose comes from (a reject gate acts on it when there is no pose): encoder
+  // count of its first profile (encoder_ticks is its last's), and its bounding box on the belt
+  // (across, along, up), mm. A rejected part's translation is the blob's centre.
+  std::int64_t encoder_ticks_first = 0;
+  Eigen::Vector3d blob_extent_mm = Eigen::Vector3d::Zero();
+  std::string part_name;         // catalog name, empty when rejected
+  std::int32_t part_index = -1;  // catalog index, -1 when rejected
+  std::int32_t view_index = -1;  // matched model-base view, -1 when none
   PoseStatus status = PoseStatus::kRejected;
   std::string reason;  // why rejected or failed, empty when OK
 

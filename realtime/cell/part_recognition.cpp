@@ -25,11 +25,16 @@ RigidTransform T_belt_loop() {
 
 }  // namespace
 
-PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& context) {
+int part_view_first_column(const PartBuilder& builder) {
+  return std::max(0, builder.column_min - kColumnMargin);
+}
+
+PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& context,
+                           const std::vector<std::uint8_t>* excluded) {
   builder.cosmos.finish();
   const IncrementalCosmos& source = builder.cosmos;
   const int full_width = source.image().width();
-  const int c0 = std::max(0, builder.column_min - kColumnMargin);
+  const int c0 = part_view_first_column(builder);
   const int c1 = std::min(full_width - 1, builder.column_max + kColumnMargin);
   const int width = c1 - c0 + 1;
   const int height = source.rows();
@@ -52,7 +57,10 @@ PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& c
   };
   for (int row = 0; row < height; ++row) {
     const std::int64_t* labels = builder.labels.data() + static_cast<std::size_t>(row) * full_width;
-    for (int x = 0; x < width; ++x) owned_at(x, row) = builder.owns(labels[c0 + x]) ? 1 : 0;
+    for (int x = 0; x < width; ++x) {
+      const bool away = excluded && (*excluded)[static_cast<std::size_t>(row) * width + x] != 0;
+      owned_at(x, row) = !away && builder.owns(labels[c0 + x]) ? 1 : 0;
+    }
   }
   for (int row = 0; row < height; ++row) {
     for (int x = 0; x < width; ++x) {
@@ -80,18 +88,46 @@ PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& c
   return part;
 }
 
+RigidTransform cell_pose_of_belt(const RigidTransform& T_belt_part, std::int64_t encoder_ticks,
+                                 const PartRecognitionContext& context) {
+  return (context.T_cell_scanner * T_scanner_belt(encoder_ticks, context.mm_per_tick) * T_belt_part)
+      .normalized();
+}
+
+RigidTransform cell_pose_of(const RigidTransform& T_loop_part, const PartBuilder& builder,
+                            const PartRecognitionContext& context) {
+  return cell_pose_of_belt(T_belt_loop() * T_loop_part, builder.last_encoder_ticks, context);
+}
+
 PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContext& context,
                                std::int64_t part_seq) {
   const auto start = std::chrono::steady_clock::now();
   PartView part = extract_part_view(builder, context);
   const double features_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return recognize_part_view(part, builder, context, part_seq, features_ms);
+}
+
+PartRecognition recognize_part_view(const PartView& part, PartBuilder& builder,
+                                    const PartRecognitionContext& context, std::int64_t part_seq,
+                                    double features_ms) {
+  return recognition_of(
+      context.recognizer->recognize_analyzed(part.image, part.analysis, features_ms), builder,
+      context, part_seq);
+}
+
+PartRecognition recognition_of(RecognitionResult result, const PartBuilder& builder,
+                               const PartRecognitionContext& context, std::int64_t part_seq) {
   PartRecognition out;
-  out.result = context.recognizer->recognize_analyzed(part.image, part.analysis, features_ms);
+  out.result = std::move(result);
   PartPose& pose = out.pose;
   pose.utime_us = builder.last_t_us;
   pose.part_seq = part_seq;
   pose.encoder_ticks = builder.last_encoder_ticks;
+  pose.encoder_ticks_first = builder.first_encoder_ticks;
+  pose.blob_extent_mm =
+      Eigen::Vector3d((builder.column_max - builder.column_min + 1) * context.grid_mm,
+                      builder.cosmos.rows() * context.grid_mm, builder.max_z_mm);
   if (out.result.status == RecognitionStatus::kOk) {
     pose.status = PoseStatus::kOk;
     const auto base_part = static_cast<std::size_t>(out.result.part);
@@ -104,10 +140,6 @@ PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContex
   } else {
     pose.status = PoseStatus::kRejected;
     pose.reason = out.result.reason;
-  }
-  if (builder.truncated) {
-    pose.status = PoseStatus::kError;
-    pose.reason = "part longer than tracking.max_part_length_mm: its end was not scanned";
   }
   const StreamFaultKind fault =
       context.stream_faults
@@ -122,9 +154,7 @@ PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContex
   out.first_profile = builder.first_profile;
   out.last_profile = builder.first_profile + builder.cosmos.rows() - 1;
   const RigidTransform T_cell_part =
-      (context.T_cell_scanner * T_scanner_belt(builder.last_encoder_ticks, context.mm_per_tick) *
-       out.T_belt_part)
-          .normalized();
+      cell_pose_of_belt(out.T_belt_part, builder.last_encoder_ticks, context);
   pose.rotation_cell_part = Eigen::Quaterniond(T_cell_part.rotation);
   pose.translation_cell_part_mm = T_cell_part.translation_mm;
   pose.score = out.result.score;

@@ -24,6 +24,17 @@
 
 namespace cosmos {
 
+// How a blob that holds several parts is taken apart (blob_recognition.hpp).
+struct BlobRecognitionParameters {
+  // A blob pixel this close to a recognized part's surface is that part's, mm: a few times
+  // the registration's residual and the distance field's half-voxel error.
+  double explained_distance_mm = 3.0;
+  // What remains is another part when its interior area is at least this fraction of the
+  // median visible area of the base's views (CosmosView::visible_area_mm2).
+  double min_remaining_fraction = 0.15;
+  int max_parts_per_blob = 6;  // recognitions per blob at most
+};
+
 struct PartRecognitionContext {
   const Recognizer* recognizer = nullptr;
   const ModelBase* model_base = nullptr;
@@ -39,6 +50,7 @@ struct PartRecognitionContext {
   // The source's stream faults (stream_checked_source.hpp): a part whose rows span one is
   // published as ERROR. Null: unchecked.
   const StreamFaultLog* stream_faults = nullptr;
+  BlobRecognitionParameters blob;
 };
 
 // The part's range image and chapter-3 analysis in the loop frame.
@@ -50,7 +62,12 @@ struct PartView {
 // are drained here, on the recognizer's thread, rather than in the acquisition thread's
 // profile that completed the part: draining them is the work of many rows at once, far more
 // than one line period allows.
-PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& context);
+// `excluded` (the view's size, row-major; null: none): pixels also masked out, those that
+// parts already recognized in the blob explain (blob_recognition.hpp).
+PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& context,
+                           const std::vector<std::uint8_t>* excluded = nullptr);
+// The first loop-frame column of the view extract_part_view cuts out of the builder.
+int part_view_first_column(const PartBuilder& builder);
 
 struct PartRecognition {
   PartPose pose;
@@ -65,6 +82,20 @@ struct PartRecognition {
 };
 PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContext& context,
                                std::int64_t part_seq);
+// The same for a view already cut out (the blob's, or what remains of it once the parts
+// recognized in it are taken away); `features_ms` is the time its analysis took.
+PartRecognition recognize_part_view(const PartView& part, PartBuilder& builder,
+                                    const PartRecognitionContext& context, std::int64_t part_seq,
+                                    double features_ms);
+// The pose of a recognition result in the loop frame, at the builder's last encoder count.
+PartRecognition recognition_of(RecognitionResult result, const PartBuilder& builder,
+                               const PartRecognitionContext& context, std::int64_t part_seq);
+// T_cell_part for a pose in the builder's loop frame, at the builder's last encoder count.
+RigidTransform cell_pose_of(const RigidTransform& T_loop_part, const PartBuilder& builder,
+                            const PartRecognitionContext& context);
+// The same for a pose on the belt at encoder count e (the chain above).
+RigidTransform cell_pose_of_belt(const RigidTransform& T_belt_part, std::int64_t encoder_ticks,
+                                 const PartRecognitionContext& context);
 
 // T_belt_part from a pose of T_cell_part at encoder count e (the inverse of the chain above).
 RigidTransform belt_pose_of(const PartPose& pose, const RigidTransform& T_cell_scanner,

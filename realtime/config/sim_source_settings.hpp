@@ -30,6 +30,13 @@ struct SimulatedConveyorSettings {
   int parts = 20;             // parts in the stream, >= 1
   std::uint64_t seed = 7;     // part sequence, poses and offsets
   double part_gap_mm = 40.0;  // empty belt between bounding boxes, and before and after
+  // Layout (sim/source/part_layout.hpp): above part_gap_mm, each gap is drawn uniformly from
+  // [part_gap_mm, part_gap_max_mm]; side_by_side puts the parts in pairs across the belt,
+  // across_gap_mm apart (0: touching).
+  double part_gap_max_mm = 0.0;
+  int group_size = 1;  // parts per group touching end to end; groups part_gap_mm apart
+  bool side_by_side = false;
+  double across_gap_mm = 0.0;
   PoseMode pose = PoseMode::kRandom;
   // false: every part centred across the belt (x = 0); true: a seeded x offset that keeps
   // its bounding box at least edge_margin_mm inside the field of view at belt height.
@@ -43,8 +50,15 @@ struct SimulatedConveyorSettings {
   void visit(Visitor& v) {
     v("parts", parts, "parts sent down the belt, then the source ends", Range{1, 1000000});
     v("seed", seed, "the order, poses and placement of the parts");
-    v("part_gap_mm", part_gap_mm, "belt between consecutive parts' bounding boxes, mm",
-      Range::above(0, 1e4));
+    v("part_gap_mm", part_gap_mm,
+      "belt between consecutive parts' bounding boxes, mm (0: touching)", Range{0, 1e4});
+    v("part_gap_max_mm", part_gap_max_mm,
+      "above part_gap_mm: each gap seeded from [part_gap_mm, part_gap_max_mm], mm", Range{0, 1e4});
+    v("group_size", group_size, "parts per group touching end to end, groups part_gap_mm apart",
+      Range{1, 1000});
+    v("side_by_side", side_by_side, "parts in pairs across the belt");
+    v("across_gap_mm", across_gap_mm, "between a pair's bounding boxes across the belt, mm",
+      Range{0, 1e3});
     v("pose", pose, "random: any orientation; resting: settled on a face of its hull");
     v("random_x_offset", random_x_offset, "false: parts centred across the belt");
     v("edge_margin_mm", edge_margin_mm, "random offsets keep the part this far inside, mm",

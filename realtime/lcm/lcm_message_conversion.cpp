@@ -34,6 +34,9 @@ void to_message(const PartPose& pose, cosmos_lcm::part_pose_t& message) {
   message.score = pose.score;
   message.registration_rms_mm = pose.registration_rms_mm;
   message.latency_ms = pose.latency_ms;
+  message.encoder_ticks_first = pose.encoder_ticks_first;
+  for (int i = 0; i < 3; ++i)
+    message.blob_extent_m[i] = pose.blob_extent_mm[i] / kMillimetresPerMetre;
 }
 
 void from_message(const cosmos_lcm::part_pose_t& message, PartPose& pose) {
@@ -54,6 +57,9 @@ void from_message(const cosmos_lcm::part_pose_t& message, PartPose& pose) {
   pose.score = message.score;
   pose.registration_rms_mm = message.registration_rms_mm;
   pose.latency_ms = message.latency_ms;
+  pose.encoder_ticks_first = message.encoder_ticks_first;
+  for (int i = 0; i < 3; ++i)
+    pose.blob_extent_mm[i] = message.blob_extent_m[i] * kMillimetresPerMetre;
 }
 
 void to_message(const CellStatus& status, cosmos_lcm::cell_status_t& message) {
@@ -83,6 +89,7 @@ void to_message(const CellStatus& status, cosmos_lcm::cell_status_t& message) {
   message.parts_dropped = status.parts_dropped;
   message.parts_truncated = status.parts_truncated;
   message.runs_dropped = status.runs_dropped;
+  message.blobs_merged = status.blobs_merged;
 }
 
 void from_message(const cosmos_lcm::cell_status_t& message, CellStatus& status) {
@@ -112,6 +119,7 @@ void from_message(const cosmos_lcm::cell_status_t& message, CellStatus& status) 
   status.parts_dropped = message.parts_dropped;
   status.parts_truncated = message.parts_truncated;
   status.runs_dropped = message.runs_dropped;
+  status.blobs_merged = message.blobs_merged;
 }
 
 void to_message(const Profile& profile, cosmos_lcm::range_profile_t& message) {

@@ -2,11 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace cosmos {
 
 PartTracker::PartTracker(const PartTrackerParameters& parameters, int width)
-    : parameters_(parameters), width_(width), labels_(width, -1) {
+    : parameters_(parameters),
+      width_(width),
+      labels_(width, -1),
+      belt_row_(width, -1),
+      scratch_(width, -1) {
   previous_runs_.reserve(parameters.max_runs_per_row);
   runs_.reserve(parameters.max_runs_per_row);
   open_.reserve(parameters.max_open_parts);
@@ -30,11 +35,15 @@ void PartTracker::merge(std::int64_t keep, std::int64_t absorbed) {
   TrackedPart& kept = open_[open_index(keep)];
   const int index = open_index(absorbed);
   TrackedPart gone = open_[index];
+  if (gone.first_row < kept.first_row) kept.leading_z_mm = gone.leading_z_mm;
+  if (kept.soft_link_of < 0) kept.soft_link_of = gone.soft_link_of;
+  kept.has_soft_successor = kept.has_soft_successor || gone.has_soft_successor;
   kept.first_row = std::min(kept.first_row, gone.first_row);
   kept.column_min = std::min(kept.column_min, gone.column_min);
   kept.column_max = std::max(kept.column_max, gone.column_max);
   kept.last_row = std::max(kept.last_row, gone.last_row);
   kept.pixels += gone.pixels;
+  kept.max_z_mm = std::max(kept.max_z_mm, gone.max_z_mm);
   gone.merged_into = keep;
   completed_.push_back(gone);
   open_.erase(open_.begin() + index);  // no allocation: erase within capacity
@@ -45,14 +54,39 @@ bool PartTracker::idle(const TrackedPart& part, std::int64_t row_index) const {
   return row_index - part.last_row > parameters_.link_gap_rows;
 }
 
+std::int64_t PartTracker::shadow_rows(float z_mm) const {
+  // 15 % and 4 rows: the camera's perspective lengthens the shadow of a feature off its axis,
+  // and the leading rows seen need not hold the very edge that casts it.
+  constexpr double kSlack = 1.15;
+  constexpr double kMarginRows = 4;
+  return static_cast<std::int64_t>(
+      std::ceil(static_cast<double>(z_mm) * parameters_.shadow_rows_per_mm * kSlack + kMarginRows));
+}
+
+std::int64_t PartTracker::belt_seen_row(int begin, int end) {
+  const int n = end - begin;
+  if (n <= 0) return -1;
+  std::copy(belt_row_.begin() + begin, belt_row_.begin() + end, scratch_.begin());
+  const auto kth = scratch_.begin() + (n * 3) / 10;  // 70 % of the columns are at least this
+  std::nth_element(scratch_.begin(), kth, scratch_.begin() + n, std::greater<>());
+  return *kth;
+}
+
 bool PartTracker::footprints_overlap(const TrackedPart& a, const TrackedPart& b) const {
   const int columns = parameters_.link_gap_columns + 1;
-  const std::int64_t rows = parameters_.link_gap_rows + 1;
+  std::int64_t rows = parameters_.link_gap_rows + 1;
+  if (parameters_.shadow_rows_per_mm > 0) {
+    // One after the other: joined only across what the later one's leading end shadows.
+    // Only pieces side by side (sharing rows) join here: one after the other, a gap lies
+    // between them, which the soft links judge (add_row).
+    rows = 1;
+  }
   return a.column_min <= b.column_max + columns && b.column_min <= a.column_max + columns &&
          a.first_row <= b.last_row + rows && b.first_row <= a.last_row + rows;
 }
 
-const std::vector<TrackedPart>& PartTracker::add_row(const float* z_mm, std::int64_t row_index) {
+const std::vector<TrackedPart>& PartTracker::add_row(const float* z_mm, std::int64_t row_index,
+                                                     const std::uint8_t* belt) {
   completed_.clear();
   merges_.clear();
   runs_.clear();
@@ -86,10 +120,29 @@ const std::vector<TrackedPart>& PartTracker::add_row(const float* z_mm, std::int
     }
     // Shadows and dropouts split one part's surface: a run near a part seen in the last
     // link_gap_rows rows (within its column extent and link_gap_columns) belongs to it.
+    float run_z_mm = 0;
+    if (parameters_.shadow_rows_per_mm > 0)
+      for (int c = run.begin; c < run.end; ++c) run_z_mm = std::max(run_z_mm, z_mm[c]);
+    std::int64_t soft_link = -1;
     for (std::size_t k = 0; run.part < 0 && k < open_.size(); ++k) {
-      const TrackedPart& part = open_[k];
+      TrackedPart& part = open_[k];
       if (row_index - part.last_row > parameters_.link_gap_rows + 1) continue;
+      // Only as far as this run's height can have shadowed: a longer gap is belt.
+      if (parameters_.shadow_rows_per_mm > 0 &&
+          row_index - part.last_row - 1 > shadow_rows(run_z_mm))
+        continue;
+      // Nor across belt seen in front of the run since the part's last row.
+      if (belt && row_index - part.last_row > 1 &&
+          belt_seen_row(run.begin, run.end) > part.last_row)
+        continue;
       if (part.column_max + gap < run.begin || run.end - 1 + gap < part.column_min) continue;
+      // A gap longer than a dropout: a soft link, the run starts a piece of its own.
+      if (parameters_.shadow_rows_per_mm > 0 &&
+          row_index - part.last_row - 1 > parameters_.hard_link_gap_rows) {
+        if (soft_link < 0) soft_link = part.id;
+        part.has_soft_successor = true;
+        continue;
+      }
       run.part = part.id;
     }
     if (run.part < 0) {
@@ -102,6 +155,7 @@ const std::vector<TrackedPart>& PartTracker::add_row(const float* z_mm, std::int
       part.first_row = row_index;
       part.column_min = run.begin;
       part.column_max = run.end - 1;
+      part.soft_link_of = soft_link;
       open_.push_back(part);
       run.part = part.id;
     }
@@ -116,6 +170,11 @@ const std::vector<TrackedPart>& PartTracker::add_row(const float* z_mm, std::int
     part.column_min = std::min(part.column_min, run.begin);
     part.column_max = std::max(part.column_max, run.end - 1);
     part.pixels += run.end - run.begin;
+    const bool leading = row_index - part.first_row < kLeadingRows;
+    for (int c = run.begin; c < run.end; ++c) {
+      part.max_z_mm = std::max(part.max_z_mm, z_mm[c]);
+      if (leading) part.leading_z_mm = std::max(part.leading_z_mm, z_mm[c]);
+    }
     std::fill(labels_.begin() + run.begin, labels_.begin() + run.end, run.part);
   }
   // A part no row has touched for link_gap_rows is complete, unless its footprint overlaps
@@ -139,6 +198,9 @@ const std::vector<TrackedPart>& PartTracker::add_row(const float* z_mm, std::int
     completed_.push_back(done);
     open_.erase(open_.begin() + static_cast<long>(k));
   }
+  if (belt)
+    for (int c = 0; c < width_; ++c)
+      if (belt[c]) belt_row_[static_cast<std::size_t>(c)] = row_index;
   std::sort(completed_.begin(), completed_.end(),
             [](const TrackedPart& a, const TrackedPart& b) { return a.id < b.id; });
   std::swap(previous_runs_, runs_);

@@ -23,6 +23,18 @@ struct PartTrackerParameters {
   // surface into pieces a few millimetres apart. 0: only touching runs continue a part.
   int link_gap_rows = 0;
   std::int64_t min_pixels = 50;  // smaller completed components are noise
+  // The camera's occlusion shadow, rows of belt per mm of height (tan of the triangulation
+  // angle over the belt step; the scan loop sets it from the scanner, it is no config key).
+  // Above 0, pieces link across no-data rows only as far as a shadow can reach: the shadow
+  // lies downstream of (in rows before) the feature that casts it, so a run after a gap
+  // of g rows continues a part only if its height could have shadowed g rows, and two
+  // a longer gap, or belt seen in it, is two parts. Pieces a shadow can join are linked
+  // softly (TrackedPart::soft_link_of), not merged. 0: the fixed link_gap_rows alone.
+  double shadow_rows_per_mm = 0;
+  // With shadow_rows_per_mm: gaps of up to this many rows join outright (dropouts, a part's
+  // shadow-cut pieces close together); longer ones link softly. Below the gap of parts that
+  // must come out separate (2 mm: 5 rows at 0.4 mm).
+  int hard_link_gap_rows = 2;
 
   template <class Visitor>
   void visit(Visitor& v) {
@@ -33,6 +45,10 @@ struct PartTrackerParameters {
     v("link_gap_columns", link_gap_columns, "runs this many columns apart still touch",
       Range{0, 65536});
     v("link_gap_rows", link_gap_rows, "rows a part stays open without data", Range{0, 65536});
+    v("hard_link_gap_rows", hard_link_gap_rows,
+      "no-data rows a part's pieces join across outright; longer gaps its shadow explains "
+      "link softly (kept apart until recognition)",
+      Range{0, 65536});
     v("min_pixels", min_pixels, "smaller completed components are noise",
       Range{0, 1099511627776.0});  // 2^40
   }
@@ -45,16 +61,26 @@ struct TrackedPart {
   int column_min = 0;
   int column_max = 0;
   std::int64_t pixels = 0;
+  float max_z_mm = 0;      // highest sample above the belt
+  float leading_z_mm = 0;  // highest sample of its first kLeadingRows rows
+  // With shadow_rows_per_mm: the earlier piece this one may continue across a gap its own
+  // leading end can have shadowed (-1 none), and whether a later piece links to this one.
+  // Pieces so linked stay separate parts: only recognition can tell a part's shadow-cut
+  // piece from a neighbour whose leading end shadows the part before it.
+  std::int64_t soft_link_of = -1;
+  bool has_soft_successor = false;
   std::int64_t merged_into = -1;  // completed by merging into this part
   bool noise = false;             // fewer than min_pixels
 };
 
 // The cell's tracking: pieces of one part up to 25 columns (10 mm) and 75 rows (30 mm) apart
-// are one part. Along the belt the camera's occlusion shadow behind a raised feature is up to
-// its height x tan(triangulation angle): an elephant's trunk 50 mm up at 30 degrees is cut off
-// from the body by ~29 mm of no data. Parts on the belt must therefore lie further apart than
-// that (the simulated conveyor's default part gap is 40 mm); the price is that a part
-// completes 30 mm of belt after its last row.
+// are one part. Along the belt the camera's occlusion shadow in front of a raised feature is up
+// to its height x tan(triangulation angle): an elephant's trunk 50 mm up at 30 degrees is cut
+// off from the body by ~29 mm of no data. With shadow_rows_per_mm (the cell's scan loop sets
+// it) a gap joins only what such a shadow can explain, so parts a few millimetres apart with
+// low leading ends come out separate; parts whose leading end shadows the part before them are
+// one blob, which scene-level recognition takes apart (realtime/cell/blob_recognition.hpp).
+// The price of the 30 mm is that a part completes 30 mm of belt after its last row.
 inline PartTrackerParameters cell_part_tracking() {
   PartTrackerParameters parameters;
   parameters.link_gap_columns = 25;
@@ -64,11 +90,17 @@ inline PartTrackerParameters cell_part_tracking() {
 
 class PartTracker {
  public:
+  // The rows at a part's downstream end whose height casts the shadow in front of it.
+  static constexpr int kLeadingRows = 8;
+
   PartTracker(const PartTrackerParameters& parameters, int width);
 
   // Labels the row's data pixels (non-NaN) with their part id; returns the parts completed
   // by this row (valid until the next call).
-  const std::vector<TrackedPart>& add_row(const float* z_mm, std::int64_t row_index);
+  // `belt` (optional, one flag per column): where the belt itself was seen. With it, no-data
+  // rows are a shadow only where no belt showed: a part never links across belt.
+  const std::vector<TrackedPart>& add_row(const float* z_mm, std::int64_t row_index,
+                                          const std::uint8_t* belt = nullptr);
 
   const std::vector<std::int64_t>& row_labels() const { return labels_; }  // -1: background
   const std::vector<TrackedPart>& open_parts() const { return open_; }
@@ -85,6 +117,11 @@ class PartTracker {
   void merge(std::int64_t keep, std::int64_t absorbed);
   bool idle(const TrackedPart& part, std::int64_t row_index) const;
   bool footprints_overlap(const TrackedPart& a, const TrackedPart& b) const;
+  // Rows of no data a feature of height z_mm can shadow in front of it (shadow_rows_per_mm
+  // with a margin for the perspective and the height of the surface it falls on).
+  std::int64_t shadow_rows(float z_mm) const;
+  // A row by which belt showed in most (70 %) of columns [begin, end): -1 none.
+  std::int64_t belt_seen_row(int begin, int end);
 
   PartTrackerParameters parameters_;
   int width_;
@@ -92,6 +129,8 @@ class PartTracker {
   std::vector<Run> previous_runs_, runs_;
   std::vector<TrackedPart> open_, completed_;
   std::vector<std::int64_t> labels_;
+  std::vector<std::int64_t> belt_row_;  // per column: the last row that showed belt, -1 none
+  std::vector<std::int64_t> scratch_;   // width, for belt_seen_row
   std::vector<std::pair<std::int64_t, std::int64_t>> merges_;  // absorbed -> kept, this row
   std::int64_t dropped_runs_ = 0;
 };

@@ -30,11 +30,13 @@ constexpr double kMaxOriginMm = 1e6;
 
 }  // namespace
 
-bool ProfileConditioner::condition(const Profile& profile, float* out_z_mm) const {
+bool ProfileConditioner::condition(const Profile& profile, float* out_z_mm,
+                                   std::uint8_t* out_belt) const {
   // Written as "not inside" so that NaN fails too.
   if (!(profile.dx_mm >= kMinSpacingMm && profile.dx_mm <= kMaxSpacingMm) ||
       !(std::abs(profile.x0_mm) <= kMaxOriginMm)) {
     std::fill(out_z_mm, out_z_mm + width_, std::numeric_limits<float>::quiet_NaN());
+    if (out_belt) std::fill(out_belt, out_belt + width_, std::uint8_t{0});
     return false;
   }
   if (profile.dx_mm < parameters_.grid_mm) {
@@ -48,7 +50,8 @@ bool ProfileConditioner::condition(const Profile& profile, float* out_z_mm) cons
     const double x = parameters_.x_min_mm + k * parameters_.grid_mm;
     const float height =
         out_z_mm[k] - static_cast<float>(parameters_.belt_height_mm + parameters_.belt_slope_x * x);
-    out_z_mm[k] = height >= threshold ? height : nan;  // NaN compares false: stays NaN
+    if (out_belt) out_belt[k] = height < threshold ? 1 : 0;  // NaN compares false: no data
+    out_z_mm[k] = height >= threshold ? height : nan;        // NaN compares false: stays NaN
   }
   return true;
 }

@@ -36,6 +36,25 @@ namespace cosmos {
 
 inline constexpr int kMaxMergedIds = 16;
 
+// A part the loop could not hand to the recognizer. It is still reported (an ERROR pose:
+// a robot or reject gate must learn that something passed), with what the tracker knows.
+enum class LostPartReason : std::uint8_t {
+  kNoBuilder,  // it started while every builder was taken
+  kQueueFull,  // it completed while the recognizer's queue was full
+};
+
+struct LostPart {
+  LostPartReason reason = LostPartReason::kNoBuilder;
+  std::int64_t first_profile = 0;  // the source's profile indices of its first and last rows
+  std::int64_t last_profile = 0;
+  std::int64_t first_encoder_ticks = 0;
+  std::int64_t last_encoder_ticks = 0;
+  std::int64_t last_t_us = 0;
+  int column_min = 0;  // loop-frame columns
+  int column_max = 0;
+  float max_z_mm = 0;
+};
+
 // One part's incremental COSMOS and what the recognizer needs besides it.
 struct PartBuilder {
   PartBuilder(const CosmosParameters& cosmos, int width, int max_rows, double grid_mm);
@@ -46,10 +65,17 @@ struct PartBuilder {
   std::array<std::int64_t, kMaxMergedIds> merged_ids{};  // ids merged into this part
   int merged_count = 0;
   std::int64_t first_profile = 0;  // the source's profile index of row 0
+  std::int64_t first_encoder_ticks = 0;
   std::int64_t last_encoder_ticks = 0;
   std::int64_t last_t_us = 0;  // exposure time of the part's last row (data time)
   int column_min = 0;          // the tracked part's extent, loop-frame columns
   int column_max = 0;
+  float max_z_mm = 0;  // the tracked part's highest sample
+  // The tracker's soft links (PartTrackerParameters::shadow_rows_per_mm): the earlier piece
+  // (tracker id) this one may continue, and whether a later piece may continue this one.
+  std::int64_t soft_link_of = -1;
+  bool has_soft_successor = false;
+  std::int64_t tracked_rows = 0;  // rows from its first to its last data (all, when truncated)
   bool truncated = false;         // longer than max_rows: rows dropped
   std::int64_t completed_ns = 0;  // monotonic clock when the tracker completed it
 
@@ -64,6 +90,9 @@ struct PartQueueSettings {
   // bench/scan_loop_bench.cpp counts parts_dropped at the default cell's pace).
   int builders = 8;
   int part_queue_slots = 8;  // loop -> recognizer completed parts
+  // Parts lost for want of a builder or queue slot, queued for their ERROR poses: fixed
+  // capacity (the hot path never allocates); beyond it a loss is only counted.
+  static constexpr int kLostPartSlots = 64;
 
   template <class Visitor>
   void visit(Visitor& v) {
@@ -78,6 +107,11 @@ struct ScanLoopSettings {
   PartTrackerParameters tracking = cell_part_tracking();
   CosmosParameters cosmos;
   int max_part_rows = 750;  // 300 mm at 0.4 mm
+  // tan of the scanner's triangulation angle: the camera's occlusion shadow in front of a
+  // feature, mm of belt per mm of height, which the tracker's links across gaps respect
+  // (PartTrackerParameters::shadow_rows_per_mm). The default is the default scanner's 30°;
+  // 0 keeps the fixed link_gap_rows alone.
+  double shadow_length_per_height = 0.5773502691896257;
   PartQueueSettings parts;
   // false (paced and hardware sources): a part that finds no free builder or queue slot is
   // dropped and counted. true (unpaced test and replay runs, no deadlines to keep): the loop
@@ -89,6 +123,7 @@ struct ScanLoopCounters {
   std::atomic<std::int64_t> profiles{0};
   std::atomic<std::int64_t> parts_seen{0};
   std::atomic<std::int64_t> parts_dropped{0};    // no free builder or queue slot
+  std::atomic<std::int64_t> lost_unreported{0};  // dropped while lost_parts() was full
   std::atomic<std::int64_t> parts_truncated{0};  // longer than max_part_rows
   std::atomic<std::int64_t> noise_components{0};
   std::atomic<std::int64_t> profiles_refused{0};  // the conditioner refused its grid
@@ -108,6 +143,9 @@ class ScanLoop {
   // be finished: extract_part_view does it on the recognizer's thread), and their return.
   SpscRing<int>& completed() { return completed_; }
   SpscRing<int>& returned() { return returned_; }
+  // Parts dropped for want of a builder or a queue slot, each to be reported as an ERROR
+  // pose by the recognizer's thread (report_lost_part, part_recognition.hpp).
+  SpscRing<LostPart>& lost_parts() { return lost_; }
   PartBuilder& builder(int index) { return *builders_[static_cast<std::size_t>(index)]; }
   const ScanLoopCounters& counters() const { return counters_; }
   int width() const { return conditioner_.width(); }
@@ -120,6 +158,20 @@ class ScanLoop {
   void start_parts(std::int64_t profile_index, const Profile& profile);
   void complete(const TrackedPart& part);
   int builder_of(std::int64_t id) const;
+  void report_lost(const LostPart& lost);
+  // The source's profile, encoder count and exposure time of a recent row (within the
+  // tracker's link_gap_rows + 2: a part completes that many rows after its last).
+  struct RowStamp {
+    std::int64_t profile = 0;
+    std::int64_t encoder_ticks = 0;
+    std::int64_t t_us = 0;
+  };
+  RowStamp& stamp_of_row(std::int64_t row);
+  // Parts that started without a builder, until the tracker completes them.
+  struct UnbuiltPart {
+    std::int64_t id = -1;
+    RowStamp first;
+  };
 
   ScanLoopSettings settings_;
   ProfileConditioner conditioner_;
@@ -129,8 +181,12 @@ class ScanLoop {
   std::vector<int> open_builders_;  // builders of open parts
   SpscRing<int> completed_;
   SpscRing<int> returned_;
-  std::vector<float> row_belt_;  // conditioned, belt column order
-  std::vector<float> row_loop_;  // mirrored into the loop frame
+  SpscRing<LostPart> lost_;
+  std::vector<UnbuiltPart> unbuilt_;     // capacity: the tracker's max_open_parts
+  std::vector<RowStamp> row_stamps_;     // ring over the last rows
+  std::vector<float> row_belt_;          // conditioned, belt column order
+  std::vector<float> row_loop_;          // mirrored into the loop frame
+  std::vector<std::uint8_t> belt_seen_;  // conditioned, belt column order: belt measured
   std::int64_t row_index_ = 0;
   ScanLoopCounters counters_;
 };

@@ -8,6 +8,7 @@
 #include "core/input_error.hpp"
 #include "sim/part_pose.hpp"
 #include "sim/seeded_random.hpp"
+#include "sim/source/part_layout.hpp"
 
 namespace cosmos {
 namespace {
@@ -15,12 +16,16 @@ namespace {
 // Independent random streams from the one settings seed.
 constexpr std::uint64_t kSequenceStream = 0x5E9;
 constexpr std::uint64_t kPoseStream = 0x9053;
-constexpr std::uint64_t kOffsetStream = 0x0FF5E7;
 
 void check_settings(const SimulatedConveyorSettings& settings) {
   if (settings.parts < 1) throw std::invalid_argument("simulated source: parts must be >= 1");
-  if (!std::isfinite(settings.part_gap_mm) || settings.part_gap_mm <= 0.0) {
-    throw std::invalid_argument("simulated source: part_gap_mm must be > 0");
+  if (!std::isfinite(settings.part_gap_mm) || settings.part_gap_mm < 0.0) {
+    throw std::invalid_argument("simulated source: part_gap_mm must be >= 0");
+  }
+  if (!std::isfinite(settings.part_gap_max_mm) || !std::isfinite(settings.across_gap_mm) ||
+      settings.across_gap_mm < 0.0) {
+    throw std::invalid_argument(
+        "simulated source: part_gap_max_mm and across_gap_mm must be finite, across_gap_mm >= 0");
   }
   if (!std::isfinite(settings.edge_margin_mm) || settings.edge_margin_mm < 0.0) {
     throw std::invalid_argument("simulated source: edge_margin_mm must be >= 0");
@@ -123,27 +128,24 @@ void SimulatedConveyor::build(const std::vector<const SimPartModel*>& models,
   scene_ = std::make_unique<ConveyorScene>();
   std::vector<int> scene_mesh(models.size(), -1);
   const double step_mm = parameters_.profile_step_mm();
-  const double half_field_mm = 0.5 * parameters_.field_of_view_mm;
-  // The downstream (+y) end of the next part: part 0 after an empty lead-in.
-  double next_y_max_mm = -settings.part_gap_mm;
+  std::vector<Eigen::Matrix3d> rotations;
+  std::vector<Eigen::Vector3d> box_sizes_mm;
+  for (std::size_t i = 0; i < picks.size(); ++i) {
+    const SimPartModel& model = *models[picks[i]];
+    const std::uint64_t pose_seed = mix_seed(mix_seed(settings.seed, kPoseStream), i);
+    rotations.push_back(settings.pose == PoseMode::kResting
+                            ? resting_rotation(model.mesh, pose_seed)
+                            : random_rotation(pose_seed));
+    box_sizes_mm.push_back(rotated_box(model.mesh, rotations.back()).sizes());
+  }
+  const std::vector<PartPlacement> placements =
+      lay_out_parts(box_sizes_mm, settings, 0.5 * parameters_.field_of_view_mm);
   for (std::size_t i = 0; i < picks.size(); ++i) {
     const SimPartModel& model = *models[picks[i]];
     if (scene_mesh[picks[i]] < 0) scene_mesh[picks[i]] = scene_->add_mesh(model.mesh);
-    const std::uint64_t pose_seed = mix_seed(mix_seed(settings.seed, kPoseStream), i);
-    const Eigen::Matrix3d R_belt_part = settings.pose == PoseMode::kResting
-                                            ? resting_rotation(model.mesh, pose_seed)
-                                            : random_rotation(pose_seed);
-    const Eigen::AlignedBox3d box = rotated_box(model.mesh, R_belt_part);
-    double x_mm = 0.0;
-    if (settings.random_x_offset) {
-      const double reach_mm =
-          std::max(0.0, half_field_mm - 0.5 * box.sizes().x() - settings.edge_margin_mm);
-      SeededRandom offset(mix_seed(mix_seed(settings.seed, kOffsetStream), i));
-      x_mm = reach_mm * (2.0 * offset.uniform() - 1.0);
-    }
-    const double y_mm = next_y_max_mm - 0.5 * box.sizes().y();
-    const int part = scene_->add_part(model.name, scene_mesh[picks[i]],
-                                      place_on_belt(model.mesh, R_belt_part, x_mm, y_mm));
+    const int part = scene_->add_part(
+        model.name, scene_mesh[picks[i]],
+        place_on_belt(model.mesh, rotations[i], placements[i].x_mm, placements[i].y_mm));
     const PlacedPart& placed = scene_->parts()[static_cast<std::size_t>(part)];
     PlacedSimPart truth;
     truth.catalog_index = model.catalog_index;
@@ -156,12 +158,14 @@ void SimulatedConveyor::build(const std::vector<const SimPartModel*>& models,
     truth.last_profile =
         static_cast<std::int64_t>(std::floor(-placed.bounds_mm.min().y() / step_mm));
     placed_.push_back(truth);
-    next_y_max_mm = placed.bounds_mm.min().y() - settings.part_gap_mm;
   }
   scene_->commit();
   // The tolerance keeps a gap of a whole number of steps from gaining one through rounding.
-  last_profile_ = placed_.back().last_profile +
-                  static_cast<std::int64_t>(std::ceil(settings.part_gap_mm / step_mm - 1e-9));
+  std::int64_t last_part_profile = 0;
+  for (const PlacedSimPart& part : placed_)
+    last_part_profile = std::max(last_part_profile, part.last_profile);
+  last_profile_ = last_part_profile +
+                  static_cast<std::int64_t>(std::ceil(lead_in_mm(settings) / step_mm - 1e-9));
 }
 
 const PlacedSimPart* SimulatedConveyor::placed_part_scanned_in(std::int64_t first_profile,
@@ -174,6 +178,29 @@ const PlacedSimPart* SimulatedConveyor::placed_part_scanned_in(std::int64_t firs
     if (overlap > best_overlap) {
       best = &part;
       best_overlap = overlap;
+    }
+  }
+  return best;
+}
+
+}  // namespace cosmos
+
+namespace cosmos {
+
+const PlacedSimPart* SimulatedConveyor::placed_part_at(const Eigen::Vector3d& point_belt_mm,
+                                                       std::int64_t first_profile,
+                                                       std::int64_t last_profile) const {
+  const PlacedSimPart* best = nullptr;
+  double best_distance_mm = 0;
+  for (const PlacedSimPart& part : placed_) {
+    if (part.last_profile < first_profile || part.first_profile > last_profile) continue;
+    // A pose's position is the part frame's origin, a rejection's a centroid of surface:
+    // both lie in or near the part's box, and the origin tells touching parts apart.
+    const double distance_mm = std::sqrt(part.bounds_mm.squaredExteriorDistance(point_belt_mm)) +
+                               (part.T_belt_part.translation() - point_belt_mm).norm();
+    if (!best || distance_mm < best_distance_mm) {
+      best = &part;
+      best_distance_mm = distance_mm;
     }
   }
   return best;

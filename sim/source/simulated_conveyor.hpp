@@ -10,8 +10,9 @@
 // pose in the scanner frame is then T_scanner_part = Translation(0, s, 0) · T_belt_part. The
 // laser sheet of profile k lies at y_belt = −k · Δy, so the parts are placed at decreasing
 // y_belt in sequence order: part 0 meets the sheet first. The stream is profiles
-// k = 0 … last_profile(): an empty lead-in of part_gap_mm, the parts each part_gap_mm apart
-// (bounding box to bounding box, along y), and a trailing part_gap_mm of empty belt.
+// k = 0 … last_profile(): an empty lead-in, the parts as part_layout.hpp lays them out
+// (by default each part_gap_mm apart, bounding box to bounding box, along y), and as much
+// trailing empty belt.
 //
 // Determinism: the part sequence, each part's rotation and across-belt offset come from
 // settings.seed alone.
@@ -70,6 +71,11 @@ class SimulatedConveyor {
   // not part_seq, pairs a pose with its truth.
   const PlacedSimPart* placed_part_scanned_in(std::int64_t first_profile,
                                               std::int64_t last_profile) const;
+  // Of the placed parts that profiles first_profile … last_profile cross, the one nearest to
+  // point_belt_mm (a pose's or a rejection's position on the belt; distance to its box plus
+  // to its origin): pairs each of a blob's parts with its truth, side by side ones too.
+  const PlacedSimPart* placed_part_at(const Eigen::Vector3d& point_belt_mm,
+                                      std::int64_t first_profile, std::int64_t last_profile) const;
   // The last profile index of the stream.
   std::int64_t last_profile() const { return last_profile_; }
   const ScannerParameters& parameters() const { return parameters_; }

@@ -34,6 +34,8 @@ inline PartPose sample_pose(std::int64_t part_seq) {
   pose.score = 0.93;
   pose.registration_rms_mm = 0.08;
   pose.latency_ms = 14.2;
+  pose.encoder_ticks_first = 39'000 + 1000 * part_seq;
+  pose.blob_extent_mm = Eigen::Vector3d(61.5, 88.25, 30.5);
   return pose;
 }
 
@@ -99,6 +101,9 @@ inline void expect_same_pose(const PartPose& expected, const PartPose& actual) {
   EXPECT_EQ(actual.score, expected.score);
   EXPECT_EQ(actual.registration_rms_mm, expected.registration_rms_mm);
   EXPECT_EQ(actual.latency_ms, expected.latency_ms);
+  EXPECT_EQ(actual.encoder_ticks_first, expected.encoder_ticks_first);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(actual.blob_extent_mm[i], expected.blob_extent_mm[i], 1e-12) << i;
 }
 
 inline void expect_same_status(const CellStatus& expected, const CellStatus& actual) {

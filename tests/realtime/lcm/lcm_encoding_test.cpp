@@ -41,7 +41,8 @@ TEST(LcmEncoding, PoseBytesDependOnlyOnTheInput) {
   const auto first = encoded(testing::sample_pose(4), cosmos_lcm::part_pose_t{});
   const auto second = encoded(testing::sample_pose(4), cosmos_lcm::part_pose_t{});
   // hash 8 + 3 int64 + name (4 + 7 + 1) + 2 int32 + int8 + reason (4 + 0 + 1) + 10 doubles
-  EXPECT_EQ(first.size(), 8U + 24U + 12U + 8U + 1U + 5U + 80U);
+  // + the blob's first encoder count (int64) and extent (3 doubles)
+  EXPECT_EQ(first.size(), 8U + 24U + 12U + 8U + 1U + 5U + 80U + 8U + 24U);
   EXPECT_EQ(first, second);
   EXPECT_EQ(reencoded<cosmos_lcm::part_pose_t>(first), first);
   EXPECT_NE(encoded(testing::sample_pose(5), cosmos_lcm::part_pose_t{}), first);
@@ -57,8 +58,8 @@ TEST(LcmEncoding, QuaternionSignDoesNotChangeTheBytes) {
 TEST(LcmEncoding, StatusBytesDependOnlyOnTheInput) {
   const auto first = encoded(testing::sample_status("ok"), cosmos_lcm::cell_status_t{});
   const auto second = encoded(testing::sample_status("ok"), cosmos_lcm::cell_status_t{});
-  // hash 8 + int64 + int8 + text (4 + 2 + 1) + 12 int64 + 3 doubles + 6 int64 + 2 int32
-  EXPECT_EQ(first.size(), 8U + 8U + 1U + 7U + 96U + 24U + 48U + 8U);
+  // hash 8 + int64 + int8 + text (4 + 2 + 1) + 12 int64 + 3 doubles + 7 int64 + 2 int32
+  EXPECT_EQ(first.size(), 8U + 8U + 1U + 7U + 96U + 24U + 56U + 8U);
   EXPECT_EQ(first, second);
   EXPECT_EQ(reencoded<cosmos_lcm::cell_status_t>(first), first);
 }

@@ -108,3 +108,84 @@ TEST(PartTracker, SpecksAreNoiseAndCapacityIsBounded) {
 
 }  // namespace
 }  // namespace cosmos
+
+namespace cosmos {
+namespace {
+
+// Rows with heights: a digit is data that many tens of mm high ('1' = 10 mm), 'b' the belt
+// measured, '.' no data (shadow).
+std::vector<TrackedPart> track_with_belt(PartTracker& tracker,
+                                         const std::vector<std::string>& rows) {
+  std::vector<TrackedPart> completed;
+  std::int64_t index = 0;
+  for (const std::string& text : rows) {
+    std::vector<float> z(text.size(), std::numeric_limits<float>::quiet_NaN());
+    std::vector<std::uint8_t> belt(text.size(), 0);
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      if (text[i] >= '1' && text[i] <= '9') z[i] = 10.0f * static_cast<float>(text[i] - '0');
+      belt[i] = text[i] == 'b' ? 1 : 0;
+    }
+    for (const TrackedPart& part : tracker.add_row(z.data(), index++, belt.data()))
+      completed.push_back(part);
+  }
+  return completed;
+}
+
+PartTrackerParameters shadow_tracking() {
+  PartTrackerParameters parameters;
+  parameters.min_pixels = 1;
+  parameters.link_gap_rows = 8;
+  parameters.hard_link_gap_rows = 1;
+  parameters.shadow_rows_per_mm = 0.1;  // 10 mm of height shadows 1 row (+ the margin)
+  return parameters;
+}
+
+std::vector<std::string> with_gap(const std::string& gap_row, int gap_rows, char height) {
+  std::vector<std::string> rows{"..1111..", "..1111.."};
+  for (int k = 0; k < gap_rows; ++k) rows.push_back(gap_row);
+  rows.push_back(std::string("..") + std::string(4, height) + "..");
+  for (int k = 0; k < 10; ++k) rows.push_back("bbbbbbbb");
+  return rows;
+}
+
+TEST(PartTracker, AGapTheLaterPiecesShadowExplainsIsASoftLink) {
+  PartTracker tracker(shadow_tracking(), 8);
+  // 40 mm high: shadows ceil(40 x 0.1 x 1.15 + 4) = 9 rows; the gap is 6 rows of no data.
+  const std::vector<TrackedPart> completed = track_with_belt(tracker, with_gap("........", 6, '4'));
+  ASSERT_EQ(completed.size(), 2u);
+  EXPECT_EQ(completed[0].id, 0);
+  EXPECT_TRUE(completed[0].has_soft_successor);
+  EXPECT_EQ(completed[1].soft_link_of, 0);
+  EXPECT_EQ(completed[1].merged_into, -1);
+}
+
+TEST(PartTracker, BeltSeenInTheGapOrAGapLongerThanTheShadowMakesTwoParts) {
+  {
+    PartTracker tracker(shadow_tracking(), 8);
+    const std::vector<TrackedPart> completed =
+        track_with_belt(tracker, with_gap("bbbbbbbb", 6, '4'));
+    ASSERT_EQ(completed.size(), 2u);
+    EXPECT_FALSE(completed[0].has_soft_successor);
+    EXPECT_EQ(completed[1].soft_link_of, -1);
+  }
+  {
+    PartTracker tracker(shadow_tracking(), 8);
+    // 10 mm high shadows 6 rows at most; the gap is 7.
+    const std::vector<TrackedPart> completed =
+        track_with_belt(tracker, with_gap("........", 7, '1'));
+    ASSERT_EQ(completed.size(), 2u);
+    EXPECT_EQ(completed[1].soft_link_of, -1);
+  }
+}
+
+TEST(PartTracker, ADropoutOfHardLinkGapRowsJoinsOutright) {
+  PartTracker tracker(shadow_tracking(), 8);
+  const std::vector<TrackedPart> completed = track_with_belt(tracker, with_gap("........", 1, '4'));
+  ASSERT_EQ(completed.size(), 1u);
+  EXPECT_EQ(completed[0].last_row, 3);
+  EXPECT_EQ(completed[0].soft_link_of, -1);
+  EXPECT_FLOAT_EQ(completed[0].max_z_mm, 40.0f);
+}
+
+}  // namespace
+}  // namespace cosmos

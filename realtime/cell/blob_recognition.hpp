@@ -1,0 +1,41 @@
+#pragma once
+// Every part a completed blob holds, each with a pose or a rejection: no part passes the
+// scanner unreported. The tracker closes blobs, not parts: parts touching on the belt (end to
+// end or side by side), or closer than the tracker can tell apart (part_tracker.hpp), come as
+// one blob. Scene-level recognition takes them apart: recognize the best-explained part in
+// the blob, take away the surface it explains (its patches, §5.3, and what it occludes of
+// its neighbours, §7.2.5: explained_surface.hpp), recognize what remains, until that is too
+// small to be a part, or is not recognized: then it is reported as REJECTED, "unresolved
+// cluster of N parts", N estimated from its area.
+//
+// A blob longer than max_part_length_mm lost its end: its unscanned rest is one ERROR pose.
+// Parts the loop could not hand over at all (no builder, no queue slot) become ERROR poses
+// too, from what the tracker knew of them (report_lost_part).
+#include <cstdint>
+#include <vector>
+
+#include "realtime/cell/part_recognition.hpp"
+
+namespace cosmos {
+
+struct BlobRecognition {
+  std::vector<PartRecognition> parts;  // one per part, in part_seq order
+  bool merged = false;                 // it held more than one part
+  // Its surface in the loop frame (every other pixel each way), to tell later whether a
+  // part recognized nearby explains it (piece_joiner.hpp).
+  std::vector<Eigen::Vector3d> points_loop_mm;
+  RangeImage image;  // its own pixels in the loop frame (the view recognized first)
+};
+
+// part_seq: the first part's running number; the blob's parts take the next ones.
+BlobRecognition recognize_blob(PartBuilder& builder, const PartRecognitionContext& context,
+                               std::int64_t part_seq);
+
+// The ERROR pose of a part the loop dropped, at the centre of its tracked extent.
+PartRecognition report_lost_part(const LostPart& lost, const PartRecognitionContext& context,
+                                 std::int64_t part_seq);
+
+// The median visible area of the base's views, mm^2 (what a part typically shows).
+double typical_view_area_mm2(const ModelBase& base);
+
+}  // namespace cosmos

@@ -1,0 +1,209 @@
+#include "realtime/cell/piece_joiner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <utility>
+
+namespace cosmos {
+namespace {
+
+// A held piece waits this many blobs for the part it may belong to: the blob that continues
+// it completes within a few blobs (side-by-side parts complete in between).
+constexpr int kBlobsToWait = 3;
+constexpr std::size_t kRecentParts = 8;
+// Most of the piece lies on the part's surface: it is that part's.
+constexpr double kExplainedFraction = 0.5;
+// Profiles between a piece and the part it may belong to at most: the longest shadow the
+// tracker links across (its link_gap_rows), at the default 0.4 mm belt step.
+constexpr std::int64_t kReachProfiles = 100;
+
+}  // namespace
+
+PieceJoiner::PieceJoiner(const PartRecognitionContext& context) : context_(context) {}
+
+bool PieceJoiner::near(const Piece& piece, const Recognized& part) const {
+  return piece.first_profile <= part.last_profile + kReachProfiles &&
+         part.first_profile <= piece.last_profile + kReachProfiles;
+}
+
+bool PieceJoiner::near(const Piece& a, const Piece& b) const {
+  return a.first_profile <= b.last_profile + kReachProfiles &&
+         b.first_profile <= a.last_profile + kReachProfiles;
+}
+
+namespace {
+
+// One range image holding the surfaces of `pieces` (loop frame, same grid).
+RangeImage union_image(const std::vector<const RangeImage*>& pieces) {
+  const RangeImage& first = *pieces.front();
+  const double grid_x = first.pixel_size_x_mm, grid_y = first.pixel_size_y_mm;
+  double x0 = first.origin_x_mm, y0 = first.origin_y_mm, x1 = x0, y1 = y0;
+  for (const RangeImage* image : pieces) {
+    x0 = std::min(x0, image->origin_x_mm);
+    y0 = std::min(y0, image->origin_y_mm);
+    x1 = std::max(x1, image->x_mm(image->width() - 1));
+    y1 = std::max(y1, image->y_mm(image->height() - 1));
+  }
+  RangeImage out(static_cast<int>(std::lround((x1 - x0) / grid_x)) + 1,
+                 static_cast<int>(std::lround((y1 - y0) / grid_y)) + 1, grid_x, grid_y);
+  out.origin_x_mm = x0;
+  out.origin_y_mm = y0;
+  for (const RangeImage* image : pieces) {
+    const int dc = static_cast<int>(std::lround((image->origin_x_mm - x0) / grid_x));
+    const int dr = static_cast<int>(std::lround((image->origin_y_mm - y0) / grid_y));
+    for (int row = 0; row < image->height(); ++row)
+      for (int column = 0; column < image->width(); ++column)
+        if (const float z = image->z_mm(column, row); !std::isnan(z))
+          out.z_mm(column + dc, row + dr) = z;
+  }
+  return out;
+}
+
+}  // namespace
+
+void PieceJoiner::remember(const Recognized& part) {
+  recent_.push_back(part);
+  if (recent_.size() > kRecentParts) recent_.pop_front();
+}
+
+void PieceJoiner::release(Piece& piece, std::vector<JoinedRecognition>& out) {
+  for (const Recognized& part : piece.parts) remember(part);
+  for (JoinedRecognition& rejection : piece.rejections) out.push_back(std::move(rejection));
+  piece.rejections.clear();
+}
+
+bool PieceJoiner::recognize_together(const Piece& piece, const PartBuilder& builder,
+                                     std::vector<JoinedRecognition>& out) {
+  std::vector<const RangeImage*> images{&piece.image};
+  for (const Piece& held : held_)
+    if (!held.recognized && near(held, piece)) images.push_back(&held.image);
+  if (images.size() < 2) return false;
+  RecognitionResult result = context_.recognizer->recognize(union_image(images));
+  if (result.status != RecognitionStatus::kOk) return false;
+  PartRecognition together = recognition_of(std::move(result), builder, context_, 0);
+  std::int64_t first_profile = piece.first_profile;
+  for (auto held = held_.begin(); held != held_.end();) {
+    if (!held->recognized && near(*held, piece)) {
+      first_profile = std::min(first_profile, held->first_profile);
+      held = held_.erase(held);
+    } else {
+      ++held;
+    }
+  }
+  together.first_profile = first_profile;
+  recent_.push_back({together.result.part, together.result.T_scanner_part, together.first_profile,
+                     together.last_profile});
+  out.push_back({std::move(together), builder.completed_ns});
+  return true;
+}
+
+bool PieceJoiner::explained_by_recent(const Piece& piece) const {
+  std::vector<Recognized> near_parts;
+  for (const Recognized& part : recent_)
+    if (near(piece, part)) near_parts.push_back(part);
+  return explained_by(piece.points_loop_mm, near_parts);
+}
+
+bool PieceJoiner::explained_by(const std::vector<Eigen::Vector3d>& points,
+                               const std::vector<Recognized>& parts) const {
+  if (points.empty()) return false;
+  for (const Recognized& part : parts) {
+    const PartDistanceField& field = context_.recognizer->part_search_model(part.part).field;
+    const RigidTransform T_part_loop = part.T_loop_part.inverse();
+    std::size_t on_surface = 0;
+    for (const Eigen::Vector3d& point : points)
+      on_surface +=
+          field.distance_mm(T_part_loop.apply(point)) <= context_.blob.explained_distance_mm ? 1
+                                                                                             : 0;
+    if (static_cast<double>(on_surface) >= kExplainedFraction * static_cast<double>(points.size()))
+      return true;
+  }
+  return false;
+}
+
+std::vector<JoinedRecognition> PieceJoiner::add(BlobRecognition blob, const PartBuilder& builder) {
+  std::vector<JoinedRecognition> out;
+  std::vector<Recognized> parts;
+  for (const PartRecognition& part : blob.parts)
+    if (part.pose.status == PoseStatus::kOk)
+      parts.push_back(
+          {part.result.part, part.result.T_scanner_part, part.first_profile, part.last_profile});
+  const bool any_recognized = !parts.empty();
+  const bool soft_linked = builder.has_soft_successor || builder.soft_link_of >= 0;
+  Piece current;
+  current.points_loop_mm = std::move(blob.points_loop_mm);
+  current.first_profile = builder.first_profile;
+  current.last_profile = builder.first_profile + builder.cosmos.rows() - 1;
+  current.recognized = any_recognized;
+  current.parts = parts;
+  bool drop_current = false;
+  // Held pieces: explained by this blob's parts, theirs; recognized too, the smaller of the
+  // two is a duplicate; the others wait, or go out.
+  for (auto piece = held_.begin(); piece != held_.end();) {
+    bool drop = false;
+    if (any_recognized && near(*piece, current)) {
+      const bool held_explained = explained_by(piece->points_loop_mm, parts);
+      const bool current_explained =
+          piece->recognized && soft_linked && explained_by(current.points_loop_mm, piece->parts);
+      if (piece->recognized && (held_explained || current_explained)) {
+        (piece->points_loop_mm.size() < current.points_loop_mm.size() ? drop : drop_current) = true;
+      } else {
+        drop = held_explained;
+      }
+    }
+    if (drop) {
+      piece = held_.erase(piece);
+    } else if (++piece->blobs_waited > kBlobsToWait) {
+      if (!piece->recognized) {
+        // Nearby held pieces none of which was recognized, alone or together: one part.
+        for (auto other = std::next(piece); other != held_.end();)
+          other =
+              !other->recognized && near(*piece, *other) ? held_.erase(other) : std::next(other);
+      }
+      release(*piece, out);
+      piece = held_.erase(piece);
+    } else {
+      ++piece;
+    }
+  }
+  if (drop_current) return out;
+  if (soft_linked && any_recognized && !builder.truncated) {
+    // A part recognized in an earlier piece explains this one: a duplicate.
+    if (explained_by_recent(current)) return out;
+    if (builder.has_soft_successor) {
+      for (PartRecognition& part : blob.parts)
+        current.rejections.push_back({std::move(part), builder.completed_ns});
+      held_.push_back(std::move(current));
+      return out;
+    }
+  }
+  // A softly linked blob with nothing recognized in it may be a piece: of a part already
+  // recognized, or of one still to come.
+  if (soft_linked && !any_recognized && !blob.parts.empty() && !builder.truncated && !blob.merged) {
+    current.image = std::move(blob.image);
+    if (explained_by_recent(current) || recognize_together(current, builder, out)) return out;
+    for (PartRecognition& part : blob.parts)
+      current.rejections.push_back({std::move(part), builder.completed_ns});
+    held_.push_back(std::move(current));
+    return out;
+  }
+  for (const Recognized& part : parts) remember(part);
+  for (PartRecognition& part : blob.parts) out.push_back({std::move(part), builder.completed_ns});
+  return out;
+}
+
+std::vector<JoinedRecognition> PieceJoiner::finish() {
+  std::vector<JoinedRecognition> out;
+  while (!held_.empty()) {
+    Piece piece = std::move(held_.front());
+    held_.pop_front();
+    if (!piece.recognized)
+      for (auto other = held_.begin(); other != held_.end();)
+        other = !other->recognized && near(piece, *other) ? held_.erase(other) : std::next(other);
+    release(piece, out);
+  }
+  return out;
+}
+
+}  // namespace cosmos

@@ -1,0 +1,71 @@
+#pragma once
+// The last step before poses go out: pieces of one part that the tracker kept apart are
+// joined again. Across a gap that a part's own leading end can have shadowed, the tracker
+// cannot tell a shadow-cut piece of the part (an elephant's trunk tip in front of its head)
+// from a neighbour whose leading end shadows the part before it; it keeps the pieces apart,
+// softly linked (part_tracker.hpp). Here a piece that nothing in the base explains (rejected)
+// is held until the blobs around it are recognized: when a part recognized in one of them
+// explains most of the piece's surface (explained_surface.hpp, in the loop frame all builders
+// share), the piece is that part's and is not reported. Pieces that nothing explains alone
+// are recognized together, as one range image of their surfaces (a part cut by its shadows
+// into pieces none of which is recognizable); what is left is reported: one rejection per
+// group of nearby pieces. A piece recognized on its own while the part it belongs to is
+// recognized too (two poses for one part) is a duplicate: of two softly linked blobs whose
+// parts explain each other, the smaller one's poses are dropped.
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+#include "core/range_image.hpp"
+#include "realtime/cell/blob_recognition.hpp"
+
+namespace cosmos {
+
+struct JoinedRecognition {
+  PartRecognition recognition;
+  std::int64_t completed_ns = 0;  // when the tracker completed its blob
+};
+
+class PieceJoiner {
+ public:
+  explicit PieceJoiner(const PartRecognitionContext& context);
+
+  // A recognized blob (the builder it came from, still held); returns what is now final,
+  // in order (part_seq still to be assigned by the publisher of the poses).
+  std::vector<JoinedRecognition> add(BlobRecognition blob, const PartBuilder& builder);
+  // End of stream: everything still held.
+  std::vector<JoinedRecognition> finish();
+
+ private:
+  struct Recognized {
+    int part = -1;
+    RigidTransform T_loop_part;
+    std::int64_t first_profile = 0, last_profile = 0;
+  };
+  struct Piece {
+    std::vector<JoinedRecognition> rejections;  // or its poses, when recognized
+    bool recognized = false;
+    std::vector<Recognized> parts;  // recognized in it
+    std::vector<Eigen::Vector3d> points_loop_mm;
+    RangeImage image;
+    std::int64_t first_profile = 0, last_profile = 0;
+    int blobs_waited = 0;
+  };
+  bool explained_by(const std::vector<Eigen::Vector3d>& points,
+                    const std::vector<Recognized>& parts) const;
+  bool explained_by_recent(const Piece& piece) const;
+  bool near(const Piece& piece, const Recognized& part) const;
+  bool near(const Piece& a, const Piece& b) const;
+  // The held pieces near `piece` and `piece` as one image, recognized; on success the pieces
+  // are taken out of held_ and the pose is returned.
+  bool recognize_together(const Piece& piece, const PartBuilder& builder,
+                          std::vector<JoinedRecognition>& out);
+  void release(Piece& piece, std::vector<JoinedRecognition>& out);
+  void remember(const Recognized& part);
+
+  const PartRecognitionContext& context_;
+  std::deque<Piece> held_;
+  std::deque<Recognized> recent_;  // the parts recognized in the last few blobs
+};
+
+}  // namespace cosmos
