@@ -66,7 +66,7 @@ struct CellWorld::State {
 
 CellWorld::CellWorld(const CellConfig& config)
     : state_(new State{
-          config, read_part_catalog(config.cell.catalog), nullptr, nullptr, nullptr, {}}) {}
+          config, read_part_catalog(config.cell.catalog), nullptr, nullptr, nullptr, 0, {}}) {}
 
 CellWorld::~CellWorld() = default;
 

@@ -102,7 +102,7 @@ RigidTransform cell_pose_of(const RigidTransform& T_loop_part, const PartBuilder
 PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContext& context,
                                std::int64_t part_seq) {
   const auto start = std::chrono::steady_clock::now();
-  PartView part = extract_part_view(builder, context);
+  const PartView part = extract_part_view(builder, context);
   const double features_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return recognize_part_view(part, builder, context, part_seq, features_ms);
@@ -111,9 +111,11 @@ PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContex
 PartRecognition recognize_part_view(const PartView& part, PartBuilder& builder,
                                     const PartRecognitionContext& context, std::int64_t part_seq,
                                     double features_ms) {
-  return recognition_of(
-      context.recognizer->recognize_analyzed(part.image, part.analysis, features_ms), builder,
-      context, part_seq);
+  PartRecognition out =
+      recognition_of(context.recognizer->recognize_analyzed(part.image, part.analysis, features_ms),
+                     builder, context, part_seq);
+  if (context.keep_part_image) out.image = part.image;
+  return out;
 }
 
 PartRecognition recognition_of(RecognitionResult result, const PartBuilder& builder,
@@ -159,7 +161,6 @@ PartRecognition recognition_of(RecognitionResult result, const PartBuilder& buil
   pose.translation_cell_part_mm = T_cell_part.translation_mm;
   pose.score = out.result.score;
   pose.registration_rms_mm = out.result.registration_rms_mm;
-  if (context.keep_part_image) out.image = std::move(part.image);
   return out;
 }
 
