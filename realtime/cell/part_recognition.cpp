@@ -114,7 +114,10 @@ PartRecognition recognize_part_view(const PartView& part, PartBuilder& builder,
   PartRecognition out =
       recognition_of(context.recognizer->recognize_analyzed(part.image, part.analysis, features_ms),
                      builder, context, part_seq);
-  if (context.keep_part_image) out.image = part.image;
+  if (context.keep_part_image) {
+    out.image = part.image;
+    out.image_first_profile = builder.first_profile;
+  }
   return out;
 }
 

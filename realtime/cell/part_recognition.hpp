@@ -78,7 +78,10 @@ struct PartRecognition {
   std::int64_t first_profile = 0;
   std::int64_t last_profile = -1;
   // The part's view in the loop frame (only its own pixels), when keep_part_image; else empty.
+  // Its row 0 is profile `image_first_profile`: a blob's view spans the whole blob, of which
+  // one part's rows are a stretch.
   RangeImage image;
+  std::int64_t image_first_profile = 0;
 };
 PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContext& context,
                                std::int64_t part_seq);

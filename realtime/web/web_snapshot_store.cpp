@@ -56,7 +56,7 @@ void WebSnapshotStore::add_part(const PartRecognition& recognition) {
   nlohmann::ordered_json event = {{"pose", part->pose}, {"tile", nullptr}};
   if (geometry.belt_columns > 0 && recognition.image.width() > 0)
     event["tile"] =
-        tile_json(make_belt_tile(recognition.image, recognition.first_profile, geometry));
+        tile_json(make_belt_tile(recognition.image, recognition.image_first_profile, geometry));
   part->event_json = event.dump();
   {
     const std::lock_guard lock(mutex_);

@@ -59,7 +59,8 @@ TEST(WebView, ShowsWhatTheRunningCellPublished) {
                                             observed_with_image += part.image.count_valid() > 0;
                                             web.observe(part);
                                           });
-  ASSERT_EQ(summary.parts_seen, 3);
+  // A part cut by its own shadow is seen as two pieces and published as one pose.
+  ASSERT_GE(summary.parts_seen, 3);
   ASSERT_EQ(published.poses.size(), 3u);
   EXPECT_EQ(observed_with_image, 3);
   ASSERT_FALSE(published.statuses.empty());
@@ -81,7 +82,7 @@ TEST(WebView, ShowsWhatTheRunningCellPublished) {
   const auto status_reply = http.Get("/api/status");
   ASSERT_TRUE(status_reply);
   const auto status = nlohmann::json::parse(status_reply->body);
-  EXPECT_EQ(status.at("status").at("parts_seen"), 3);
+  EXPECT_EQ(status.at("status").at("parts_seen"), summary.parts_seen);
   EXPECT_EQ(status.at("status").at("state"), "IDLE");
   EXPECT_EQ(status.at("status").at("profiles_acquired"), summary.profiles);
   EXPECT_EQ(status.at("pose_latency_ms").at("count"), 3);
@@ -99,7 +100,10 @@ TEST(WebView, ShowsWhatTheRunningCellPublished) {
     EXPECT_GE(tile.at("top_px").get<double>(), 0.0);
     EXPECT_LE(tile.at("top_px").get<double>() + tile.at("height_px").get<int>(),
               status.at("belt").at("width_px").get<double>() + 1);
-    EXPECT_EQ(tile.at("last_profile"), event.at("pose").at("last_profile"));
+    // The tile holds the part's rows (a blob's tile is the whole blob).
+    EXPECT_LE(tile.at("first_profile"), event.at("pose").at("first_profile"));
+    EXPECT_GE(tile.at("last_profile"), event.at("pose").at("last_profile"));
+    EXPECT_LT(tile.at("last_profile").get<int>() - tile.at("first_profile").get<int>(), 500);
   }
   web.stop();
 }
