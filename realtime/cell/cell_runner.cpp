@@ -8,6 +8,7 @@
 
 #include "firmware_bridge/kernel_timestamp.hpp"
 #include "realtime/cell/blob_recognition.hpp"
+#include "realtime/cell/cell_state_rule.hpp"
 #include "realtime/cell/piece_joiner.hpp"
 #include "realtime/rt/deadline_pacer.hpp"
 #include "realtime/rt/latency_histogram.hpp"
@@ -85,16 +86,6 @@ CellStatus status_message(ScanLoop& loop, const SharedStatus& shared,
                           const SpscRing<CompletedPose>& poses, std::int64_t utime_us) {
   CellStatus status;
   status.utime_us = utime_us;
-  const bool done = shared.acquisition_done.load();
-  const bool stalled = !done && shared.source_stalled.load();
-  status.state = shared.fault || stalled ? CellState::kFault
-                 : done                  ? CellState::kIdle
-                                         : CellState::kScanning;
-  status.state_text = shared.fault.load(std::memory_order_acquire)
-                          ? std::string("the scanner source failed: ") + shared.fault_reason.data()
-                      : stalled ? "no frame from the camera within its watchdog (camera timeout)"
-                      : done    ? "the source has ended"
-                                : "scanning";
   const ScanLoopCounters& counters = loop.counters();
   status.profiles_acquired = counters.profiles;
   status.profiles_lost = shared.profiles_lost;
@@ -123,35 +114,14 @@ CellStatus status_message(ScanLoop& loop, const SharedStatus& shared,
   return status;
 }
 
-// A fault that struck since the last status (a counter that grew while scanning) is the
-// state until a period passes without it: the operator sees FAULT and which fault while it
-// lasts, and SCANNING again once the cell is back to normal.
-void mark_faults_since(const CellStatus& previous, CellStatus& status) {
-  if (status.state != CellState::kScanning) return;
-  struct Fault {
-    std::int64_t CellStatus::*total;
-    const char* what;
-  };
-  static constexpr Fault kFaults[] = {
-      {&CellStatus::camera_timeouts, "camera timeouts"},
-      {&CellStatus::profiles_lost, "frames lost"},
-      {&CellStatus::encoder_errors, "encoder errors"},
-      {&CellStatus::encoder_reversals, "encoder reversals"},
-      {&CellStatus::encoder_stalls, "profiles with the encoder stuck while the belt moves"},
-      {&CellStatus::laser_off_profiles, "profiles without laser light (laser off)"},
-      {&CellStatus::gpio_edges_lost, "GPIO edges lost"},
-      {&CellStatus::photo_eye_bounces, "photo-eye bounces"},
-      {&CellStatus::parts_dropped, "parts dropped (recognizer overloaded)"},
-  };
-  std::string text;
-  for (const Fault& fault : kFaults) {
-    const std::int64_t added = status.*fault.total - previous.*fault.total;
-    if (added <= 0) continue;
-    text += (text.empty() ? "" : "; ") + std::to_string(added) + ' ' + fault.what;
-  }
-  if (text.empty()) return;
-  status.state = CellState::kFault;
-  status.state_text = text + " since the last status";
+// The source as the acquisition thread left it, for the state rule.
+SourceCondition source_condition(const SharedStatus& shared) {
+  SourceCondition source;
+  source.failed = shared.fault.load(std::memory_order_acquire);
+  if (source.failed) source.failure = shared.fault_reason.data();
+  source.ended = shared.acquisition_done.load();
+  source.stalled = shared.source_stalled.load();
+  return source;
 }
 
 void run_publisher(ScanLoop& loop, Publisher& publisher, SpscRing<CompletedPose>& poses,
@@ -186,7 +156,7 @@ void run_publisher(ScanLoop& loop, Publisher& publisher, SpscRing<CompletedPose>
         shared.recognizer_done.load(std::memory_order_acquire) && poses.empty() && profiles.empty();
     if (finished || std::chrono::steady_clock::now() >= next_status) {
       summary.last_status = status_message(loop, shared, poses, last_data_us);
-      mark_faults_since(previous, summary.last_status);
+      decide_cell_state(source_condition(shared), previous, summary.last_status);
       previous = summary.last_status;
       if (!publisher.publish(summary.last_status)) summary.publish_failures++;
       next_status += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <iterator>
 #include <string>
+#include <string_view>
+
+#include "realtime/cell/cell_state_rule.hpp"
 
 namespace cosmos::hil {
 namespace {
@@ -18,20 +21,66 @@ const PlayedFault* played(const PlayerLog& player, const char* kind) {
   return nullptr;
 }
 
+// The fault totals (cell_state_rule.hpp) the played faults grow. Frames lost are always
+// explained: vivid fills no frame for a skip or a stall, nor when it runs late, and
+// cell_check accounts every gap. A corrupted frame may hold no stripe at all (laser off).
+std::set<std::string_view> explained_totals(const PlayerLog& player) {
+  std::set<std::string_view> explained = {"frames lost"};
+  const auto explain = [&](const char* what) { explained.insert(what); };
+  if (played(player, "stall") != nullptr) explain("camera timeouts");
+  if (played(player, "jiggle") != nullptr || played(player, "glitch") != nullptr) {
+    explain("encoder reversals");
+    explain("encoder errors");
+  }
+  if (player.count("bounced_arrivals") > 0) explain("photo-eye bounces");
+  if (played(player, "corrupt") != nullptr) explain("profiles without laser light (laser off)");
+  return explained;
+}
+
+// What of a FAULT message the played faults do not explain: the totals that grew since the
+// message before it and are none of `explained`, or a reason that is neither a stall nor a
+// grown total (the source failed). Empty: explained, or not a FAULT.
+std::string unexplained_fault(const CellStatus* previous, const CellStatus& status,
+                              const std::set<std::string_view>& explained, bool stall_played) {
+  if (status.state != CellState::kFault) return {};
+  std::string out;
+  bool grew = false;
+  for (const FaultTotal& fault : fault_totals()) {
+    const std::int64_t added = status.*fault.total - (previous ? previous->*fault.total : 0);
+    if (added <= 0) continue;
+    grew = true;
+    if (explained.count(fault.what) == 0)
+      out += (out.empty() ? "" : ", ") + std::to_string(added) + ' ' + fault.what;
+  }
+  const bool stall = status.state_text.rfind(kCameraStallReason, 0) == 0;
+  if ((stall && !stall_played) || (!stall && !grew))
+    out += (out.empty() ? "" : ", ") + status.state_text;
+  return out;
+}
+
 void check_stall(const StatusRun& run, const PlayedFault* stall, std::vector<ProbeCheck>& checks) {
   const std::vector<CellStatus>& statuses = *run.statuses;
+  const std::set<std::string_view> explained = explained_totals(*run.player);
   std::int64_t fault_runs = 0, fault_messages = 0, other_faults = 0;
+  std::string first_unexplained;
   for (std::size_t i = 0; i < statuses.size(); ++i) {
     const bool fault = statuses[i].state == CellState::kFault;
     fault_messages += fault ? 1 : 0;
-    other_faults += fault && !is_camera_timeout(statuses[i]) ? 1 : 0;
     fault_runs += fault && (i == 0 || statuses[i - 1].state != CellState::kFault) ? 1 : 0;
+    const std::string why = unexplained_fault(i > 0 ? &statuses[i - 1] : nullptr, statuses[i],
+                                              explained, stall != nullptr);
+    if (why.empty()) continue;
+    ++other_faults;
+    if (first_unexplained.empty()) first_unexplained = why;
   }
   const std::int64_t timeouts = statuses.empty() ? 0 : statuses.back().camera_timeouts;
   if (stall == nullptr) {
-    checks.push_back(check_line(fault_messages == 0,
-                                "COSMOS_STATUS: no stall played, %lld FAULT messages",
-                                static_cast<long long>(fault_messages)));
+    checks.push_back(
+        check_line(other_faults == 0,
+                   "COSMOS_STATUS: no stall played, %lld FAULT messages, %lld not "
+                   "explained by the played faults%s%s",
+                   static_cast<long long>(fault_messages), static_cast<long long>(other_faults),
+                   first_unexplained.empty() ? "" : ", the first: ", first_unexplained.c_str()));
     return;
   }
   // The profiles before the stall's gap (the first gap from the frame before the stall
@@ -62,12 +111,13 @@ void check_stall(const StatusRun& run, const PlayedFault* stall, std::vector<Pro
       "COSMOS_STATUS stall at frame %lld (%lld frame periods without frames): camera_timeouts "
       "%lld at the end; %lld FAULT message(s) \"camera timeout\" while the cell waited after its "
       "%lld profiles before the gap (camera_timeouts %lld there), SCANNING again after it %s; "
-      "%lld FAULT message(s) in %lld run(s) in all, %lld with another reason",
+      "%lld FAULT message(s) in %lld run(s) in all, %lld not explained by the played faults%s%s",
       static_cast<long long>(stall->sequence), static_cast<long long>(stall->observed),
       static_cast<long long>(timeouts), static_cast<long long>(during),
       static_cast<long long>(before_gap), static_cast<long long>(timeouts_during),
       resumed ? "yes" : "no", static_cast<long long>(fault_messages),
-      static_cast<long long>(fault_runs), static_cast<long long>(other_faults)));
+      static_cast<long long>(fault_runs), static_cast<long long>(other_faults),
+      first_unexplained.empty() ? "" : ", the first: ", first_unexplained.c_str()));
   // The cell recovers: the parts that came after the stall are identified.
   const std::int64_t stall_profile = stall->sequence - run.player->plan.lead_in_frames;
   int later = 0, later_identified = 0;

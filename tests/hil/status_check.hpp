@@ -11,7 +11,9 @@
 //   glitch    a pulse on encoder A shorter than gpio-cdev resolves: an encoder_errors count,
 //             or two more reversals when the interrupt thread was quick enough for both edges;
 //   bounce    the photo eye bouncing at a part's arrival: photo_eye_bounces >= 1;
-//   the end   the last status IDLE, and no FAULT but a camera timeout's.
+//   the end   the last status IDLE, and no FAULT the played faults do not explain: each FAULT
+//             message is read against the one before it, the totals that grew between them
+//             (cell_state_rule.hpp's fault totals) must be ones the played faults grow.
 // The frame losses (profiles_lost = the sequence gaps) are cell_check's frame accounting.
 #include <cstdint>
 #include <set>

@@ -92,6 +92,35 @@ TEST(StatusCheck, FailsMissingEncoderAndPhotoEyeCounts) {
   EXPECT_EQ(failures(run.check()), 1);
 }
 
+TEST(StatusCheck, PassesAFaultThatThePlayedEncoderFaultsExplain) {
+  StatusRunFixture run;
+  CellStatus reversing = status(CellState::kFault, 60, 0);
+  reversing.state_text = "2 encoder reversals since the last status";
+  reversing.encoder_reversals = 2;
+  run.statuses.insert(run.statuses.begin() + 1, reversing);
+  for (std::size_t i = 2; i < run.statuses.size(); ++i) run.statuses[i].encoder_reversals = 2;
+  EXPECT_EQ(failures(run.check()), 0);
+}
+
+TEST(StatusCheck, FailsAFaultNoPlayedFaultExplainsAndNamesIt) {
+  StatusRunFixture run;
+  CellStatus stuck = status(CellState::kFault, 60, 0);
+  stuck.state_text = "7 profiles with the encoder stuck while the belt moves since the last status";
+  stuck.encoder_stalls = 7;
+  run.statuses.insert(run.statuses.begin() + 1, stuck);
+  for (std::size_t i = 2; i < run.statuses.size(); ++i) run.statuses[i].encoder_stalls = 7;
+  const std::vector<ProbeCheck> checks = run.check();
+  ASSERT_EQ(failures(checks), 1);
+  EXPECT_NE(checks.front().line.find("7 profiles with the encoder stuck"), std::string::npos)
+      << checks.front().line;
+}
+
+TEST(StatusCheck, FailsAStallWhenNoneWasPlayed) {
+  StatusRunFixture run;
+  run.player.faults.erase(run.player.faults.begin());  // the stall
+  EXPECT_GE(failures(run.check()), 1);
+}
+
 TEST(StatusCheck, FailsWhenTheLastStatusIsNotIdle) {
   StatusRunFixture run;
   run.statuses.back().state = CellState::kScanning;
