@@ -18,6 +18,7 @@
 #include "apps/cell_model_base.hpp"
 #include "realtime/cell/part_recognition.hpp"
 #include "realtime/config/cell_config.hpp"
+#include "realtime/sources/hardware_source.hpp"
 #include "realtime/sources/scanner_source.hpp"
 #include "realtime/sources/stream_fault_log.hpp"
 
@@ -63,6 +64,8 @@ class CellWorld {
   SimulatedTruth simulated_truth_of(const PartRecognition& recognition,
                                     const RigidTransform& T_cell_scanner, double mm_per_tick) const;
   std::int64_t simulated_parts_placed() const;  // 0 without ground truth
+  // The open source's hardware source (real devices or the twins), null for others.
+  HardwareSource* hardware_source() const;
   // A pose went out: a hardware source (real or on the twins) pulses result_ready for it.
   // Safe from the publisher thread (HardwareSource::announce_result).
   void announce_pose_published();

@@ -83,6 +83,8 @@ CellWorld::SimulatedTruth CellWorld::simulated_truth_of(const PartRecognition&,
 
 std::int64_t CellWorld::simulated_parts_placed() const { return 0; }
 
+HardwareSource* CellWorld::hardware_source() const { return state_->hardware; }
+
 void CellWorld::announce_pose_published() {
   if (state_->hardware) state_->hardware->announce_result();
 }

@@ -193,6 +193,8 @@ std::int64_t CellWorld::simulated_parts_placed() const {
   return state_->conveyor ? static_cast<std::int64_t>(state_->conveyor->placed_parts().size()) : 0;
 }
 
+HardwareSource* CellWorld::hardware_source() const { return state_->hardware; }
+
 void CellWorld::announce_pose_published() {
   if (state_->hardware) state_->hardware->announce_result();
 }

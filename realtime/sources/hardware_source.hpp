@@ -75,6 +75,10 @@ class HardwareSource final : public ScannerSource {
   const StripeProfiler* profiler() const { return profiler_.get(); }
   // Read on the acquisition thread, or once the source is stopped.
   const PhotoEyeTally& photo_eye() const noexcept { return photo_eye_; }
+  // The devices, for tools that take whole frames themselves between start() and stop()
+  // (`cosmos calibrate capture`); the cell's loop reads them only through next().
+  Camera& camera() noexcept { return *camera_; }
+  GpioLines& gpio() noexcept { return *gpio_; }
   // Any thread: a result (a published pose) for result_ready to signal.
   void announce_result() noexcept { results_announced_.fetch_add(1, std::memory_order_relaxed); }
   // result_ready pulses begun since start(); read as photo_eye().

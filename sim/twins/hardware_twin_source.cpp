@@ -44,7 +44,9 @@ HardwareTwinSource::HardwareTwinSource(const HardwareConfig& config,
       faults_(faults),
       camera_(*conveyor_, clock_, config.camera, faults_, truth),
       gpio_(*conveyor_, clock_, config.gpio, gpio_settings, faults_),
-      hardware_(config, told ? *told : conveyor_->parameters(), camera_, gpio_) {}
+      hardware_(config, told ? *told : conveyor_->parameters(), camera_, gpio_) {
+  camera_.follow_laser_enable(gpio_);
+}
 
 HardwareTwinSource::~HardwareTwinSource() { hardware_.stop(); }
 

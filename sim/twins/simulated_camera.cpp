@@ -169,7 +169,9 @@ CameraStatus SimulatedCamera::next_frame(std::int64_t timeout_us, FrameView& fra
   const ScannerParameters& scanner = conveyor_.parameters();
   const std::int64_t ticks = scanner.encoder_ticks_of_profile(next_index_);
   laser_->trace(laser_y_belt_mm(scanner, next_index_), line_);
-  if (faults_.active(InjectedFault::kLaserOff, next_index_))
+  const bool laser_disabled =
+      laser_line_ != nullptr && !laser_line_->output_active(GpioOutput::kLaserEnable);
+  if (laser_disabled || faults_.active(InjectedFault::kLaserOff, next_index_))
     std::fill(line_.state.begin(), line_.state.end(), LaserSampleState::kLaserShadow);
   if (moves_camera(truth_)) project_through_true_camera();
   cv::Mat& buffer = buffers_[index];

@@ -32,6 +32,9 @@
 // timeout, the belt moving on, and says kTimeout (counted in stats().timeouts) until the
 // stall's frames have passed; with the laser off a frame shows the belt with no stripe at all.
 // Only the stall blocks (for real time: a camera's wait is wall-clock time).
+// The laser follows the GPIO twin's laser_enable line when the camera is told to
+// (follow_laser_enable): with it inactive a frame shows the belt under ambient light and no
+// stripe, as a calibration's board image does.
 // True geometry (scanner/simulated_mounting.hpp): a mounting that moves the camera re-projects
 // each lit belt-frame point through the true camera before drawing, so the frames are what
 // a mis-mounted scanner sees while the cell triangulates with the geometry it is told. Which
@@ -51,6 +54,7 @@
 #include "sim/source/fault_plan.hpp"
 #include "sim/source/simulated_conveyor.hpp"
 #include "sim/twins/simulated_belt_clock.hpp"
+#include "sim/twins/simulated_gpio_lines.hpp"
 
 namespace cosmos {
 
@@ -78,6 +82,9 @@ class SimulatedCamera final : public Camera {
   // Back to frame 0 and the clock to time 0, for a replay of the identical stream; only
   // while stopped (kWrongState otherwise). Restart the GPIO twin after it.
   CameraStatus rewind() noexcept;
+  // The laser lights the frames only while `gpio`'s laser_enable is active (it must outlive
+  // the camera); without this call it always does.
+  void follow_laser_enable(const SimulatedGpioLines& gpio) noexcept { laser_line_ = &gpio; }
 
   bool streaming() const noexcept { return streaming_; }
   int lent_frames() const noexcept;
@@ -105,6 +112,7 @@ class SimulatedCamera final : public Camera {
   std::unique_ptr<LaserLineScanner> laser_;
   std::unique_ptr<CameraFrameRenderer> renderer_;
   LaserLine line_;
+  const SimulatedGpioLines* laser_line_ = nullptr;
   std::vector<cv::Mat> buffers_;  // full sensor width, the ROI's rows
   std::vector<std::uint8_t> lent_;
   std::int64_t next_index_ = 0;
