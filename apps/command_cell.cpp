@@ -194,12 +194,14 @@ void run(const CellOptions& options) {
         const std::string& truth = found.name;
         if (world.has_ground_truth()) tally.add(pose, found, diameter_mm);
         const Eigen::Vector3d& t = pose.translation_cell_part_mm;
-        std::printf("%5lld  %-18s %-9s %9.2f %9.2f %9.2f  %6.3f %8.4f %10.1f%s%s\n",
-                    static_cast<long long>(pose.part_seq),
-                    pose.status == PoseStatus::kOk ? pose.part_name.c_str() : "-",
+        // A rejection or error says why, as its part_pose_t does.
+        const bool ok = pose.status == PoseStatus::kOk;
+        std::printf("%5lld  %-18s %-9s %9.2f %9.2f %9.2f  %6.3f %8.4f %10.1f%s%s%s%s\n",
+                    static_cast<long long>(pose.part_seq), ok ? pose.part_name.c_str() : "-",
                     to_string(pose.status), t.x(), t.y(), t.z(), pose.score,
                     pose.registration_rms_mm, pose.latency_ms,
-                    truth.empty() ? "" : "  truth: ", truth.c_str());
+                    truth.empty() ? "" : "  truth: ", truth.c_str(),
+                    ok ? "" : "  reason: ", ok ? "" : pose.reason.c_str());
         std::fflush(stdout);
       });
   if (!summary.source_error.empty()) throw InputError(summary.source_error);

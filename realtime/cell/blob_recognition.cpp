@@ -123,6 +123,19 @@ std::vector<int> pixels_per(const RangeImage& image, bool rows) {
   return count;
 }
 
+// Whether `recognition` is a part already recognized in the blob, at the same place: the
+// same base part within a tenth of its diameter (the identification criterion of ADD-S).
+bool repeats_a_part(const PartRecognition& recognition, const std::vector<PartRecognition>& parts,
+                    const ModelBase& base) {
+  const int part = recognition.result.part;
+  const double diameter_mm = base.parts[static_cast<std::size_t>(part)].diameter_mm;
+  return std::any_of(parts.begin(), parts.end(), [&](const PartRecognition& earlier) {
+    return earlier.result.status == RecognitionStatus::kOk && earlier.result.part == part &&
+           (earlier.T_belt_part.translation_mm - recognition.T_belt_part.translation_mm).norm() <
+               0.1 * diameter_mm;
+  });
+}
+
 }  // namespace
 
 double typical_view_area_mm2(const ModelBase& base) {
@@ -181,8 +194,16 @@ BlobRecognition recognize_blob(PartBuilder& builder, const PartRecognitionContex
           explained_pixels(view.image, model.field, recognition.result.T_scanner_part,
                            parameters.explained_distance_mm);
       set_profiles_of(explained, width, builder, recognition);
-      blob.parts.push_back(std::move(recognition));
-      for (std::size_t i = 0; i < excluded.size(); ++i) excluded[i] |= explained[i];
+      std::size_t newly_excluded = 0;
+      for (std::size_t i = 0; i < excluded.size(); ++i) {
+        newly_excluded += explained[i] && !excluded[i] ? 1 : 0;
+        excluded[i] |= explained[i];
+      }
+      // What is left of a part its explained surface missed can be recognized as that part
+      // again: one pose per part, the rest of its surface taken away too.
+      const bool seen_again = repeats_a_part(recognition, blob.parts, *context.model_base);
+      if (!seen_again) blob.parts.push_back(std::move(recognition));
+      if (seen_again && newly_excluded == 0) break;
       const auto cut = std::chrono::steady_clock::now();
       view = extract_part_view(builder, context, &excluded);
       remaining = remaining_of(view.image);
@@ -251,8 +272,19 @@ BlobRecognition recognize_blob(PartBuilder& builder, const PartRecognitionContex
     rest.pose.reason = "blob longer than tracking.max_part_length_mm: its last " +
                        std::to_string(static_cast<long long>(std::lround(unscanned_mm))) +
                        " mm were not scanned";
-    rest.first_profile = builder.first_profile + builder.cosmos.rows();
-    rest.last_profile = builder.first_profile + builder.tracked_rows - 1;
+    // Reported where the unscanned stretch lies on the belt (its middle, on the belt's
+    // surface across the blob's middle), not where the last recognized part is.
+    Remaining unscanned;
+    unscanned.first_row = static_cast<int>(builder.cosmos.rows());
+    unscanned.last_row = static_cast<int>(builder.tracked_rows - 1);
+    double x_sum_mm = 0;
+    for (const Eigen::Vector3d& point : blob.points_loop_mm) x_sum_mm += point.x();
+    const double middle_row = 0.5 * (unscanned.first_row + unscanned.last_row);
+    unscanned.centroid_mm = {blob.points_loop_mm.empty()
+                                 ? 0.0
+                                 : x_sum_mm / static_cast<double>(blob.points_loop_mm.size()),
+                             view.image.origin_y_mm + middle_row * view.image.pixel_size_y_mm, 0.0};
+    place_rejection(unscanned, builder, context, rest);
     blob.parts.push_back(std::move(rest));
   }
   blob.merged = blob.parts.size() > 1;

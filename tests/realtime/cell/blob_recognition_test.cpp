@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <set>
 #include <sstream>
 
 #include "core/io/model_base_file.hpp"
@@ -45,6 +46,7 @@ class BlobRecognition : public ::testing::Test {
     int wrong = 0;            // OK, another part
     int rejected = 0;         // REJECTED or ERROR, each with a reason
     int without_reason = 0;
+    int repeated = 0;  // OK poses of a placed part that had one already
     std::string text;
   };
 
@@ -70,6 +72,7 @@ class BlobRecognition : public ::testing::Test {
     outcome.placed = source.placed_parts().size();
     outcome.reports = publisher.poses.size();
     std::ostringstream text;
+    std::set<const PlacedSimPart*> posed;
     for (const PartRecognition& recognition : recognitions) {
       const PartPose& pose = recognition.pose;
       const RigidTransform T_belt_part =
@@ -83,6 +86,7 @@ class BlobRecognition : public ::testing::Test {
         outcome.without_reason += pose.reason.empty() ? 1 : 0;
       } else if (truth && pose.part_name == truth->name) {
         ++outcome.identified;
+        outcome.repeated += posed.insert(truth).second ? 0 : 1;
       } else {
         ++outcome.wrong;
       }
@@ -127,6 +131,17 @@ TEST_F(BlobRecognition, PairsTouchingSideBySideAreTakenApart) {
   const Outcome outcome = run(pairs);
   EXPECT_EQ(outcome.reports, outcome.placed) << outcome.text;
   EXPECT_GE(outcome.identified, 3) << outcome.text;
+  EXPECT_EQ(outcome.wrong, 0) << outcome.text;
+}
+
+TEST_F(BlobRecognition, PartsTouchingEndToEndGetOnePoseEach) {
+  // Groups of three touching end to end: what is left of a part once its explained surface
+  // is taken away must not come out as the same part again.
+  SimulatedSourceSettings groups = settings(12, 40.0, 11);
+  groups.group_size = 3;
+  const Outcome outcome = run(groups);
+  EXPECT_EQ(outcome.repeated, 0) << outcome.text;
+  EXPECT_GE(outcome.identified, 11) << outcome.text;
   EXPECT_EQ(outcome.wrong, 0) << outcome.text;
 }
 
