@@ -39,12 +39,14 @@ ModelBaseBuildSettings build_settings(const CellConfig& config) {
   return settings;
 }
 
-// The cache holds one base per catalog content and parameter set: a changed catalog,
-// scanner or belt threshold builds a new base instead of loading a stale one.
+// The cache holds one base per catalog content, parameter set and file format: a changed
+// catalog, scanner or belt threshold, or a build whose model bases differ (their format
+// version), builds a new base instead of loading a stale one.
 std::filesystem::path cached_model_base_path(const CellConfig& config, const PartCatalog& catalog) {
   const ModelBaseBuildSettings settings = build_settings(config);
-  const std::string key =
-      catalog_content_hash(catalog) + model_base_parameters_text(config.scanner, settings);
+  const std::string key = catalog_content_hash(catalog) +
+                          model_base_parameters_text(config.scanner, settings) + "format " +
+                          std::to_string(ModelBase::kFormatVersion);
   char name[64];
   std::snprintf(name, sizeof name, "cell-%d-views-%016llx.cmb", settings.view_count,
                 static_cast<unsigned long long>(xxh64(key)));

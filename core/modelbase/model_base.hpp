@@ -53,7 +53,9 @@ struct ViewCluster {
 };
 
 struct ModelBase {
-  static constexpr std::uint32_t kFormatVersion = 1;
+  // Raised whenever what a build writes changes (layout or content), so that caches and
+  // readers refuse or rebuild what an older build wrote. 2: no patch without pixels.
+  static constexpr std::uint32_t kFormatVersion = 2;
   std::string catalog_hash;     // content hash of the catalog and its meshes
   std::string parameters_text;  // every COSMOS/scanner/grouping parameter, canonical text
   std::vector<ModelPart> parts;

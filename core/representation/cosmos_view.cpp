@@ -76,7 +76,9 @@ CosmosView build_cosmos_view(const DarbouxFrameField& frames, const ShapeIndexFi
   std::vector<PatchSums> sums(segmentation.patch_count);
   for (std::size_t i = 0; i < field.label.size(); ++i) {
     const int id = segmentation.patch_of_pixel[i];
-    if (id == kNoPatch) continue;
+    // A patch's features are its surface's (§3.5): a pixel without a usable surface fit that
+    // the segmentation folded into a patch (a hole inside it) brings no shape to it.
+    if (id == kNoPatch || field.label[i] == SurfaceLabel::kInvalid) continue;
     PatchSums& s = sums[id];
     const double area = field.area_mm2[i];
     const double shape = field.shape_index[i];

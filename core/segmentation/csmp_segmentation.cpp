@@ -109,6 +109,19 @@ void refine_boundaries(const ShapeIndexField& field, const std::vector<double>& 
 
 }  // namespace
 
+void drop_emptied_patches(CsmpSegmentation& result) {
+  std::vector<std::int32_t> renumbered(static_cast<std::size_t>(result.patch_count), kNoPatch);
+  for (std::size_t i = 0; i < result.patch_of_pixel.size(); ++i)
+    if (const std::int32_t patch = result.patch_of_pixel[i]; patch >= 0) renumbered[patch] = 0;
+  int patches = 0;
+  for (std::int32_t& id : renumbered)
+    if (id == 0) id = patches++;
+  if (patches == result.patch_count) return;
+  for (std::size_t i = 0; i < result.patch_of_pixel.size(); ++i)
+    if (std::int32_t& patch = result.patch_of_pixel[i]; patch >= 0) patch = renumbered[patch];
+  result.patch_count = patches;
+}
+
 CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndexField& field,
                                const SegmentationParameters& parameters) {
   const std::size_t pixels = field.label.size();
@@ -170,6 +183,7 @@ CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndex
     shape_area[patch] += seeds.shape_area[seed];
   }
   refine_boundaries(field, area, shape_area, result, parameters.boundary_refinement_passes);
+  drop_emptied_patches(result);
   return result;
 }
 

@@ -25,4 +25,9 @@ struct CsmpSegmentation {
 CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndexField& field,
                                const SegmentationParameters& parameters);
 
+// Boundary refinement can hand every pixel of a small patch to its neighbours: segment_csmps
+// drops the emptied ids, the others keeping their order (that of their first pixels), so that
+// every patch of a view has a surface to describe (§3.5).
+void drop_emptied_patches(CsmpSegmentation& segmentation);
+
 }  // namespace cosmos

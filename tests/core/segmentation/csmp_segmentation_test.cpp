@@ -123,5 +123,29 @@ TEST(CsmpSegmentation, BoxCornerGivesThreeAdjacentPlanes) {
   EXPECT_EQ(std::count(matched.begin(), matched.end(), true), 3);
 }
 
+TEST(CsmpSegmentation, PatchesEmptiedByRefinementAreDroppedAndTheRestKeepTheirOrder) {
+  CsmpSegmentation segmentation;
+  segmentation.patch_count = 4;
+  segmentation.patch_of_pixel = PixelGrid<std::int32_t>(3, 2, kNoPatch);
+  // Patch 1 lost every pixel to its neighbours.
+  const std::int32_t ids[] = {0, 0, 2, kNoPatch, 3, 2};
+  for (std::size_t i = 0; i < 6; ++i) segmentation.patch_of_pixel[i] = ids[i];
+  drop_emptied_patches(segmentation);
+  EXPECT_EQ(segmentation.patch_count, 3);
+  const std::int32_t expected[] = {0, 0, 1, kNoPatch, 2, 1};
+  for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(segmentation.patch_of_pixel[i], expected[i]) << i;
+}
+
+TEST(CsmpSegmentation, NoPatchIsLeftWithoutPixels) {
+  for (std::int32_t count : {0, 2}) {
+    CsmpSegmentation segmentation;
+    segmentation.patch_count = count;
+    segmentation.patch_of_pixel = PixelGrid<std::int32_t>(2, 1, count == 0 ? kNoPatch : 1);
+    segmentation.patch_of_pixel[0] = count == 0 ? kNoPatch : 0;
+    drop_emptied_patches(segmentation);
+    EXPECT_EQ(segmentation.patch_count, count);
+  }
+}
+
 }  // namespace
 }  // namespace cosmos::testing

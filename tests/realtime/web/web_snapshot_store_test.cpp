@@ -41,6 +41,7 @@ PartRecognition part(std::int64_t seq, const std::string& name, std::int64_t las
   recognition.last_profile = last_profile;
   if (with_image) {
     recognition.image = RangeImage(8, 8, 0.4, 0.4);
+    recognition.image_first_profile = recognition.first_profile;
     recognition.image.origin_x_mm = -8.0 + 16 * 0.4;
     for (std::size_t i = 0; i < recognition.image.z_mm.size(); ++i)
       recognition.image.z_mm[i] = i % 3 == 0 ? kNone : 12.5f;
