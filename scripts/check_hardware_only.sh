@@ -7,7 +7,9 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/setup.sh"
 build_dir=${COSMOS_HARDWARE_BUILD_DIR:-$root/build-hardware-only}
-cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DCOSMOS_SIMULATOR=OFF > /dev/null
+export CCACHE_BASEDIR=$root  # the main build's compiles (scripts/build.sh) are reused
+cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DCOSMOS_SIMULATOR=OFF \
+  -DCMAKE_CXX_COMPILER_LAUNCHER=ccache > /dev/null
 cmake --build "$build_dir" --parallel "$(nproc)" --target cosmos > "$build_dir/build.log" 2>&1 ||
   { tail -n 30 "$build_dir/build.log"; exit 1; }
 cosmos="$build_dir/apps/cosmos"

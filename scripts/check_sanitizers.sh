@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # The test suite under the sanitizers (docs/reliability.md):
-#   - AddressSanitizer + UndefinedBehaviorSanitizer over the unit tests (build-asan/),
+#   - AddressSanitizer + UndefinedBehaviorSanitizer over the unit tests, built with clang in
+#     the fuzzers' tree (build-fuzz/, which scripts/fuzz.sh configures the same way: every
+#     target there is compiled with -fsanitize=address,undefined), so CI compiles the
+#     libraries the fuzzers and the tests share once;
 #   - ThreadSanitizer over the realtime tests that run threads: the cell loop and its
-#     acquisition and recognizer threads, the rings, the LCM threads (build-tsan/).
+#     acquisition and recognizer threads, the rings, the LCM threads (build-tsan/, GCC).
 # Any report fails the run (the builds abort on the first one: -fno-sanitize-recover).
 #   scripts/check_sanitizers.sh           CI: the suites below, in a bounded time
 #   scripts/check_sanitizers.sh --full    every test of every binary under ASan + UBSan
@@ -43,8 +46,13 @@ export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
 # simulated scans, model-base builds, the 100-scan regression run through the CLI) and the
 # recognizer's runs over the regression base: instrumented -O1 code runs them several times
 # slower, and the code they add is mostly the simulator's, which --full covers.
-asan=$root/build-asan
-configure "$asan" address,undefined
+asan=${COSMOS_FUZZ_BUILD_DIR:-$root/build-fuzz}
+if ! command -v clang++ > /dev/null; then
+  echo "sanitizers: clang++ not found (scripts/setup.sh installs it)" >&2
+  exit 1
+fi
+CC=clang CXX=clang++ cmake -S "$root" -B "$asan" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DCOSMOS_FUZZ=ON "${launcher[@]}" > /dev/null
 if $full; then
   cmake --build "$asan" --parallel "$jobs"
   model_base "$asan"

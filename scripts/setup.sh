@@ -11,6 +11,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 
 packages=(
   build-essential cmake pkg-config git
+  # Compiles shared by the build trees (the hardware-only build, a rebuild after a checkout).
+  ccache
   libeigen3-dev libopencv-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libassimp-dev libembree-dev libqhull-dev
