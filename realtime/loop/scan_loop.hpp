@@ -112,17 +112,18 @@ struct PartQueueSettings {
   template <class Visitor>
   void visit(Visitor& v) {
     v("part_builders", builders,
-      "parts in flight (open, queued, being recognized); each 3.5 MB of working rows",
+      "parts in flight (open, queued, being recognized); each ~4 MB (its working rows and fit "
+      "kernels), its part's rows are in the row pool",
       Range{1, 64});
     v("part_queue_slots", part_queue_slots, "completed parts queued for the recognizer",
       Range{1, 1024});
     v("row_blocks", row_blocks,
       "blocks of the builders' shared row pool, allocated at start, resident once used "
-      "(all of it with lock_memory); 0.69 MB each",
+      "(all of them with lock_memory); 0.65 MB each",
       Range{1, 65536});
     v("row_block_rows", row_block_rows,
-      "full-width rows per row-pool block (a part's rows hold only its columns: many more "
-      "of its rows fit); 43 kB per row",
+      "full-width rows per row-pool block (a part's rows hold only its own columns, so "
+      "more of them fit); 42 kB per row",
       Range{1, 4096});
   }
 };
