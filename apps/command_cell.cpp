@@ -228,10 +228,12 @@ void run(const CellOptions& options) {
   const double block_mb = static_cast<double>(row_pool.block_bytes()) / (1024.0 * 1024.0);
   std::printf(
       "cell: peak memory %.0f MB (max RSS; %.0f MB once the model base was loaded); part rows "
-      "peak %d of %d blocks (%.1f of %.1f MB, realtime.row_blocks)\n",
+      "peak %d of %d blocks (%.1f of %.1f MB, realtime.row_blocks), %lld parts dropped for "
+      "want of one\n",
       peak_resident_mb(), model_base_loaded_mb, row_pool.peak_blocks_in_use(),
       row_pool.block_count(), row_pool.peak_blocks_in_use() * block_mb,
-      row_pool.block_count() * block_mb);
+      row_pool.block_count() * block_mb,
+      static_cast<long long>(loop.counters().parts_out_of_rows.load()));
   std::printf(
       "cell: per-profile processing p50 %.0f us, p99 %.0f us, max %.0f us; start jitter "
       "p50 %.0f us, p99 %.0f us\n",
