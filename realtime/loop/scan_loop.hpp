@@ -103,7 +103,7 @@ struct PartQueueSettings {
   // each (a row takes 67 bytes per column between its first and last sample). A part holds
   // the blocks its rows fill until the recognizer is done with it; a part whose next row
   // finds no block left is dropped and counted like one that finds no builder.
-  int row_blocks = 256;
+  int row_blocks = 128;
   int row_block_rows = 16;
   // Parts lost for want of a builder or queue slot, queued for their ERROR poses: fixed
   // capacity (the hot path never allocates); beyond it a loss is only counted.
