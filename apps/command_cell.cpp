@@ -4,6 +4,8 @@
 // pose goes out on COSMOS_POSE while a live table shows it; a summary ends the run. With --http
 // (or web.http_address) a live web view serves the belt, the poses and the status counters
 // (realtime/web/web_view.hpp) from before the model base loads until the run ends.
+#include <sys/resource.h>
+
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <charconv>
@@ -43,6 +45,13 @@ struct CellOptions {
   std::string replay;
   std::string http;  // replaces web.http_address
 };
+
+// The process's peak resident memory so far, MB (getrusage's ru_maxrss is in kB on Linux).
+double peak_resident_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
 
 // Every loss and fault total of the run's last COSMOS_STATUS, zeros too: an operator sees
 // that each was counted, not only that nothing was printed.
@@ -127,6 +136,7 @@ void run(const CellOptions& options) {
   // The COSMOS parameters the base was built with, the one set every analysis of a scan
   // uses: the recognizer, the scan loop's incremental COSMOS and the part views.
   const CellModelBase loaded = world.load_model_base();
+  const double model_base_loaded_mb = peak_resident_mb();
   const ModelBase& base = loaded.base;
   const CosmosParameters& cosmos = loaded.cosmos;
   const Recognizer recognizer(base, cosmos, RecognitionParameters{});
@@ -213,8 +223,19 @@ void run(const CellOptions& options) {
       static_cast<long long>(summary.parts_dropped),
       static_cast<long long>(summary.poses_published));
   if (world.has_ground_truth()) tally.print();
-  std::printf("cell: latency end of part -> pose published: median %.1f ms, p99 %.1f ms\n",
-              latencies.p50_ns() / 1e6, latencies.p99_ns() / 1e6);
+  std::printf(
+      "cell: latency end of part -> pose published: median %.1f ms, p99 %.1f ms, max %.1f ms\n",
+      latencies.p50_ns() / 1e6, latencies.p99_ns() / 1e6, latencies.max_ns() / 1e6);
+  const RowBlockPool& row_pool = loop.row_pool();
+  const double block_mb = static_cast<double>(row_pool.block_bytes()) / (1024.0 * 1024.0);
+  std::printf(
+      "cell: peak memory %.0f MB (max RSS; %.0f MB once the model base was loaded); part rows "
+      "peak %d of %d blocks (%.1f of %.1f MB, realtime.row_blocks), %lld parts dropped for "
+      "want of one\n",
+      peak_resident_mb(), model_base_loaded_mb, row_pool.peak_blocks_in_use(),
+      row_pool.block_count(), row_pool.peak_blocks_in_use() * block_mb,
+      row_pool.block_count() * block_mb,
+      static_cast<long long>(loop.counters().parts_out_of_rows.load()));
   std::printf(
       "cell: per-profile processing p50 %.0f us, p99 %.0f us, max %.0f us; start jitter "
       "p50 %.0f us, p99 %.0f us\n",

@@ -300,9 +300,7 @@ PartRecognition report_lost_part(const LostPart& lost, const PartRecognitionCont
   pose.encoder_ticks = lost.last_encoder_ticks;
   pose.encoder_ticks_first = lost.first_encoder_ticks;
   pose.status = PoseStatus::kError;
-  pose.reason = lost.reason == LostPartReason::kNoBuilder
-                    ? "dropped: no free part builder when it arrived (realtime.part_builders)"
-                    : "dropped: the recognizer's queue was full (realtime.part_queue_slots)";
+  pose.reason = lost_part_reason_text(lost.reason);
   const double rows = static_cast<double>(lost.last_profile - lost.first_profile + 1);
   pose.blob_extent_mm = Eigen::Vector3d((lost.column_max - lost.column_min + 1) * context.grid_mm,
                                         rows * context.grid_mm, lost.max_z_mm);

@@ -33,7 +33,7 @@ PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& c
                            const std::vector<std::uint8_t>* excluded) {
   builder.cosmos.finish();
   const IncrementalCosmos& source = builder.cosmos;
-  const int full_width = source.image().width();
+  const int full_width = source.width();
   const int c0 = part_view_first_column(builder);
   const int c1 = std::min(full_width - 1, builder.column_max + kColumnMargin);
   const int width = c1 - c0 + 1;
@@ -41,46 +41,52 @@ PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& c
 
   PartView part;
   part.image = RangeImage(width, height, context.grid_mm, context.grid_mm);
-  part.image.origin_x_mm = source.image().origin_x_mm + c0 * context.grid_mm;
-  part.image.origin_y_mm = source.image().origin_y_mm;
+  part.image.origin_x_mm = source.origin_x_mm() + c0 * context.grid_mm;
+  part.image.origin_y_mm = source.origin_y_mm();
   DarbouxFrameField& frames = part.analysis.frames;
   frames = DarbouxFrameField(width, height);
   ShapeIndexField& field = part.analysis.field;
   field = make_shape_index_field(width, height);
   // Which pixels of the part's columns belong to it, a row at a time (with one column of
   // margin on each side, never owned): the copy below reads each label once instead of nine
-  // times (this runs between the part's end and its pose).
+  // times (this runs between the part's end and its pose). A pixel outside its row's stored
+  // columns has no sample, so no part owns it.
   const int mask_width = width + 2;
   std::vector<std::uint8_t> owned(static_cast<std::size_t>(mask_width) * (height + 2), 0);
   const auto owned_at = [&](int x, int row) -> std::uint8_t& {
     return owned[static_cast<std::size_t>(row + 1) * mask_width + (x + 1)];
   };
   for (int row = 0; row < height; ++row) {
-    const std::int64_t* labels = builder.labels.data() + static_cast<std::size_t>(row) * full_width;
+    const PartRow in = source.row(row);
     for (int x = 0; x < width; ++x) {
+      const int column = c0 + x;
       const bool away = excluded && (*excluded)[static_cast<std::size_t>(row) * width + x] != 0;
-      owned_at(x, row) = !away && builder.owns(labels[c0 + x]) ? 1 : 0;
+      owned_at(x, row) =
+          !away && in.holds(column) && builder.owns(in.tracker_label[in.at(column)]) ? 1 : 0;
     }
   }
   for (int row = 0; row < height; ++row) {
+    const PartRow in = source.row(row);
+    const float y_mm = source.y_mm(row);
     for (int x = 0; x < width; ++x) {
       if (!owned_at(x, row)) continue;
-      const std::size_t from = static_cast<std::size_t>(row) * full_width + (c0 + x);
+      const std::size_t from = in.at(c0 + x);
       const std::size_t to = static_cast<std::size_t>(row) * width + x;
-      part.image.z_mm[to] = source.image().z_mm[from];
-      std::uint8_t same_side = source.frames().same_side[from];
+      part.image.z_mm[to] = in.z_mm[from];
+      std::uint8_t same_side = in.same_side[from];
       for (int k = 0; k < 8; ++k)
         if (!owned_at(x + kNeighborOffsets[k].column, row + kNeighborOffsets[k].row))
           same_side &= static_cast<std::uint8_t>(~(1u << k));
-      frames.valid[to] = source.frames().valid[from];
+      frames.valid[to] = in.valid[from];
       frames.same_side[to] = same_side;
-      for (int a = 0; a < 3; ++a) frames.position_mm[a][to] = source.frames().position_mm[a][from];
-      for (int c = 0; c < kFrameComponents; ++c)
-        frames.frame[c][to] = source.frames().frame[c][from];
-      field.label[to] = source.field().label[from];
-      field.shape_index[to] = source.field().shape_index[from];
-      field.curvedness_per_mm[to] = source.field().curvedness_per_mm[from];
-      field.area_mm2[to] = source.field().area_mm2[from];
+      frames.position_mm[0][to] = source.x_mm(c0 + x);
+      frames.position_mm[1][to] = y_mm;
+      frames.position_mm[2][to] = in.fitted_z_mm[from];
+      for (int c = 0; c < kFrameComponents; ++c) frames.frame[c][to] = in.frame[c][from];
+      field.label[to] = in.label[from];
+      field.shape_index[to] = in.shape_index[from];
+      field.curvedness_per_mm[to] = in.curvedness_per_mm[from];
+      field.area_mm2[to] = in.area_mm2[from];
       field.same_side[to] = same_side;
     }
   }

@@ -1,42 +1,98 @@
 #include "realtime/loop/incremental_cosmos.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace cosmos {
 
+namespace {
+
+constexpr int kRingRows = 3;
+
+}  // namespace
+
+int IncrementalCosmos::fit_window_rows(const CosmosParameters& parameters) {
+  // A stage runs at most two rows behind the one it reads from (smooth_next's ring gate), so
+  // the rows still read span at most: the fit's reach twice (the rows it reads below and
+  // above), the links' row on either side, two per smoothing level and the last row's store.
+  const int fit_reach = 2 * std::max(parameters.fit.window_size / 2, 1);
+  const int span = 2 * fit_reach + 2 * std::max(parameters.smoothing.iterations, 0) + 4;
+  return span + std::max(span / 2, 16);
+}
+
 IncrementalCosmos::IncrementalCosmos(const CosmosParameters& parameters, int width, int max_rows,
-                                     double pixel_size_x_mm, double pixel_size_y_mm)
+                                     double pixel_size_x_mm, double pixel_size_y_mm,
+                                     RowBlockPool& pool)
     : parameters_(parameters),
       width_(width),
       max_rows_(max_rows),
       fitter_(parameters.fit, pixel_size_x_mm, pixel_size_y_mm, width),
-      image_(width, max_rows, pixel_size_x_mm, pixel_size_y_mm),
-      fitted_(width, max_rows),
-      frames_(width, max_rows),
-      field_(make_shape_index_field(width, max_rows)),
+      window_(width, fit_window_rows(parameters), pixel_size_x_mm, pixel_size_y_mm),
+      fitted_(width, fit_window_rows(parameters)),
+      final_(width, kRingRows),
+      classified_(make_shape_index_field(width, kRingRows)),
+      rows_store_(pool, max_rows),
       smoothed_rows_(std::max(parameters.smoothing.iterations, 0), 0),
-      smoothed_columns_(static_cast<std::size_t>(max_rows), {0, 0}) {
+      smoothed_columns_(static_cast<std::size_t>(std::max(max_rows, 0)), {0, 0}) {
   for (int level = 1; level < parameters.smoothing.iterations; ++level)
-    rings_.emplace_back(static_cast<std::size_t>(3) * kFrameComponents * width, 0.0f);
+    rings_.emplace_back(static_cast<std::size_t>(kRingRows) * kFrameComponents * width, 0.0f);
 }
 
 void IncrementalCosmos::begin_part(double origin_x_mm, double origin_y_mm) {
-  image_.origin_x_mm = origin_x_mm;
-  image_.origin_y_mm = origin_y_mm;
+  rows_store_.clear();
+  origin_x_mm_ = origin_x_mm;
+  origin_y_mm_ = origin_y_mm;
+  // The fit writes x and y from the window's origin; only its heights, frames, validity and
+  // links are read (positions come from x_mm and y_mm), so the origin need not follow the
+  // window's first row.
+  window_.origin_x_mm = origin_x_mm;
+  window_.origin_y_mm = origin_y_mm;
+  window_first_row_ = 0;
   rows_ = fitted_rows_ = linked_rows_ = classified_rows_ = 0;
   std::fill(smoothed_rows_.begin(), smoothed_rows_.end(), 0);
   finished_ = false;
   fitter_.reset();
 }
 
-bool IncrementalCosmos::add_row(const float* z_mm) {
-  if (rows_ >= max_rows_ || finished_) return false;
-  std::copy(z_mm, z_mm + width_, image_.z_mm.row(rows_));
+AddRowResult IncrementalCosmos::add_row(const float* z_mm) {
+  if (rows_ >= max_rows_ || finished_) return AddRowResult::kTooLong;
+  int begin = 0;
+  while (begin < width_ && std::isnan(z_mm[begin])) ++begin;
+  int end = width_;
+  while (end > begin && std::isnan(z_mm[end - 1])) --end;
+  if (!rows_store_.append(begin, end)) return AddRowResult::kNoMemory;
+  make_room_in_window();
+  std::copy(z_mm, z_mm + width_, window_.z_mm.row(in_window(rows_)));
+  std::copy(z_mm + begin, z_mm + end, rows_store_.row(rows_).z_mm);
   ++rows_;
   while (advance_one_row_each()) {
   }
-  return true;
+  return AddRowResult::kAdded;
+}
+
+// Keeps room in the window for the new row and, below it, the rows finish() blanks (the
+// fit's reach and the links' border row). When the window is full, the rows some stage still
+// reads move to its top.
+void IncrementalCosmos::make_room_in_window() {
+  const int height = window_.height();
+  if (in_window(rows_) + fit_reach_rows() + 2 <= height) return;
+  int keep = std::min({fitted_rows_ - fit_reach_rows(), linked_rows_ - 1, classified_rows_});
+  for (int done : smoothed_rows_) keep = std::min(keep, done - 1);
+  keep = std::max(keep, window_first_row_);
+  const int shift = keep - window_first_row_;
+  const int kept = rows_ - keep;
+  const auto move_up = [&](auto& grid) {
+    std::copy(grid.row(shift), grid.row(shift + kept), grid.row(0));
+  };
+  move_up(window_.z_mm);
+  move_up(fitted_.valid);
+  move_up(fitted_.same_side);
+  move_up(fitted_.position_mm[2]);
+  for (auto& component : fitted_.frame) move_up(component);
+  window_first_row_ = keep;
+  // The separable fit's cached row filters are keyed by window row, which has changed.
+  fitter_.reset();
 }
 
 void IncrementalCosmos::finish() {
@@ -46,13 +102,11 @@ void IncrementalCosmos::finish() {
   // shifted by up to half a window, looks a whole window further), and the row below has no
   // valid fit (its links) — as at the border of a whole image.
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  for (int row = rows_; row < std::min(rows_ + fit_reach_rows(), max_rows_); ++row)
-    std::fill(image_.z_mm.row(row), image_.z_mm.row(row) + width_, nan);
-  if (rows_ < max_rows_) std::fill(fitted_.valid.row(rows_), fitted_.valid.row(rows_) + width_, 0);
+  for (int row = rows_; row < rows_ + fit_reach_rows(); ++row)
+    std::fill(window_.z_mm.row(in_window(row)), window_.z_mm.row(in_window(row)) + width_, nan);
+  std::fill(fitted_.valid.row(in_window(rows_)), fitted_.valid.row(in_window(rows_)) + width_, 0);
   while (advance_one_row_each()) {
   }
-  for (int row = rows_; row < max_rows_; ++row)
-    std::fill(field_.label.row(row), field_.label.row(row) + width_, SurfaceLabel::kInvalid);
 }
 
 // Consumers first, one row per stage, so that no stage runs more than a row or two ahead of
@@ -69,7 +123,7 @@ bool IncrementalCosmos::advance_one_row_each() {
 bool IncrementalCosmos::fit_next() {
   const int row = fitted_rows_;
   if (row >= rows_ || !(row + fit_reach_rows() < rows_ || finished_)) return false;
-  fitter_.fit_row(image_, row, fitted_);
+  fitter_.fit_row(window_, in_window(row), fitted_);
   ++fitted_rows_;
   return true;
 }
@@ -78,17 +132,17 @@ bool IncrementalCosmos::link_next() {
   const int row = linked_rows_;
   if (row >= fitted_rows_ || !(row + 1 < fitted_rows_ || (finished_ && fitted_rows_ == rows_)))
     return false;
-  fitter_.link_row(image_, row, fitted_);
+  fitter_.link_row(window_, in_window(row), fitted_);
   ++linked_rows_;
   return true;
 }
 
 const float* IncrementalCosmos::frame_row(int level, int component, int row) const {
   const int last = static_cast<int>(smoothed_rows_.size());
-  if (level == 0) return fitted_.frame[component].row(row);
-  if (level == last) return frames_.frame[component].row(row);
+  if (level == 0) return fitted_.frame[component].row(in_window(row));
+  if (level == last) return final_.frame[component].row(row % kRingRows);
   return rings_[level - 1].data() +
-         (static_cast<std::size_t>(row % 3) * kFrameComponents + component) * width_;
+         (static_cast<std::size_t>(row % kRingRows) * kFrameComponents + component) * width_;
 }
 
 float* IncrementalCosmos::writable_frame_row(int level, int component, int row) {
@@ -105,12 +159,15 @@ bool IncrementalCosmos::smooth_next(int level) {
       level == 1 ? (finished_ && linked_rows_ == rows_) : (finished_ && below == rows_);
   if (row >= rows_ || (level == 1 && row >= linked_rows_)) return false;
   if (!(row + 1 < below || below_complete)) return false;
-  // A ring row may be overwritten only once the level above has used it.
-  if (level < last && row >= 3 && smoothed_rows_[level] < row - 1) return false;
+  // A ring row may be overwritten only once the level above (or the classification) has
+  // used it.
+  if (level < last && row >= kRingRows && smoothed_rows_[level] < row - 1) return false;
+  if (level == last && row >= classified_rows_ + kRingRows) return false;
+  const int window_row = in_window(row);
   SmoothingRowInput in;
   in.width = width_;
-  in.valid = fitted_.valid.row(row);
-  in.same_side = fitted_.same_side.row(row);
+  in.valid = fitted_.valid.row(window_row);
+  in.same_side = fitted_.same_side.row(window_row);
   // A part covers a fraction of the belt's width: smooth only between the row's first and
   // last valid pixel (found once, at level 1); the invalid pixels outside keep their frames.
   if (level == 1)
@@ -118,22 +175,19 @@ bool IncrementalCosmos::smooth_next(int level) {
   in.column_begin = smoothed_columns_[static_cast<std::size_t>(row)][0];
   in.column_end = smoothed_columns_[static_cast<std::size_t>(row)][1];
   const int rows[3] = {std::max(row - 1, 0), row, std::min(row + 1, rows_ - 1)};
-  in.pixel_size_x_mm = static_cast<float>(image_.pixel_size_x_mm);
-  in.pixel_size_y_mm = static_cast<float>(image_.pixel_size_y_mm);
+  in.pixel_size_x_mm = static_cast<float>(window_.pixel_size_x_mm);
+  in.pixel_size_y_mm = static_cast<float>(window_.pixel_size_y_mm);
   for (int r = 0; r < 3; ++r) {
-    in.z_mm[r] = fitted_.position_mm[2].row(rows[r]);
+    in.z_mm[r] = fitted_.position_mm[2].row(in_window(rows[r]));
     for (int c = 0; c < kFrameComponents; ++c) in.frame[r][c] = frame_row(level - 1, c, rows[r]);
   }
   float* out[kFrameComponents];
   for (int c = 0; c < kFrameComponents; ++c) out[c] = writable_frame_row(level, c, row);
   smooth_frame_row(in, out, parameters_.smoothing);
   if (level == last) {
-    std::copy(fitted_.valid.row(row), fitted_.valid.row(row) + width_, frames_.valid.row(row));
-    std::copy(fitted_.same_side.row(row), fitted_.same_side.row(row) + width_,
-              frames_.same_side.row(row));
-    for (int axis = 0; axis < 3; ++axis)
-      std::copy(fitted_.position_mm[axis].row(row), fitted_.position_mm[axis].row(row) + width_,
-                frames_.position_mm[axis].row(row));
+    const int slot = row % kRingRows;
+    std::copy(in.valid, in.valid + width_, final_.valid.row(slot));
+    std::copy(in.same_side, in.same_side + width_, final_.same_side.row(slot));
   }
   ++smoothed_rows_[level - 1];
   return true;
@@ -144,10 +198,85 @@ bool IncrementalCosmos::classify_next() {
   const bool smoothing = !smoothed_rows_.empty();
   const int done = smoothing ? smoothed_rows_.back() : linked_rows_;
   if (row >= done) return false;
-  classify_row(smoothing ? frames_ : fitted_, row, image_.pixel_size_x_mm, image_.pixel_size_y_mm,
-               parameters_.shape_index, field_);
+  const int slot = row % kRingRows;
+  if (!smoothing) {
+    // No smoothing: the fitted frames are the final ones.
+    const int window_row = in_window(row);
+    std::copy(fitted_.valid.row(window_row), fitted_.valid.row(window_row) + width_,
+              final_.valid.row(slot));
+    std::copy(fitted_.same_side.row(window_row), fitted_.same_side.row(window_row) + width_,
+              final_.same_side.row(slot));
+    for (int c = 0; c < kFrameComponents; ++c)
+      std::copy(fitted_.frame[c].row(window_row), fitted_.frame[c].row(window_row) + width_,
+                final_.frame[c].row(slot));
+  }
+  classify_row(final_, slot, window_.pixel_size_x_mm, window_.pixel_size_y_mm,
+               parameters_.shape_index, classified_);
+  store_final_row(row, slot);
   ++classified_rows_;
   return true;
+}
+
+// The row's final planes into its compact record; the window's rows of it may go after this.
+void IncrementalCosmos::store_final_row(int row, int slot) {
+  const PartRow out = rows_store_.row(row);
+  const int b = out.column_begin, e = out.column_end;
+  const auto copy = [b, e](const auto* from, auto* to) { std::copy(from + b, from + e, to); };
+  copy(fitted_.position_mm[2].row(in_window(row)), out.fitted_z_mm);
+  copy(final_.valid.row(slot), out.valid);
+  copy(final_.same_side.row(slot), out.same_side);
+  for (int c = 0; c < kFrameComponents; ++c) copy(final_.frame[c].row(slot), out.frame[c]);
+  copy(classified_.label.row(slot), out.label);
+  copy(classified_.shape_index.row(slot), out.shape_index);
+  copy(classified_.curvedness_per_mm.row(slot), out.curvedness_per_mm);
+  copy(classified_.area_mm2.row(slot), out.area_mm2);
+}
+
+RangeImage IncrementalCosmos::whole_image() const {
+  RangeImage image(width_, rows_, window_.pixel_size_x_mm, window_.pixel_size_y_mm);
+  image.origin_x_mm = origin_x_mm_;
+  image.origin_y_mm = origin_y_mm_;
+  for (int r = 0; r < rows_; ++r) {
+    const PartRow in = row(r);
+    std::copy(in.z_mm, in.z_mm + (in.column_end - in.column_begin),
+              image.z_mm.row(r) + in.column_begin);
+  }
+  return image;
+}
+
+DarbouxFrameField IncrementalCosmos::whole_frames() const {
+  DarbouxFrameField frames(width_, rows_);
+  for (int r = 0; r < rows_; ++r) {
+    const PartRow in = row(r);
+    const int n = in.column_end - in.column_begin, b = in.column_begin;
+    for (int c = 0; c < width_; ++c) {
+      frames.position_mm[0](c, r) = x_mm(c);
+      frames.position_mm[1](c, r) = y_mm(r);
+    }
+    std::copy(in.fitted_z_mm, in.fitted_z_mm + n, frames.position_mm[2].row(r) + b);
+    std::copy(in.valid, in.valid + n, frames.valid.row(r) + b);
+    std::copy(in.same_side, in.same_side + n, frames.same_side.row(r) + b);
+    for (int k = 0; k < kFrameComponents; ++k)
+      std::copy(in.frame[k], in.frame[k] + n, frames.frame[k].row(r) + b);
+  }
+  return frames;
+}
+
+ShapeIndexField IncrementalCosmos::whole_field() const {
+  ShapeIndexField field = make_shape_index_field(width_, rows_);
+  for (int r = 0; r < rows_; ++r) {
+    const PartRow in = row(r);
+    for (int c = in.column_begin; c < in.column_end; ++c) {
+      const std::size_t k = in.at(c);
+      field.label(c, r) = in.label[k];
+      field.shape_index(c, r) = in.shape_index[k];
+      field.curvedness_per_mm(c, r) = in.curvedness_per_mm[k];
+      field.area_mm2(c, r) = in.area_mm2[k];
+      // As classify_row: the links of the pixels it labels.
+      field.same_side(c, r) = in.label[k] != SurfaceLabel::kInvalid ? in.same_side[k] : 0;
+    }
+  }
+  return field;
 }
 
 }  // namespace cosmos

@@ -8,8 +8,10 @@
 // recognizer worker ends the pipeline with finish_view_analysis() on the part's own pixels
 // (the spectrum is not accumulated here: a builder's rows also hold other parts' pixels).
 //
-// Every buffer is sized at construction from the maxima (width, rows): adding a row never
-// allocates.
+// Memory follows the part, not the belt: the rows the pipeline still works on sit in a
+// window of a few dozen full rows (fit_window_rows()), and a row whose COSMOS is final moves
+// into the part's compact rows (part_rows.hpp), taken from a pool shared by the builders.
+// Every working buffer is sized at construction: adding a row never allocates.
 #include <array>
 #include <vector>
 
@@ -19,36 +21,68 @@
 #include "core/surface/darboux_frame_field.hpp"
 #include "core/surface/local_surface_fit.hpp"
 #include "core/surface/shape_index.hpp"
+#include "realtime/loop/part_rows.hpp"
+#include "realtime/loop/row_block_pool.hpp"
 
 namespace cosmos {
+
+enum class AddRowResult {
+  kAdded,
+  kTooLong,   // max_rows rows held (or the part finished): the row is dropped
+  kNoMemory,  // the pool had no block for the row: nothing changed
+};
 
 class IncrementalCosmos {
  public:
   IncrementalCosmos(const CosmosParameters& parameters, int width, int max_rows,
-                    double pixel_size_x_mm, double pixel_size_y_mm);
+                    double pixel_size_x_mm, double pixel_size_y_mm, RowBlockPool& pool);
 
+  // Starts a part; the rows of the previous one must have been released (release_rows).
   void begin_part(double origin_x_mm, double origin_y_mm);
-  // Appends one row of `width` heights (mm, NaN = no data); false when the part is longer
-  // than max_rows (the row is dropped).
-  bool add_row(const float* z_mm);
+  // Appends one row of `width` heights (mm, NaN = no data).
+  AddRowResult add_row(const float* z_mm);
   // Runs the pipeline to the last row (the bottom border of the part).
   void finish();
+  // Gives the part's rows back to the pool (the recognizer is done with them).
+  void release_rows() { rows_store_.clear(); }
 
   int rows() const { return rows_; }
-  const RangeImage& image() const { return image_; }           // max_rows tall
-  const DarbouxFrameField& frames() const { return frames_; }  // smoothed frames
-  const ShapeIndexField& field() const { return field_; }
+  int width() const { return width_; }
+  // Row r of the part; its COSMOS planes are final once finish() has run.
+  PartRow row(int r) const { return rows_store_.row(r); }
+  int blocks() const { return rows_store_.blocks(); }
+  double origin_x_mm() const { return origin_x_mm_; }
+  double origin_y_mm() const { return origin_y_mm_; }
+  // A pixel's fitted position in x and y: the grid's, as the local fit writes them.
+  float x_mm(int column) const {
+    return static_cast<float>(origin_x_mm_ + column * window_.pixel_size_x_mm);
+  }
+  float y_mm(int row) const {
+    return static_cast<float>(origin_y_mm_ + row * window_.pixel_size_y_mm);
+  }
+  // The part's rows as whole images of width x rows() (tests and tools: these allocate).
+  RangeImage whole_image() const;
+  DarbouxFrameField whole_frames() const;
+  ShapeIndexField whole_field() const;
+
+  // Full rows of the working window: the rows from the oldest one a stage still reads to the
+  // newest, twice over, so that moving them to the window's top is rare.
+  static int fit_window_rows(const CosmosParameters& parameters);
 
  private:
   // Rows below a pixel that its fit may read: a whole window, since a crease window is
   // shifted by up to half of one (local_surface_fit.hpp). A row is fitted only once they
   // have arrived, so it never reads a row of an earlier part.
   int fit_reach_rows() const { return 2 * (parameters_.fit.window_size / 2); }
+  // The window row of part row `row`.
+  int in_window(int row) const { return row - window_first_row_; }
+  void make_room_in_window();
   bool advance_one_row_each();
   bool fit_next();
   bool link_next();
   bool smooth_next(int level);
   bool classify_next();
+  void store_final_row(int row, int slot);
   // Frame rows of smoothing level `level` (0 = fitted, iterations = final), row clamped to
   // the part's rows as whole-image processing does.
   const float* frame_row(int level, int component, int row) const;
@@ -58,11 +92,17 @@ class IncrementalCosmos {
   int width_;
   int max_rows_;
   LocalSurfaceFitter fitter_;
-  RangeImage image_;
-  DarbouxFrameField fitted_;  // level 0, plus positions, validity and links of every row
-  DarbouxFrameField frames_;  // the last level
+  // Part rows [window_first_row_, window_first_row_ + window height): the heights the fit
+  // reads and level 0 (fitted frames, heights, validity and links) that smoothing reads.
+  RangeImage window_;
+  DarbouxFrameField fitted_;
+  int window_first_row_ = 0;
   std::vector<std::vector<float>> rings_;  // levels 1 .. iterations-1: 3 rows x components
-  ShapeIndexField field_;
+  DarbouxFrameField final_;                // the last level (frames, validity, links): 3 rows
+  ShapeIndexField classified_;             // 3 rows
+  PartRows rows_store_;
+  double origin_x_mm_ = 0;
+  double origin_y_mm_ = 0;
 
   int rows_ = 0;
   bool finished_ = false;

@@ -7,10 +7,21 @@
 
 namespace cosmos {
 
+const char* lost_part_reason_text(LostPartReason reason) {
+  switch (reason) {
+    case LostPartReason::kNoBuilder:
+      return "dropped: no free part builder when it arrived (realtime.part_builders)";
+    case LostPartReason::kQueueFull:
+      return "dropped: the recognizer's queue was full (realtime.part_queue_slots)";
+    case LostPartReason::kNoRowMemory:
+      return "dropped: the part builders' row pool was used up (realtime.row_blocks)";
+  }
+  return "dropped";
+}
+
 PartBuilder::PartBuilder(const CosmosParameters& cosmos_parameters, int width, int max_rows,
-                         double grid_mm)
-    : cosmos(cosmos_parameters, width, max_rows, grid_mm, grid_mm),
-      labels(static_cast<std::size_t>(width) * static_cast<std::size_t>(max_rows), -1) {}
+                         double grid_mm, RowBlockPool& row_pool)
+    : cosmos(cosmos_parameters, width, max_rows, grid_mm, grid_mm, row_pool) {}
 
 bool PartBuilder::owns(std::int64_t id) const {
   if (id == part_id) return true;
@@ -34,6 +45,9 @@ ScanLoop::ScanLoop(const ScanLoopSettings& settings)
     : settings_(settings),
       conditioner_(settings.conditioning, settings.cosmos.fit),
       tracker_(tracking_with_shadows(settings), conditioner_.width()),
+      row_pool_(std::max(settings.parts.row_blocks, 1),
+                static_cast<std::size_t>(std::max(settings.parts.row_block_rows, 1)) *
+                    PartRows::record_bytes(conditioner_.width())),
       completed_(static_cast<std::size_t>(std::max(settings.parts.part_queue_slots, 1))),
       returned_(static_cast<std::size_t>(std::max(settings.parts.builders, 1))),
       lost_(static_cast<std::size_t>(PartQueueSettings::kLostPartSlots)),
@@ -44,7 +58,7 @@ ScanLoop::ScanLoop(const ScanLoopSettings& settings)
   for (int b = 0; b < std::max(settings.parts.builders, 1); ++b) {
     builders_.push_back(std::make_unique<PartBuilder>(settings.cosmos, conditioner_.width(),
                                                       settings.max_part_rows,
-                                                      settings.conditioning.grid_mm));
+                                                      settings.conditioning.grid_mm, row_pool_));
     free_builders_.push_back(b);
   }
   open_builders_.reserve(builders_.size());
@@ -64,19 +78,25 @@ double ScanLoop::x0_loop_mm() const {
   return -(settings_.conditioning.x_min_mm + (width() - 1) * settings_.conditioning.grid_mm);
 }
 
+void ScanLoop::free_builder(int index) {
+  builders_[static_cast<std::size_t>(index)]->cosmos.release_rows();
+  free_builders_.push_back(index);
+}
+
 void ScanLoop::reclaim_returned() {
   int index = -1;
-  while (returned_.try_pop(index)) free_builders_.push_back(index);
+  while (returned_.try_pop(index)) free_builder(index);
+}
+
+std::size_t ScanLoop::builders_at_recognizer() const {
+  return builders_.size() - free_builders_.size() - open_builders_.size();
 }
 
 int ScanLoop::acquire_builder() {
   reclaim_returned();
   // Wait only for builders the recognizer holds: those of open parts come back only when
   // their parts complete, which needs this very loop to go on.
-  const auto at_recognizer = [this] {
-    return builders_.size() - free_builders_.size() - open_builders_.size();
-  };
-  while (free_builders_.empty() && settings_.wait_for_recognizer && at_recognizer() > 0) {
+  while (free_builders_.empty() && settings_.wait_for_recognizer && builders_at_recognizer() > 0) {
     std::this_thread::yield();
     reclaim_returned();
   }
@@ -116,6 +136,7 @@ void ScanLoop::complete(const TrackedPart& part) {
                                       [&part](const UnbuiltPart& u) { return u.id == part.id; });
     if (unbuilt == unbuilt_.end()) return;
     const RowStamp first = unbuilt->first;
+    const LostPartReason reason = unbuilt->reason;
     unbuilt_.erase(unbuilt);
     if (part.noise) {
       counters_.noise_components.fetch_add(1, std::memory_order_relaxed);
@@ -128,15 +149,15 @@ void ScanLoop::complete(const TrackedPart& part) {
       return;
     }
     const RowStamp& last = stamp_of_row(part.last_row);
-    report_lost({LostPartReason::kNoBuilder, first.profile, last.profile, first.encoder_ticks,
-                 last.encoder_ticks, last.t_us, width() - 1 - part.column_max,
-                 width() - 1 - part.column_min, part.max_z_mm});
+    report_lost({reason, first.profile, last.profile, first.encoder_ticks, last.encoder_ticks,
+                 last.t_us, width() - 1 - part.column_max, width() - 1 - part.column_min,
+                 part.max_z_mm});
     return;
   }
   open_builders_.erase(std::find(open_builders_.begin(), open_builders_.end(), index));
   if (part.merged_into >= 0 || part.noise) {
     counters_.noise_components.fetch_add(part.noise ? 1 : 0, std::memory_order_relaxed);
-    free_builders_.push_back(index);
+    free_builder(index);
     return;
   }
   PartBuilder& builder = *builders_[static_cast<std::size_t>(index)];
@@ -155,7 +176,7 @@ void ScanLoop::complete(const TrackedPart& part) {
                    builder.first_profile + builder.cosmos.rows() - 1, builder.first_encoder_ticks,
                    builder.last_encoder_ticks, builder.last_t_us, builder.column_min,
                    builder.column_max, part.max_z_mm});
-      free_builders_.push_back(index);
+      free_builder(index);
       return;
     }
     std::this_thread::yield();
@@ -178,13 +199,11 @@ void ScanLoop::start_parts(std::int64_t profile_index, const Profile& profile) {
     PartBuilder& builder = *builders_[static_cast<std::size_t>(index)];
     builder.cosmos.begin_part(x0_loop_mm(),
                               static_cast<double>(profile_index) * settings_.conditioning.grid_mm);
-    // No clearing of labels: every row the part gets is written whole (process), and only
-    // those are read; filling the whole width x max_rows buffer here would make a part's
-    // first profile the loop's slowest.
     builder.part_id = part.id;
     builder.merged_count = 0;
     builder.first_profile = profile_index;
     builder.first_encoder_ticks = profile.encoder_ticks;
+    builder.first_t_us = profile.t_us;
     builder.truncated = false;
     builder.last_encoder_ticks = profile.encoder_ticks;
     builder.last_t_us = profile.t_us;
@@ -192,8 +211,50 @@ void ScanLoop::start_parts(std::int64_t profile_index, const Profile& profile) {
   }
 }
 
+bool ScanLoop::add_row_to(int index, const Profile& profile) {
+  PartBuilder& builder = *builders_[static_cast<std::size_t>(index)];
+  AddRowResult added = builder.cosmos.add_row(row_loop_.data());
+  // Unpaced, the blocks of the parts at the recognizer are waited for (as builders are): what
+  // is lost must not depend on how fast the recognizer was.
+  while (added == AddRowResult::kNoMemory && settings_.wait_for_recognizer &&
+         builders_at_recognizer() > 0) {
+    std::this_thread::yield();
+    reclaim_returned();
+    added = builder.cosmos.add_row(row_loop_.data());
+  }
+  if (added == AddRowResult::kTooLong) {
+    builder.truncated = true;
+    return true;
+  }
+  if (added == AddRowResult::kNoMemory) {
+    // Its rows so far are given back at once, for the other parts; the tracker goes on
+    // following it, and its ERROR pose goes out when it completes (complete()).
+    counters_.parts_out_of_rows.fetch_add(1, std::memory_order_relaxed);
+    if (unbuilt_.size() < unbuilt_.capacity())
+      unbuilt_.push_back({builder.part_id,
+                          {builder.first_profile, builder.first_encoder_ticks, builder.first_t_us},
+                          LostPartReason::kNoRowMemory});
+    else
+      counters_.parts_dropped.fetch_add(1, std::memory_order_relaxed);
+    open_builders_.erase(std::find(open_builders_.begin(), open_builders_.end(), index));
+    free_builder(index);
+    return false;
+  }
+  const PartRow row = builder.cosmos.row(builder.cosmos.rows() - 1);
+  const std::vector<std::int64_t>& labels = tracker_.row_labels();
+  const int last_column = width() - 1;
+  for (int c = row.column_begin; c < row.column_end; ++c)
+    row.tracker_label[row.at(c)] = labels[static_cast<std::size_t>(last_column - c)];
+  builder.last_encoder_ticks = profile.encoder_ticks;
+  builder.last_t_us = profile.t_us;
+  return true;
+}
+
 void ScanLoop::process(const Profile& profile) {
   const auto profile_index = static_cast<std::int64_t>(profile.seq);
+  // Builders the recognizer is done with give their row blocks back before this row needs
+  // any.
+  reclaim_returned();
   // A refused profile becomes an empty row, which keeps the rows in step with the profiles
   // (a part's length and encoder range stay right); the refusal is counted for the operator.
   if (!conditioner_.condition(profile, row_belt_.data(), belt_seen_.data()))
@@ -204,21 +265,10 @@ void ScanLoop::process(const Profile& profile) {
     complete(part);
   counters_.runs_dropped.store(tracker_.dropped_runs(), std::memory_order_relaxed);
   start_parts(profile_index, profile);
-  const std::vector<std::int64_t>& labels = tracker_.row_labels();
-  const int w = width();
-  for (int index : open_builders_) {
-    PartBuilder& builder = *builders_[static_cast<std::size_t>(index)];
-    const int row = builder.cosmos.rows();
-    if (!builder.cosmos.add_row(row_loop_.data())) {
-      builder.truncated = true;
-      continue;
-    }
-    std::int64_t* out = builder.labels.data() + static_cast<std::size_t>(row) * w;
-    for (int c = 0; c < w; ++c) out[c] = labels[static_cast<std::size_t>(w - 1 - c)];
-    builder.last_encoder_ticks = profile.encoder_ticks;
-    builder.last_t_us = profile.t_us;
-  }
+  for (std::size_t k = 0; k < open_builders_.size();)
+    k += add_row_to(open_builders_[k], profile) ? 1 : 0;
   ++row_index_;
+  counters_.row_blocks_peak.store(row_pool_.peak_blocks_in_use(), std::memory_order_relaxed);
   counters_.profiles.fetch_add(1, std::memory_order_relaxed);
 }
 

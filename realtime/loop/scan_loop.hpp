@@ -30,6 +30,7 @@
 #include "realtime/loop/incremental_cosmos.hpp"
 #include "realtime/loop/part_tracker.hpp"
 #include "realtime/loop/profile_conditioner.hpp"
+#include "realtime/loop/row_block_pool.hpp"
 #include "realtime/rt/spsc_ring.hpp"
 
 namespace cosmos {
@@ -39,9 +40,12 @@ inline constexpr int kMaxMergedIds = 16;
 // A part the loop could not hand to the recognizer. It is still reported (an ERROR pose:
 // a robot or reject gate must learn that something passed), with what the tracker knows.
 enum class LostPartReason : std::uint8_t {
-  kNoBuilder,  // it started while every builder was taken
-  kQueueFull,  // it completed while the recognizer's queue was full
+  kNoBuilder,    // it started while every builder was taken
+  kQueueFull,    // it completed while the recognizer's queue was full
+  kNoRowMemory,  // a row of it found the builders' row pool empty
 };
+// The reason as its ERROR pose says it, naming the setting that ran out.
+const char* lost_part_reason_text(LostPartReason reason);
 
 struct LostPart {
   LostPartReason reason = LostPartReason::kNoBuilder;
@@ -55,18 +59,20 @@ struct LostPart {
   float max_z_mm = 0;
 };
 
-// One part's incremental COSMOS and what the recognizer needs besides it.
+// One part's incremental COSMOS (its rows hold the tracker's part id of every pixel) and
+// what the recognizer needs besides it.
 struct PartBuilder {
-  PartBuilder(const CosmosParameters& cosmos, int width, int max_rows, double grid_mm);
+  PartBuilder(const CosmosParameters& cosmos, int width, int max_rows, double grid_mm,
+              RowBlockPool& row_pool);
 
   IncrementalCosmos cosmos;
-  std::vector<std::int64_t> labels;  // tracker part id per pixel (width x max_rows), -1 none
   std::int64_t part_id = -1;
   std::array<std::int64_t, kMaxMergedIds> merged_ids{};  // ids merged into this part
   int merged_count = 0;
   std::int64_t first_profile = 0;  // the source's profile index of row 0
   std::int64_t first_encoder_ticks = 0;
   std::int64_t last_encoder_ticks = 0;
+  std::int64_t first_t_us = 0;
   std::int64_t last_t_us = 0;  // exposure time of the part's last row (data time)
   int column_min = 0;          // the tracked part's extent, loop-frame columns
   int column_max = 0;
@@ -82,7 +88,10 @@ struct PartBuilder {
   bool owns(std::int64_t id) const;
 };
 
-// The loop's part builders and its queue to the recognizer (keys of the cell's `realtime:`).
+// The loop's part builders, the pool their rows are kept in and the queue to the recognizer
+// (keys of the cell's `realtime:`). The memory each costs is stated in the key's description
+// for the default grid (640 columns, 15 smoothing iterations); it scales with the grid's
+// columns (a part's rows with the part's own).
 struct PartQueueSettings {
   // Parts in flight (open, queued and being recognized). A part that starts while every
   // builder is taken is dropped, so there must be enough for the parts that arrive during
@@ -90,15 +99,32 @@ struct PartQueueSettings {
   // bench/scan_loop_bench.cpp counts parts_dropped at the default cell's pace).
   int builders = 8;
   int part_queue_slots = 8;  // loop -> recognizer completed parts
+  // The row pool shared by the builders: row_blocks blocks of row_block_rows full-width rows
+  // each (a row takes 67 bytes per column between its first and last sample). A part holds
+  // the blocks its rows fill until the recognizer is done with it; a part whose next row
+  // finds no block left is dropped and counted like one that finds no builder.
+  int row_blocks = 128;
+  int row_block_rows = 16;
   // Parts lost for want of a builder or queue slot, queued for their ERROR poses: fixed
   // capacity (the hot path never allocates); beyond it a loss is only counted.
   static constexpr int kLostPartSlots = 64;
 
   template <class Visitor>
   void visit(Visitor& v) {
-    v("part_builders", builders, "parts in flight (open, queued, being recognized)", Range{1, 64});
+    v("part_builders", builders,
+      "parts in flight (open, queued, being recognized); each ~4 MB (its working rows and fit "
+      "kernels), its part's rows are in the row pool",
+      Range{1, 64});
     v("part_queue_slots", part_queue_slots, "completed parts queued for the recognizer",
       Range{1, 1024});
+    v("row_blocks", row_blocks,
+      "blocks of the builders' shared row pool, allocated at start, resident once used "
+      "(all of them with lock_memory); 0.65 MB each",
+      Range{1, 65536});
+    v("row_block_rows", row_block_rows,
+      "full-width rows per row-pool block (a part's rows hold only its own columns, so "
+      "more of them fit); 42 kB per row",
+      Range{1, 4096});
   }
 };
 
@@ -122,9 +148,11 @@ struct ScanLoopSettings {
 struct ScanLoopCounters {
   std::atomic<std::int64_t> profiles{0};
   std::atomic<std::int64_t> parts_seen{0};
-  std::atomic<std::int64_t> parts_dropped{0};    // no free builder or queue slot
-  std::atomic<std::int64_t> lost_unreported{0};  // dropped while lost_parts() was full
-  std::atomic<std::int64_t> parts_truncated{0};  // longer than max_part_rows
+  std::atomic<std::int64_t> parts_dropped{0};      // no free builder, row block or queue slot
+  std::atomic<std::int64_t> parts_out_of_rows{0};  // of them: the row pool was empty
+  std::atomic<std::int64_t> row_blocks_peak{0};    // the most row-pool blocks held at once
+  std::atomic<std::int64_t> lost_unreported{0};    // dropped while lost_parts() was full
+  std::atomic<std::int64_t> parts_truncated{0};    // longer than max_part_rows
   std::atomic<std::int64_t> noise_components{0};
   std::atomic<std::int64_t> profiles_refused{0};  // the conditioner refused its grid
   std::atomic<std::int64_t> runs_dropped{0};      // the tracker's, beyond its limits
@@ -147,6 +175,7 @@ class ScanLoop {
   // pose by the recognizer's thread (report_lost_part, part_recognition.hpp).
   SpscRing<LostPart>& lost_parts() { return lost_; }
   PartBuilder& builder(int index) { return *builders_[static_cast<std::size_t>(index)]; }
+  const RowBlockPool& row_pool() const { return row_pool_; }
   const ScanLoopCounters& counters() const { return counters_; }
   int width() const { return conditioner_.width(); }
   // The loop frame's x of column 0: x_L = x0 + column · grid (mirrored belt x).
@@ -154,7 +183,13 @@ class ScanLoop {
 
  private:
   void reclaim_returned();
+  // Builders handed to the recognizer and not yet returned.
+  std::size_t builders_at_recognizer() const;
   int acquire_builder();
+  void free_builder(int index);
+  // Adds the profile's row to an open part's builder; false when the part is lost (no row
+  // block: it becomes an unbuilt part, reported when the tracker completes it).
+  bool add_row_to(int index, const Profile& profile);
   void start_parts(std::int64_t profile_index, const Profile& profile);
   void complete(const TrackedPart& part);
   int builder_of(std::int64_t id) const;
@@ -171,11 +206,13 @@ class ScanLoop {
   struct UnbuiltPart {
     std::int64_t id = -1;
     RowStamp first;
+    LostPartReason reason = LostPartReason::kNoBuilder;
   };
 
   ScanLoopSettings settings_;
   ProfileConditioner conditioner_;
   PartTracker tracker_;
+  RowBlockPool row_pool_;  // before the builders, which give their blocks back to it
   std::vector<std::unique_ptr<PartBuilder>> builders_;
   std::vector<int> free_builders_;  // stack, capacity reserved
   std::vector<int> open_builders_;  // builders of open parts

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 
@@ -34,16 +36,24 @@ RangeImage relief(int width, int height, std::uint64_t seed) {
   return image;
 }
 
+// Enough blocks for any part of these tests.
+RowBlockPool& test_pool() {
+  static RowBlockPool pool(64, 16 * PartRows::record_bytes(200));
+  return pool;
+}
+
 void expect_same_as_whole_image(IncrementalCosmos& builder, const RangeImage& part,
                                 const CosmosParameters& parameters) {
   builder.begin_part(part.origin_x_mm, part.origin_y_mm);
-  for (int row = 0; row < part.height(); ++row) ASSERT_TRUE(builder.add_row(part.z_mm.row(row)));
+  for (int row = 0; row < part.height(); ++row)
+    ASSERT_EQ(builder.add_row(part.z_mm.row(row)), AddRowResult::kAdded);
   builder.finish();
   const ViewAnalysis whole = analyze_view(part, parameters);
   // The builder's fields, finished by the same code as whole-image analysis.
   ViewAnalysis incremental;
-  incremental.frames = builder.frames();
-  incremental.field = builder.field();
+  incremental.frames = builder.whole_frames();
+  incremental.field = builder.whole_field();
+  const ShapeIndexField& field = incremental.field;
   finish_view_analysis(incremental, parameters);
   const CsmpSegmentation& segmentation = incremental.segmentation;
 
@@ -52,11 +62,11 @@ void expect_same_as_whole_image(IncrementalCosmos& builder, const RangeImage& pa
   for (int row = 0; row < part.height(); ++row) {
     for (int column = 0; column < part.width(); ++column) {
       const auto expected_label = whole.field.label(column, row);
-      label_mismatches += builder.field().label(column, row) != expected_label;
+      label_mismatches += field.label(column, row) != expected_label;
       if (expected_label != SurfaceLabel::kInvalid)
-        max_shape_index_difference = std::max(
-            max_shape_index_difference, std::abs(double{builder.field().shape_index(column, row)} -
-                                                 whole.field.shape_index(column, row)));
+        max_shape_index_difference =
+            std::max(max_shape_index_difference, std::abs(double{field.shape_index(column, row)} -
+                                                          whole.field.shape_index(column, row)));
       patch_mismatches += segmentation.patch_of_pixel(column, row) !=
                           whole.segmentation.patch_of_pixel(column, row);
     }
@@ -73,11 +83,23 @@ void expect_same_as_whole_image(IncrementalCosmos& builder, const RangeImage& pa
   EXPECT_EQ(incremental.valid_pixels, whole.valid_pixels);
   EXPECT_EQ(incremental.view.patches.size(), whole.view.patches.size());
   EXPECT_GT(whole.segmentation.patch_count, 1);
+  // Every frame component and position equals the whole image's.
+  int frame_mismatches = 0;
+  for (std::size_t pixel = 0; pixel < whole.frames.valid.size(); ++pixel) {
+    frame_mismatches += incremental.frames.valid[pixel] != whole.frames.valid[pixel];
+    for (int c = 0; c < kFrameComponents; ++c)
+      frame_mismatches += incremental.frames.frame[c][pixel] != whole.frames.frame[c][pixel];
+    for (int a = 0; a < 3; ++a)
+      frame_mismatches +=
+          incremental.frames.position_mm[a][pixel] != whole.frames.position_mm[a][pixel];
+  }
+  EXPECT_EQ(frame_mismatches, 0);
+  builder.release_rows();
 }
 
 TEST(IncrementalCosmos, EqualsWholeImageProcessing) {
   const CosmosParameters parameters;
-  IncrementalCosmos builder(parameters, 110, 160, 0.4, 0.4);
+  IncrementalCosmos builder(parameters, 110, 160, 0.4, 0.4, test_pool());
   expect_same_as_whole_image(builder, relief(110, 90, 1), parameters);
   // The same builder, reused for a longer part: nothing of the first part leaks in.
   expect_same_as_whole_image(builder, relief(110, 140, 2), parameters);
@@ -87,7 +109,7 @@ TEST(IncrementalCosmos, AReusedBuilderEqualsWholeImageAfterALongerWiderPart) {
   // The scan loop hands a builder to whichever part starts next: what a longer, wider part
   // left in its rows and rings must not leak into a shorter, narrower one.
   const CosmosParameters parameters;
-  IncrementalCosmos builder(parameters, 200, 160, 0.4, 0.4);
+  IncrementalCosmos builder(parameters, 200, 160, 0.4, 0.4, test_pool());
   RangeImage wide(200, 150, 0.4, 0.4);
   const RangeImage first = relief(110, 150, 5);
   for (int row = 0; row < 150; ++row)
@@ -109,7 +131,7 @@ TEST(IncrementalCosmos, EqualsWholeImageForAnyIterationCount) {
   for (int iterations : {0, 1, 2, 4}) {
     CosmosParameters parameters;
     parameters.smoothing.iterations = iterations;
-    IncrementalCosmos builder(parameters, 110, 100, 0.4, 0.4);
+    IncrementalCosmos builder(parameters, 110, 100, 0.4, 0.4, test_pool());
     SCOPED_TRACE(iterations);
     expect_same_as_whole_image(builder, relief(110, 70, 3), parameters);
   }
@@ -126,17 +148,99 @@ TEST(IncrementalCosmos, EqualsWholeImageForAPartNarrowerThanTheBelt) {
       belt.z_mm(60 + column, row) = part.z_mm(column, row);
   }
   const CosmosParameters parameters;
-  IncrementalCosmos builder(parameters, 200, 100, 0.4, 0.4);
+  IncrementalCosmos builder(parameters, 200, 100, 0.4, 0.4, test_pool());
   expect_same_as_whole_image(builder, belt, parameters);
+}
+
+// A part in the middle of a belt `width` wide (NaN beside it).
+RangeImage on_belt(const RangeImage& part, int width, int first_column) {
+  RangeImage belt(width, part.height(), part.pixel_size_x_mm, part.pixel_size_y_mm);
+  belt.origin_x_mm = part.origin_x_mm;
+  belt.origin_y_mm = part.origin_y_mm;
+  for (int row = 0; row < part.height(); ++row)
+    std::copy(part.z_mm.row(row), part.z_mm.row(row) + part.width(),
+              belt.z_mm.row(row) + first_column);
+  return belt;
+}
+
+void build(IncrementalCosmos& builder, const RangeImage& part) {
+  builder.begin_part(part.origin_x_mm, part.origin_y_mm);
+  for (int row = 0; row < part.height(); ++row)
+    ASSERT_EQ(builder.add_row(part.z_mm.row(row)), AddRowResult::kAdded);
+  builder.finish();
+}
+
+template <class T>
+int differing_planes(const T* a, const T* b, int n) {
+  return std::memcmp(a, b, static_cast<std::size_t>(n) * sizeof(T)) != 0 ? 1 : 0;
+}
+
+// Every plane of every row, bit for bit.
+void expect_identical_rows(const IncrementalCosmos& a, const IncrementalCosmos& b) {
+  ASSERT_EQ(a.rows(), b.rows());
+  int differences = 0;
+  for (int r = 0; r < a.rows(); ++r) {
+    const PartRow x = a.row(r), y = b.row(r);
+    ASSERT_EQ(x.column_begin, y.column_begin) << r;
+    ASSERT_EQ(x.column_end, y.column_end) << r;
+    const int n = x.column_end - x.column_begin;
+    differences +=
+        differing_planes(x.z_mm, y.z_mm, n) + differing_planes(x.fitted_z_mm, y.fitted_z_mm, n) +
+        differing_planes(x.valid, y.valid, n) + differing_planes(x.same_side, y.same_side, n) +
+        differing_planes(x.label, y.label, n) + differing_planes(x.shape_index, y.shape_index, n) +
+        differing_planes(x.curvedness_per_mm, y.curvedness_per_mm, n) +
+        differing_planes(x.area_mm2, y.area_mm2, n);
+    for (int c = 0; c < kFrameComponents; ++c)
+      differences += differing_planes(x.frame[c], y.frame[c], n);
+  }
+  EXPECT_EQ(differences, 0);
+}
+
+TEST(IncrementalCosmos, ABuilderReusedAfterALongPartAndAShortOneEqualsAFreshOne) {
+  // The long part's rows move through the working window several times; the short one ends
+  // with the window's rows barely used. Neither may leave anything in the next part.
+  const CosmosParameters parameters;
+  IncrementalCosmos reused(parameters, 200, 400, 0.4, 0.4, test_pool());
+  build(reused, relief(200, 300, 11));
+  reused.release_rows();
+  build(reused, on_belt(relief(150, 12, 12), 200, 10));
+  reused.release_rows();
+  const RangeImage part = on_belt(relief(110, 140, 13), 200, 45);
+  build(reused, part);
+  IncrementalCosmos fresh(parameters, 200, 400, 0.4, 0.4, test_pool());
+  build(fresh, part);
+  expect_identical_rows(reused, fresh);
+  EXPECT_GT(reused.rows(), IncrementalCosmos::fit_window_rows(parameters));
+  // Only the part's columns are kept.
+  EXPECT_EQ(reused.row(70).column_begin, 45);
+  EXPECT_EQ(reused.row(70).column_end, 155);
+}
+
+TEST(IncrementalCosmos, ARowThePoolHasNoRoomForChangesNothing) {
+  const CosmosParameters parameters;
+  RowBlockPool pool(1, 2 * PartRows::record_bytes(20));
+  IncrementalCosmos builder(parameters, 20, 10, 0.4, 0.4, pool);
+  builder.begin_part(0, 0);
+  const std::vector<float> row(20, 1.0f);
+  for (int i = 0; i < 2; ++i) EXPECT_EQ(builder.add_row(row.data()), AddRowResult::kAdded);
+  EXPECT_EQ(builder.add_row(row.data()), AddRowResult::kNoMemory);
+  EXPECT_EQ(builder.rows(), 2);
+  // A row without samples needs no room.
+  const std::vector<float> empty(20, std::numeric_limits<float>::quiet_NaN());
+  EXPECT_EQ(builder.add_row(empty.data()), AddRowResult::kAdded);
+  builder.release_rows();
+  EXPECT_EQ(pool.blocks_in_use(), 0);
+  builder.begin_part(0, 0);
+  EXPECT_EQ(builder.add_row(row.data()), AddRowResult::kAdded);
 }
 
 TEST(IncrementalCosmos, RefusesRowsBeyondItsCapacity) {
   const CosmosParameters parameters;
-  IncrementalCosmos builder(parameters, 20, 3, 0.4, 0.4);
+  IncrementalCosmos builder(parameters, 20, 3, 0.4, 0.4, test_pool());
   builder.begin_part(0, 0);
   const std::vector<float> row(20, 1.0f);
-  for (int i = 0; i < 3; ++i) EXPECT_TRUE(builder.add_row(row.data()));
-  EXPECT_FALSE(builder.add_row(row.data()));
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(builder.add_row(row.data()), AddRowResult::kAdded);
+  EXPECT_EQ(builder.add_row(row.data()), AddRowResult::kTooLong);
   builder.finish();
   EXPECT_EQ(builder.rows(), 3);
 }
