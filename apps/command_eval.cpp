@@ -1,12 +1,15 @@
 // `cosmos eval --modelbase FILE --catalog FILE --tests N --seed S [--noise-mm S]
 // [--unknown PART,...] [--only TEST,...] [--threads N] --out DIR`: N seeded random-pose scans
 // of the base's parts and scans of parts it does not hold, each recognized; metrics.json and
-// report.html (sim/evaluation/evaluation_report.hpp) in DIR. --only re-runs chosen tests of the
-// same plan (by the numbers the report shows), e.g. the failures of a long run.
+// report.html (sim/evaluation/evaluation_report.hpp) in DIR, and confusions.json: which part
+// was taken for which, and why known parts were rejected (evaluation_confusions.hpp). --only
+// re-runs chosen tests of the same plan (by the numbers the report shows), e.g. the failures of a
+// long run.
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -20,6 +23,7 @@
 #include "core/io/model_base_file.hpp"
 #include "core/io/recorded_parameters.hpp"
 #include "scanner/scanner_config.hpp"
+#include "sim/evaluation/evaluation_confusions.hpp"
 #include "sim/evaluation/evaluation_report.hpp"
 #include "sim/evaluation/evaluation_scans.hpp"
 #include "sim/model_base_build/model_base_parameters.hpp"
@@ -137,7 +141,14 @@ void run(const EvalOptions& options) {
   std::vector<std::string> names;
   for (const PartEntry& entry : catalog.parts) names.push_back(entry.name);
   write_evaluation_report(options.out, records, metrics, names);
+  const EvaluationConfusions confusions = count_confusions(records);
+  const fs::path confusions_path = fs::path(options.out) / "confusions.json";
+  std::ofstream confusions_file(confusions_path, std::ios::binary);
+  confusions_file << confusions_json(confusions).dump(2) << "\n";
+  confusions_file.close();
+  if (!confusions_file) throw InputError("cannot write " + confusions_path.string());
   std::printf("%s\n", metrics_json(metrics).dump(2).c_str());
+  std::printf("%s", confusions_text(confusions).c_str());
   std::printf("eval: report in %s\n", (fs::path(options.out) / "report.html").string().c_str());
 }
 

@@ -6,18 +6,19 @@
 
 namespace cosmos {
 
-PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBase& base,
-                                 int matched, const RigidTransform& T_model_scene,
-                                 const RegistrationParameters& registration,
-                                 const PartSupportParameters& parameters, ModelSurfaces& surfaces) {
-  PartSupport support;
-  if (scene.size() == 0) return support;
+int part_surface_distances(const RegistrationPoints& scene, const ModelBase& base, int matched,
+                           const RigidTransform& T_model_scene,
+                           const RegistrationParameters& registration,
+                           const PartSupportParameters& parameters, ModelSurfaces& surfaces,
+                           std::vector<double>& nearest_mm) {
+  nearest_mm.clear();
+  if (scene.size() == 0) return 0;
   RegistrationParameters strict = registration;
   strict.max_correspondence_distance_mm = parameters.inlier_distance_mm;
   const ModelBaseView& view = base.views[static_cast<std::size_t>(matched)];
-  std::vector<double> nearest_mm, distance_mm;
+  std::vector<double> distance_mm;
   correspondence_distances(scene, surfaces.points(matched), T_model_scene, strict, nearest_mm);
-  support.views_used = 1;
+  int views_used = 1;
 
   const RigidTransform T_part_scene = view.T_scanner_part.inverse() * T_model_scene;
   const double min_cosine = std::cos(parameters.neighbour_view_angle_deg * std::numbers::pi / 180);
@@ -47,9 +48,20 @@ PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBas
       double& nearest = nearest_mm[static_cast<std::size_t>(unexplained[k])];
       nearest = std::min(nearest, distance_mm[k]);
     }
-    ++support.views_used;
+    ++views_used;
   }
+  return views_used;
+}
 
+PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBase& base,
+                                 int matched, const RigidTransform& T_model_scene,
+                                 const RegistrationParameters& registration,
+                                 const PartSupportParameters& parameters, ModelSurfaces& surfaces) {
+  PartSupport support;
+  if (scene.size() == 0) return support;
+  std::vector<double> nearest_mm;
+  support.views_used = part_surface_distances(scene, base, matched, T_model_scene, registration,
+                                              parameters, surfaces, nearest_mm);
   int inliers = 0;
   double sum_squares = 0;
   for (double d : nearest_mm) {

@@ -42,8 +42,18 @@ struct PartSupport {
   int views_used = 0;
 };
 
-// `matched` indexes ModelBase::views; T_model_scene registers the scene onto it. The views'
-// surfaces come from (and stay in) `surfaces`.
+// Each scene point's distance to the part's surface so placed (the nearest over the views
+// that join it; farther than inlier_distance_mm: some value above it, maybe infinity), in
+// `distance_mm`; returns the number of views asked. `matched` indexes ModelBase::views;
+// T_model_scene registers the scene onto it. The views' surfaces come from (and stay in)
+// `surfaces`.
+int part_surface_distances(const RegistrationPoints& scene, const ModelBase& base, int matched,
+                           const RigidTransform& T_model_scene,
+                           const RegistrationParameters& registration,
+                           const PartSupportParameters& parameters, ModelSurfaces& surfaces,
+                           std::vector<double>& distance_mm);
+
+// The fraction of those within inlier_distance_mm, and their RMS distance.
 PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBase& base,
                                  int matched, const RigidTransform& T_model_scene,
                                  const RegistrationParameters& registration,

@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 
 #include "core/modelbase/model_surface.hpp"
+#include "core/recognition/part_ambiguity.hpp"
 #include "core/recognition/part_pose_search.hpp"
 #include "core/recognition/part_support.hpp"
 #include "core/recognition/pose_hypotheses.hpp"
+#include "core/recognition/surface_seen.hpp"
 
 namespace cosmos {
 namespace {
@@ -57,6 +60,19 @@ const RecognitionCandidate* best_candidate(const std::vector<RecognitionCandidat
   for (const RecognitionCandidate& candidate : candidates)
     if (candidate.registered && (!best || candidate.score > best->score)) best = &candidate;
   return best;
+}
+
+// Registered candidates, best score first (ties: the order they were verified in).
+std::vector<const RecognitionCandidate*> ranked_candidates(
+    const std::vector<RecognitionCandidate>& candidates) {
+  std::vector<const RecognitionCandidate*> ranked;
+  for (const RecognitionCandidate& candidate : candidates)
+    if (candidate.registered) ranked.push_back(&candidate);
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const RecognitionCandidate* a, const RecognitionCandidate* b) {
+                     return a->score > b->score;
+                   });
+  return ranked;
 }
 
 }  // namespace
@@ -127,20 +143,82 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   ScenePoints points{std::move(scene_points.points), {}};
   points.coarse = spread_subset(points.all, parameters_.coarse_points);
   ModelSurfaces surfaces(model_base_);
-  for (const SpectralCandidate& candidate : selected) {
-    result.candidates.push_back(verify(analysis, points, candidate, surfaces,
+  std::size_t next = 0;
+  while (next < selected.size()) {
+    result.candidates.push_back(verify(analysis, points, selected[next++], surfaces,
                                        result.timings.matching_ms, result.timings.registration_ms));
     ++result.views_examined;
     if (result.candidates.back().registered &&
         result.candidates.back().inlier_fraction >= parameters_.sufficient_support)
       break;
   }
+  // A view that explains enough ends verification, but the decision needs the best other part
+  // to compare with (part_ambiguity.hpp): the next selected views of parts not verified yet.
+  const int sufficient_part = next < selected.size() ? result.candidates.back().part : -1;
+  for (int rivals = 0; sufficient_part >= 0 && next < selected.size() &&
+                       rivals < parameters_.ambiguity.rival_verifications;
+       ++next) {
+    const int part = model_base_.views[static_cast<std::size_t>(selected[next].view)].part_index;
+    if (std::any_of(result.candidates.begin(), result.candidates.end(),
+                    [part](const RecognitionCandidate& c) { return c.part == part; }))
+      continue;
+    result.candidates.push_back(verify(analysis, points, selected[next], surfaces,
+                                       result.timings.matching_ms, result.timings.registration_ms));
+    ++result.views_examined;
+    ++rivals;
+  }
+  // A candidate is only as good as its placed surface is seen in the scene (surface_seen.hpp):
+  // one that puts surface where the scanner saw none explains the scene's points by chance.
+  const auto seen_fraction = [&](const RecognitionCandidate& candidate) {
+    return measure_surface_seen(scene, surfaces.points(candidate.view), candidate.T_model_scene,
+                                parameters_.surface_seen)
+        .seen_fraction();
+  };
   const RecognitionCandidate* best = best_candidate(result.candidates);
-  if (!best || best->inlier_fraction < parameters_.sufficient_support) {
+  if (!best || best->inlier_fraction < parameters_.sufficient_support ||
+      seen_fraction(*best) < parameters_.min_seen_fraction) {
     search_candidate_parts(analysis, points, surfaces, result);
     best = best_candidate(result.candidates);
   }
   if (!best) return finish("no candidate view could be registered");
+
+  // The winner is the best candidate whose surface is seen; the rival the best such
+  // candidate of another part (part_ambiguity.hpp).
+  const RecognitionCandidate* rival = nullptr;
+  const RecognitionCandidate* winner = nullptr;
+  const auto choose = [&] {
+    winner = rival = nullptr;
+    best = best_candidate(result.candidates);
+    result.seen_fraction = seen_fraction(*best);
+    for (const RecognitionCandidate* candidate : ranked_candidates(result.candidates)) {
+      if (winner && candidate->part == winner->part) continue;
+      const double seen = candidate == best ? result.seen_fraction : seen_fraction(*candidate);
+      if (seen < parameters_.min_seen_fraction) continue;
+      if (!winner) {
+        winner = candidate;
+        result.seen_fraction = seen;
+        continue;
+      }
+      rival = candidate;
+      result.runner_up_seen_fraction = seen;
+      break;
+    }
+  };
+  choose();
+  // A rival only verified on one selected view may have registered far from its best pose;
+  // the pose search over its part's views gives it its fair chance before it is compared.
+  if (rival && parameters_.ambiguity.search_rival_part) {
+    const int rival_part = rival->part;
+    if (std::none_of(result.candidates.begin(), result.candidates.end(),
+                     [rival_part](const RecognitionCandidate& c) {
+                       return c.part == rival_part && c.from_pose_search;
+                     })) {
+      search_candidate_parts(analysis, points, surfaces, result, rival_part);
+      choose();
+    }
+  }
+  const bool none_seen = winner == nullptr;
+  if (winner) best = winner;
 
   result.part = best->part;
   result.view = best->view;
@@ -148,8 +226,18 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   result.spectral_distance = best->spectral_distance;
   result.registration_rms_mm = best->rms_mm;
   result.inlier_fraction = best->inlier_fraction;
+  if (rival) {
+    result.runner_up_part = rival->part;
+    result.runner_up_score = rival->score;
+  }
   const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(best->view)];
   result.T_scanner_part = (best->T_model_scene.inverse() * view.T_scanner_part).normalized();
+  if (none_seen) {
+    result.part = -1;
+    return finish("best candidate's surface is not where the scene is: " +
+                  std::to_string(static_cast<int>(std::lround(100 * result.seen_fraction))) +
+                  " % of it seen");
+  }
   if (best->inlier_fraction < parameters_.min_inlier_fraction) {
     result.part = -1;
     return finish("best candidate explains only " +
@@ -159,6 +247,25 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   if (best->rms_mm > parameters_.max_rms_mm) {
     result.part = -1;
     return finish("best candidate's registration residual is too large");
+  }
+  if (rival && best->score - rival->score < parameters_.ambiguity.examined_score_margin) {
+    result.ambiguity_examined = true;
+    result.ambiguity =
+        judge_part_ambiguity(points.all, model_base_, {best->view, best->T_model_scene},
+                             {rival->view, rival->T_model_scene}, parameters_.registration,
+                             parameters_.support, parameters_.ambiguity, surfaces);
+    if (result.ambiguity.ambiguous) {
+      result.part = -1;
+      const auto percent = [](double fraction) {
+        return std::to_string(static_cast<int>(std::lround(100 * fraction)));
+      };
+      return finish("ambiguous between " +
+                    model_base_.parts[static_cast<std::size_t>(best->part)].name + " and " +
+                    model_base_.parts[static_cast<std::size_t>(rival->part)].name + ": " +
+                    percent(result.ambiguity.discriminating_fraction) +
+                    " % of the surface tells them apart, the first explains " +
+                    percent(result.ambiguity.discriminating_share) + " % of it");
+    }
   }
   result.status = RecognitionStatus::kOk;
   return finish("");
@@ -193,11 +300,13 @@ RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene, const ScenePo
 }
 
 void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
-                                        ModelSurfaces& surfaces, RecognitionResult& result) const {
+                                        ModelSurfaces& surfaces, RecognitionResult& result,
+                                        int only_part) const {
   // Parts in the order of their closest view.
   std::vector<int> parts = selector_.rank_parts(scene.moments);
   if (parts.size() > static_cast<std::size_t>(parameters_.searched_parts))
     parts.resize(static_cast<std::size_t>(parameters_.searched_parts));
+  if (only_part >= 0) parts = {only_part};
   // Registers one part's field poses; true when one explains enough to end the search.
   auto register_part = [&](int part, const std::vector<FieldHypothesis>& field_poses) {
     Clock::time_point stage = Clock::now();

@@ -16,6 +16,9 @@
 //                 control points within inlier_distance_mm of the model surface), its RMS
 //                 residual and its COSMOS goodness; the best wins, and below the thresholds
 //                 the part is rejected as unknown rather than forced onto a catalog part.
+//                 When another part scores almost as well, the two are compared where their
+//                 placed surfaces differ, and a scene they explain alike is rejected as
+//                 ambiguous between them rather than guessed (part_ambiguity.hpp).
 //
 // Everything is counted in operations (views, hypotheses, iterations), so the result depends
 // only on the input; only the timings vary between runs.
@@ -29,8 +32,10 @@
 #include "core/modelbase/model_base.hpp"
 #include "core/parameter_visitor.hpp"
 #include "core/range_image.hpp"
+#include "core/recognition/part_ambiguity.hpp"
 #include "core/recognition/part_pose_search.hpp"
 #include "core/recognition/part_support.hpp"
+#include "core/recognition/surface_seen.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/registration/view_registration.hpp"
 #include "core/representation/cosmos_pipeline.hpp"
@@ -72,10 +77,10 @@ struct RecognitionParameters {
   PartSupportParameters support;  // what counts as explained scene surface
   // When no selected view reaches sufficient_support: the pose search over every view of
   // up to `searched_parts` parts (SpectralViewSelector::rank_parts, closest single view
-  // first), until one reaches it. Searching every part of the acceptance base rather than
-  // the spectrally closest few identifies more of the acceptance run's scans
-  // (scripts/acceptance.sh reports the rate).
-  int searched_parts = 20;
+  // first), until one reaches it. Every part of any base: a part the spectra rank below the
+  // cut was never registered, and its scans went to whichever searched part explained them
+  // best (a joint or a pinion taken for an anchor), a wrong part rather than a rejection.
+  int searched_parts = 1000;
   // The spectral order is a poor guide for the scans that need the search (in the cell, the
   // scene's part often ranks far down), the search's field stages a sharp one: a part whose best
   // field pose fits this well (mean square distance of the scene to the part,
@@ -93,6 +98,14 @@ struct RecognitionParameters {
   double plausible_support = 0.45;
   double max_rms_mm = 0.12;
   int min_scene_points = 30;
+  // The winner's placed surface must be where the scene shows surface (surface_seen.hpp): a
+  // candidate with less of its matched view seen than this neither wins nor rivals. Wrong
+  // parts that explained 75-80 % of a mechanical part's scene showed 10-20 % of their own
+  // surface; correct ones nearly always more than half.
+  SurfaceSeenParameters surface_seen;
+  double min_seen_fraction = 0.3;
+  // Rejection as ambiguous between two parts (§5.3.6, §5.4).
+  PartAmbiguityParameters ambiguity;
 
   template <class Visitor>
   void visit(Visitor& v) {
@@ -129,6 +142,10 @@ struct RecognitionParameters {
     v("max_rms_mm", max_rms_mm, "larger RMS residual: rejected, mm", Range::above(0, 100));
     v("min_scene_points", min_scene_points, "fewer scene control points: rejected",
       Range{0, 1000000});
+    v("surface_seen", surface_seen, "where the placed winner's surface is looked up");
+    v("min_seen_fraction", min_seen_fraction,
+      "less of the winner's matched view seen in the scene: rejected", Range{0, 1});
+    v("ambiguity", ambiguity, "rejection as ambiguous between two parts (§5.3.6, §5.4)");
   }
 };
 
@@ -165,6 +182,17 @@ struct RecognitionResult {
   double spectral_distance = 0;
   double registration_rms_mm = 0;
   double inlier_fraction = 0;
+  // The best registered candidate of another part than the winner (-1: none), and its score:
+  // how near the decision came to naming that part instead.
+  int runner_up_part = -1;
+  double runner_up_score = 0;
+  // The two compared where they differ (part_ambiguity.hpp); `examined` false when the
+  // runner-up was too far behind (or there was none) to be.
+  bool ambiguity_examined = false;
+  PartAmbiguity ambiguity;
+  // How much of the winner's and the runner-up's matched views the scene shows.
+  double seen_fraction = 0;
+  double runner_up_seen_fraction = 0;
   // The scene's pose in its own image frame: T_scene_model (registration) composed with the
   // model view's T_scanner_part.
   RigidTransform T_scanner_part;
@@ -205,8 +233,10 @@ class Recognizer {
                               const SpectralCandidate& selected, ModelSurfaces& surfaces,
                               double& matching_ms, double& registration_ms) const;
   // The fallback: every view of the candidates' parts (part_pose_search.hpp).
+  // `only_part` >= 0: that part's views alone.
   void search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
-                              ModelSurfaces& surfaces, RecognitionResult& result) const;
+                              ModelSurfaces& surfaces, RecognitionResult& result,
+                              int only_part = -1) const;
   // Registers from each start on its view, keeps the pose its view supports best (the
   // candidate's view becomes that one), then judges it against the part's views around it
   // (part_support.hpp).

@@ -64,6 +64,17 @@ struct EvaluationRecord {
   // pose search to run.
   double features_ms = 0, matching_ms = 0, registration_ms = 0;
   bool pose_searched = false;
+  // The decision's margin: the winner's score (the best candidate's when rejected) and the
+  // best candidate of another part, empty when none registered.
+  double score = 0;
+  std::string runner_up_name;
+  double runner_up_score = 0;
+  // Where the two were compared (core/recognition/part_ambiguity.hpp): the share of the
+  // scene that tells them apart, and the winner's share of it.
+  bool ambiguity_examined = false;
+  double discriminating_fraction = 0, discriminating_share = 0;
+  // How much of the winner's and the runner-up's placed surfaces the scene shows.
+  double seen_fraction = 0, runner_up_seen_fraction = 0;
 };
 
 // A part's model points (a subsample of its mesh vertices, part frame, mm), by catalog index.

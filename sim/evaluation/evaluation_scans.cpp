@@ -142,6 +142,16 @@ EvaluationRecord run_evaluation_test(const EvaluationTest& test,
   record.registration_ms = result.timings.registration_ms;
   for (const RecognitionCandidate& candidate : result.candidates)
     record.pose_searched |= candidate.from_pose_search;
+  record.score = result.score;
+  if (result.runner_up_part >= 0) {
+    record.runner_up_name = base.parts[static_cast<std::size_t>(result.runner_up_part)].name;
+    record.runner_up_score = result.runner_up_score;
+  }
+  record.ambiguity_examined = result.ambiguity_examined;
+  record.discriminating_fraction = result.ambiguity.discriminating_fraction;
+  record.discriminating_share = result.ambiguity.discriminating_share;
+  record.seen_fraction = result.seen_fraction;
+  record.runner_up_seen_fraction = result.runner_up_seen_fraction;
   return record;
 }
 

@@ -1,0 +1,87 @@
+#pragma once
+// Whether the recognizer's best candidate is decided against the best candidate of another
+// part, or the scene is ambiguous between the two. The thesis trusts verification's best
+// match because "the matching score for the correct hypothesis is significantly higher than
+// the matching scores for the incorrect hypotheses" (§5.3.6, Table 5.1), and its system has
+// no reject option (§5.4); a work cell needs one for exactly the case where that margin is
+// missing: a wrong part on the wire makes the robot pick the wrong thing, a rejection only
+// sends the part to the manual bin.
+//
+// Two parts that explain a scene almost equally (support and residual after registration,
+// ch. 6) are told apart only where the two placed parts differ: the scene points that one of
+// them explains (within support.inlier_distance_mm of its surface, part_support.hpp) and the
+// other does not. The points both explain say nothing about which part it is, so they are
+// left out: the winner stands when it explains at least min_discriminating_share of the
+// discriminating points and they are at least min_discriminating_fraction of the scene; else
+// the scene is rejected as ambiguous between the two parts rather than guessed.
+//
+// Symmetry: candidates of one part are never rivals, whatever their poses. A part declared
+// symmetric fits its scene equally in every pose its symmetry maps onto itself (the matching
+// of §5.3 does not model symmetry, §5.3.6 Fig. 5.5), and which of them is found does not
+// change what is picked. The rival is always another part, and the comparison is between the
+// two parts' surfaces placed in their own registered poses, so a symmetric winner's or
+// rival's pose ambiguity does not count against the decision.
+#include <vector>
+
+#include "core/modelbase/model_base.hpp"
+#include "core/modelbase/model_surface.hpp"
+#include "core/parameter_visitor.hpp"
+#include "core/recognition/part_support.hpp"
+#include "core/registration/registration_points.hpp"
+#include "core/registration/view_registration.hpp"
+#include "core/rigid_transform.hpp"
+
+namespace cosmos {
+
+struct PartAmbiguityParameters {
+  // A rival whose score is within this of the winner's is examined on the surfaces where the
+  // two differ; one further behind has lost already.
+  double examined_score_margin = 0.1;
+  double min_discriminating_share = 0.6;
+  double min_discriminating_fraction = 0.03;
+  // Verification stops at the first view that explains sufficient_support of the scene; then
+  // up to this many further selected views, each of a part not verified yet, are verified so
+  // that the winner has a rival to be compared with.
+  int rival_verifications = 1;
+  // The rival part, when only verification proposed it, is searched over all its views
+  // (part_pose_search.hpp) before the comparison.
+  bool search_rival_part = true;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("examined_score_margin", examined_score_margin,
+      "a rival part scoring within this of the winner is examined (§5.3.6)", Range{0, 1});
+    v("min_discriminating_share", min_discriminating_share,
+      "of the scene points only one of the two explains, the winner's share at least", Range{0, 1});
+    v("min_discriminating_fraction", min_discriminating_fraction,
+      "those points, of all the scene's, at least; else ambiguous", Range{0, 1});
+    v("rival_verifications", rival_verifications,
+      "views of other parts verified after a sufficient one", Range{0, 1000});
+    v("search_rival_part", search_rival_part, "the rival part's views searched before comparing");
+  }
+};
+
+// One placed part: its candidate's view (ModelBase::views) and T_model_scene onto it.
+struct PlacedCandidate {
+  int view = -1;
+  RigidTransform T_model_scene;
+};
+
+struct PartAmbiguity {
+  bool ambiguous = false;
+  int winner_only_points = 0;          // scene points the winner explains and the rival does not
+  int rival_only_points = 0;           // and the other way round
+  double discriminating_share = 1;     // winner_only / (winner_only + rival_only)
+  double discriminating_fraction = 0;  // (winner_only + rival_only) / scene points
+};
+
+// The comparison above, on `scene` (the recognizer's control points). Only called for a
+// rival within examined_score_margin: the caller compares the scores.
+PartAmbiguity judge_part_ambiguity(const RegistrationPoints& scene, const ModelBase& base,
+                                   const PlacedCandidate& winner, const PlacedCandidate& rival,
+                                   const RegistrationParameters& registration,
+                                   const PartSupportParameters& support,
+                                   const PartAmbiguityParameters& parameters,
+                                   ModelSurfaces& surfaces);
+
+}  // namespace cosmos

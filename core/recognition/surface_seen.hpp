@@ -1,0 +1,47 @@
+#pragma once
+// Whether a placed part's surface is where the scene shows surface: the other half of the
+// support (part_support.hpp), which only asks whether the scene's points lie on the part. A
+// wrong part can explain most of a scene's points and still put surface where the scanner saw
+// the belt or a lower surface: a larger mechanical part over a smaller one, a tooth ring where
+// the scene has a flange. Its matched view's control points (the part's surface as the
+// scanner sees it from that side, ch. 6) are brought into the scene's image under the
+// registered pose (T_scene_model = T_model_scene^-1) and looked up at their pixels: a point
+// within depth_tolerance_mm of the scene's height there is seen; one the scene shows surface
+// above (nearer the scanner) is hidden, which says nothing; one where the scene has no data or
+// only lower surface is contradicted, since the scanner would have seen it. A pixel's 3 x 3
+// neighbourhood is asked, so silhouettes a pixel off and the few degrees between the matched
+// view and the scene's viewing direction do not count against the part.
+#include "core/parameter_visitor.hpp"
+#include "core/range_image.hpp"
+#include "core/registration/registration_points.hpp"
+#include "core/rigid_transform.hpp"
+
+namespace cosmos {
+
+struct SurfaceSeenParameters {
+  double depth_tolerance_mm = 1.0;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("depth_tolerance_mm", depth_tolerance_mm,
+      "a placed model point this close to the scene's height is seen, mm", Range::above(0, 100));
+  }
+};
+
+struct SurfaceSeen {
+  int seen = 0;
+  int hidden = 0;
+  int contradicted = 0;
+  // seen / (seen + contradicted); 1 when nothing could be told.
+  double seen_fraction() const {
+    return seen + contradicted > 0 ? static_cast<double>(seen) / (seen + contradicted) : 1.0;
+  }
+};
+
+// `model`: the matched view's control points (its frame); T_model_scene registers the scene's
+// points onto them.
+SurfaceSeen measure_surface_seen(const RangeImage& scene, const RegistrationPoints& model,
+                                 const RigidTransform& T_model_scene,
+                                 const SurfaceSeenParameters& parameters);
+
+}  // namespace cosmos

@@ -1,0 +1,90 @@
+// Whether a placed part's surface is where the scene shows surface (surface_seen.hpp), on a
+// hand-made scene: a 20 x 20 mm plate 5 mm above the belt in a 40 x 40 mm image whose other
+// pixels are belt (no data), and model points laid out on a 1 mm grid.
+#include "core/recognition/surface_seen.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace cosmos {
+namespace {
+
+constexpr double kPlateHeightMm = 5.0;
+
+// 0.5 mm pixels over x, y in [0, 40) mm; the plate covers [10, 30) x [10, 30) mm.
+RangeImage plate_scene() {
+  RangeImage scene(80, 80, 0.5, 0.5);
+  for (int row = 0; row < scene.height(); ++row)
+    for (int column = 0; column < scene.width(); ++column) {
+      const bool on_plate = scene.x_mm(column) >= 10 && scene.x_mm(column) < 30 &&
+                            scene.y_mm(row) >= 10 && scene.y_mm(row) < 30;
+      scene.z_mm(column, row) =
+          on_plate ? static_cast<float>(kPlateHeightMm) : std::numeric_limits<float>::quiet_NaN();
+    }
+  return scene;
+}
+
+// Points every 1 mm over [x0, x0 + 20) x [12, 28) at height z.
+RegistrationPoints grid_points(double x0_mm, double z_mm) {
+  std::vector<Eigen::Vector3d> positions;
+  for (double y = 12; y < 28; y += 1)
+    for (double x = x0_mm; x < x0_mm + 20; x += 1) positions.emplace_back(x, y, z_mm);
+  RegistrationPoints points;
+  points.position_mm.resize(3, static_cast<Eigen::Index>(positions.size()));
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    points.position_mm.col(static_cast<Eigen::Index>(i)) = positions[i];
+  return points;
+}
+
+TEST(SurfaceSeen, ThePlateItselfIsSeenEverywhere) {
+  const SurfaceSeen seen = measure_surface_seen(plate_scene(), grid_points(10, kPlateHeightMm),
+                                                RigidTransform::identity(), {});
+  EXPECT_EQ(seen.seen, 20 * 16);
+  EXPECT_EQ(seen.contradicted, 0);
+  EXPECT_EQ(seen.hidden, 0);
+  EXPECT_DOUBLE_EQ(seen.seen_fraction(), 1.0);
+}
+
+TEST(SurfaceSeen, SurfaceOverTheBeltIsContradicted) {
+  // Shifted 10 mm: x in [20, 40), half of it over the belt. The column at x = 30 mm still
+  // has plate pixels in its 3 x 3 neighbourhood (x = 29.5 mm), so 11 of 20 columns are seen.
+  const SurfaceSeen seen = measure_surface_seen(plate_scene(), grid_points(20, kPlateHeightMm),
+                                                RigidTransform::identity(), {});
+  EXPECT_EQ(seen.seen, 11 * 16);
+  EXPECT_EQ(seen.contradicted, 9 * 16);
+  EXPECT_NEAR(seen.seen_fraction(), 11.0 / 20, 1e-12);
+}
+
+TEST(SurfaceSeen, TheSamePoseGivenAsATransformCountsTheSame) {
+  // T_model_scene moves scene points 10 mm in -x onto the model: the model at x0 = 10 is the
+  // scene's [20, 40), as above.
+  RigidTransform T_model_scene;
+  T_model_scene.translation_mm = Eigen::Vector3d(-10, 0, 0);
+  const SurfaceSeen seen =
+      measure_surface_seen(plate_scene(), grid_points(10, kPlateHeightMm), T_model_scene, {});
+  EXPECT_EQ(seen.seen, 11 * 16);
+  EXPECT_EQ(seen.contradicted, 9 * 16);
+}
+
+TEST(SurfaceSeen, BelowTheSceneIsHiddenAboveItIsContradicted) {
+  const RangeImage scene = plate_scene();
+  const SurfaceSeen below = measure_surface_seen(scene, grid_points(10, kPlateHeightMm - 2),
+                                                 RigidTransform::identity(), {});
+  EXPECT_EQ(below.hidden, 20 * 16);
+  EXPECT_EQ(below.seen + below.contradicted, 0);
+  EXPECT_DOUBLE_EQ(below.seen_fraction(), 1.0);  // nothing to tell
+  const SurfaceSeen above = measure_surface_seen(scene, grid_points(10, kPlateHeightMm + 2),
+                                                 RigidTransform::identity(), {});
+  EXPECT_EQ(above.contradicted, 20 * 16);
+  EXPECT_DOUBLE_EQ(above.seen_fraction(), 0.0);
+  // Within the tolerance it is seen.
+  const SurfaceSeen near = measure_surface_seen(scene, grid_points(10, kPlateHeightMm + 0.9),
+                                                RigidTransform::identity(), {});
+  EXPECT_EQ(near.seen, 20 * 16);
+}
+
+}  // namespace
+}  // namespace cosmos
