@@ -32,8 +32,8 @@ struct ModelBaseView {
   CosmosView cosmos;                // patches and connectivity
   MomentVector moments{};           // Eqs. 4.1-4.2 + planar fraction
   RegistrationPoints registration;  // model surface for ch. 6
-  // The compact form the base keeps for every view (24 bytes per point, not 104): what the
-  // builder produces and read_model_base fills, zero-copy from the file; `registration` is
+  // The compact form the base keeps for every view (about 3 bytes per point, not 104): what
+  // the builder produces and read_model_base fills, zero-copy from the file; `registration` is
   // then empty, and the recognizer unpacks (unpack_registration_points) only the candidate
   // views of §5.2. write_model_base packs `registration` when this one is empty.
   PackedRegistrationPoints registration_packed;
@@ -53,7 +53,7 @@ struct ViewCluster {
 };
 
 struct ModelBase {
-  static constexpr std::uint32_t kFormatVersion = 1;
+  static constexpr std::uint32_t kFormatVersion = 2;
   std::string catalog_hash;     // content hash of the catalog and its meshes
   std::string parameters_text;  // every COSMOS/scanner/grouping parameter, canonical text
   std::vector<ModelPart> parts;
