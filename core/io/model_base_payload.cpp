@@ -91,7 +91,8 @@ Offset<fb::RegistrationPoints> encode_registration(FlatBufferBuilder& b, const M
   const auto bits = b.CreateVector(packed.coefficient_bits.data(), packed.coefficient_bits.size());
   std::vector<fb::CoefficientCoding> codings;
   for (const CoefficientCoding& c : packed.coefficients)
-    codings.emplace_back(c.step, c.low, c.high, c.predictor, c.rice_bits, c.ratio_x, c.ratio_y);
+    codings.emplace_back(c.step, c.low, c.high, c.predictor, c.rice_bits, c.ratio_x, c.ratio_y,
+                         c.stream_bytes);
   const auto coefficients = b.CreateVectorOfStructs(codings);
   const auto cofactor = cofactors.offset(b, packed.fit_cofactor);
   return fb::CreateRegistrationPoints(b, packed.grid_width, packed.grid_height, packed.origin_x_mm,
@@ -249,9 +250,9 @@ std::optional<std::string> decode_registration(const fb::RegistrationPoints* in,
            " coefficient codings, expected " + std::to_string(out.coefficients.size());
   for (std::size_t c = 0; c < out.coefficients.size(); ++c) {
     const fb::CoefficientCoding& coding = *codings->Get(static_cast<flatbuffers::uoffset_t>(c));
-    out.coefficients[c] = {coding.step(),      coding.low(),       coding.high(),
-                           coding.predictor(), coding.rice_bits(), coding.ratio_x(),
-                           coding.ratio_y()};
+    out.coefficients[c] = {coding.step(),      coding.low(),         coding.high(),
+                           coding.predictor(), coding.rice_bits(),   coding.ratio_x(),
+                           coding.ratio_y(),   coding.stream_bytes()};
   }
   const auto cofactor = span_of(in->fit_cofactor());
   if (cofactor.size() != static_cast<std::size_t>(out.fit_cofactor.size()))

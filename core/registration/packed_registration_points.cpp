@@ -12,9 +12,6 @@ namespace cosmos {
 namespace {
 
 constexpr int kChannels = kSurfaceCoefficients;
-// Decoding order within a point: each derivative before what kDerivativeTrapezoid predicts
-// from it (the curvatures before the slopes, the slopes before the height).
-constexpr int kChannelOrder[kChannels] = {kCurveXX, kCurveXY, kCurveYY, kSlopeX, kSlopeY, kHeight};
 // The derivative of each coefficient along x and y, and d(coefficient)/d(derivative):
 // h_x = a, h_y = b; a_x = 2 c_xx, a_y = c_xy; b_x = c_xy, b_y = 2 c_yy.
 struct Derivative {
@@ -44,8 +41,10 @@ std::int64_t clamp_units(std::int64_t value, const CoefficientCoding& coding) {
 }
 
 // The one prediction every reader computes alike (integers only), within [low, high].
-std::int64_t predict(const PackedRegistrationPoints& packed, int channel, const Neighbours& n,
-                     const Units& current) {
+// Inlined: unpacking runs it for every coefficient of every point.
+[[gnu::always_inline]] inline std::int64_t predict(const PackedRegistrationPoints& packed,
+                                                   int channel, const Neighbours& n,
+                                                   const Units& current) {
   const CoefficientCoding& coding = packed.coefficients[static_cast<std::size_t>(channel)];
   const auto c = static_cast<std::size_t>(channel);
   std::int64_t prediction = 0;
@@ -77,18 +76,20 @@ std::int64_t predict(const PackedRegistrationPoints& packed, int channel, const 
   return clamp_units(prediction, coding);
 }
 
-Neighbours neighbours_of(const std::vector<std::int32_t>& cell_point,
-                         const std::vector<Units>& units, int grid_width, std::size_t cell) {
+// Cell (u, v) of a grid `grid_width` wide holds the point whose neighbours these are.
+[[gnu::always_inline]] inline Neighbours neighbours_of(const std::vector<std::int32_t>& cell_point,
+                                                       const std::vector<Units>& units,
+                                                       int grid_width, std::size_t cell,
+                                                       std::size_t u, std::size_t v) {
   Neighbours n;
   const auto at = [&](std::size_t other) -> const Units* {
     const std::int32_t point = cell_point[other];
     return point >= 0 ? &units[static_cast<std::size_t>(point)] : nullptr;
   };
   const auto width = static_cast<std::size_t>(grid_width);
-  const bool has_left = cell % width != 0, has_up = cell >= width;
-  if (has_left) n.left = at(cell - 1);
-  if (has_up) n.up = at(cell - width);
-  if (has_left && has_up) n.up_left = at(cell - width - 1);
+  if (u > 0) n.left = at(cell - 1);
+  if (v > 0) n.up = at(cell - width);
+  if (u > 0 && v > 0) n.up_left = at(cell - width - 1);
   return n;
 }
 
@@ -195,8 +196,11 @@ PackedRegistrationPoints pack_registration_points(const RegistrationPoints& poin
     if (points.cell_point[cell] >= 0)
       point_cells[static_cast<std::size_t>(points.cell_point[cell])] = cell;
   std::vector<Neighbours> neighbours(n);
-  for (std::size_t i = 0; i < n; ++i)
-    neighbours[i] = neighbours_of(points.cell_point, units, points.grid_width, point_cells[i]);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t width = static_cast<std::size_t>(points.grid_width);
+    neighbours[i] = neighbours_of(points.cell_point, units, points.grid_width, point_cells[i],
+                                  point_cells[i] % width, point_cells[i] / width);
+  }
   std::vector<std::uint32_t> zigzagged(n);
   for (int c = 0; c < kChannels; ++c) {
     CoefficientCoding& coding = packed.coefficients[static_cast<std::size_t>(c)];
@@ -221,17 +225,18 @@ PackedRegistrationPoints pack_registration_points(const RegistrationPoints& poin
       }
     }
   }
-  BitWriter bits;
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int c : kChannelOrder) {
-      const CoefficientCoding& coding = packed.coefficients[static_cast<std::size_t>(c)];
-      if (!(coding.step > 0)) continue;
+  for (int c = 0; c < kChannels; ++c) {
+    CoefficientCoding& coding = packed.coefficients[static_cast<std::size_t>(c)];
+    if (!(coding.step > 0)) continue;
+    BitWriter bits;
+    for (std::size_t i = 0; i < n; ++i)
       bits.put_rice(
           units[i][static_cast<std::size_t>(c)] - predict(packed, c, neighbours[i], units[i]),
           coding.rice_bits);
-    }
+    const std::vector<std::uint8_t>& stream = bits.finish();
+    coding.stream_bytes = static_cast<std::uint32_t>(stream.size());
+    streams->coefficient_bits.insert(streams->coefficient_bits.end(), stream.begin(), stream.end());
   }
-  streams->coefficient_bits = bits.finish();
   packed.occupancy_runs = streams->occupancy_runs;
   packed.coefficient_bits = streams->coefficient_bits;
   packed.storage = std::move(streams);
@@ -239,6 +244,7 @@ PackedRegistrationPoints pack_registration_points(const RegistrationPoints& poin
 }
 
 bool packed_registration_points_consistent(const PackedRegistrationPoints& packed) {
+  std::uint64_t stream_bytes = 0;
   if (packed.grid_width < 0 || packed.grid_height < 0 || packed.point_count < 0) return false;
   if (static_cast<std::uint64_t>(packed.grid_width) *
           static_cast<std::uint64_t>(packed.grid_height) >
@@ -252,7 +258,9 @@ bool packed_registration_points_consistent(const PackedRegistrationPoints& packe
     if (std::abs(coding.ratio_x) > kMaxDerivativeRatio ||
         std::abs(coding.ratio_y) > kMaxDerivativeRatio)
       return false;
+    stream_bytes += coding.stream_bytes;
   }
+  if (stream_bytes != packed.coefficient_bits.size()) return false;
   return visit_occupied_cell_runs(packed.occupancy_runs, grid_cells(packed), point_count(packed),
                                   [](std::size_t, std::size_t) {});
 }
@@ -285,25 +293,49 @@ RegistrationPoints unpack_registration_points(const PackedRegistrationPoints& pa
   points.residual_rms_mm.setConstant(n, packed.z_noise_sigma_mm);
 
   std::vector<Units> units(static_cast<std::size_t>(n));
-  BitReader bits(packed.coefficient_bits);
+  // Each coefficient's stream (cut to the bytes there are: any streams decode).
+  std::array<BitReader, kChannels> bits{};
+  std::size_t offset = 0;
+  for (int c = 0; c < kChannels; ++c) {
+    const std::size_t start = std::min(offset, packed.coefficient_bits.size());
+    const std::size_t length =
+        std::min<std::size_t>(packed.coefficients[static_cast<std::size_t>(c)].stream_bytes,
+                              packed.coefficient_bits.size() - start);
+    bits[static_cast<std::size_t>(c)] = BitReader(packed.coefficient_bits.subspan(start, length));
+    offset = start + length;
+  }
   const auto width = static_cast<std::size_t>(std::max(packed.grid_width, 1));
+  std::size_t u = 0, v = 0, row_start = 0;  // of the point's cell, without a division each
   for (int i = 0; i < n; ++i) {
     const std::size_t cell = point_cells[static_cast<std::size_t>(i)];
-    const Neighbours near = neighbours_of(points.cell_point, units, packed.grid_width, cell);
+    while (cell >= row_start + width) {
+      row_start += width;
+      ++v;
+    }
+    u = cell - row_start;
+    const Neighbours near = neighbours_of(points.cell_point, units, packed.grid_width, cell, u, v);
     Units& here = units[static_cast<std::size_t>(i)];
-    for (int c : kChannelOrder) {
-      const CoefficientCoding& coding = packed.coefficients[static_cast<std::size_t>(c)];
+    const auto decode = [&]<int c>() {
+      const CoefficientCoding& coding = packed.coefficients[c];
       std::int64_t value = 0;
       if (coding.step > 0)
-        value =
-            clamp_units(predict(packed, c, near, here) + bits.get_rice(coding.rice_bits), coding);
-      here[static_cast<std::size_t>(c)] = static_cast<std::int32_t>(value);
+        value = clamp_units(predict(packed, c, near, here) + bits[c].get_rice(coding.rice_bits),
+                            coding);
+      here[c] = static_cast<std::int32_t>(value);
       points.surface(c, i) = static_cast<double>(value) * coding.step;
-    }
+    };
+    // Each derivative before what kDerivativeTrapezoid predicts from it: the curvatures
+    // before the slopes, the slopes before the height.
+    decode.template operator()<kCurveXX>();
+    decode.template operator()<kCurveXY>();
+    decode.template operator()<kCurveYY>();
+    decode.template operator()<kSlopeX>();
+    decode.template operator()<kSlopeY>();
+    decode.template operator()<kHeight>();
     const double a = points.surface(kSlopeX, i), b = points.surface(kSlopeY, i);
-    const double u = static_cast<double>(cell % width), v = static_cast<double>(cell / width);
-    points.position_mm.col(i) << packed.origin_x_mm + u * packed.spacing_x_mm,
-        packed.origin_y_mm + v * packed.spacing_y_mm, points.surface(kHeight, i);
+    points.position_mm.col(i) << packed.origin_x_mm + static_cast<double>(u) * packed.spacing_x_mm,
+        packed.origin_y_mm + static_cast<double>(v) * packed.spacing_y_mm,
+        points.surface(kHeight, i);
     points.normal.col(i) = Eigen::Vector3d(-a, -b, 1.0) / std::sqrt(1.0 + a * a + b * b);
   }
   return points;

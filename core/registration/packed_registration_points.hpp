@@ -20,7 +20,8 @@
 // has from the noise (1 % of its standard deviation), and unbiased. sigma_k has a floor
 // (kMinNoiseSigmaMm) for noiseless views.
 //
-// The integers are coded in grid (row-major) order as prediction residuals (from the
+// The integers are coded in grid (row-major) order, one stream per coefficient, as prediction
+// residuals (from the
 // neighbouring cells already decoded; integer arithmetic only, so every reader decodes the
 // same values) in Rice codes, one parameter per coefficient per view (rice_bit_stream.hpp);
 // the occupied cells as run lengths (occupied_cell_runs.hpp). The spans are over `storage`,
@@ -61,6 +62,9 @@ struct CoefficientCoding {
   // kDerivativeRatioOne = 1 (0 for the curvatures, which have no stored derivative).
   std::int32_t ratio_x = 0;
   std::int32_t ratio_y = 0;
+  // This coefficient's stream in coefficient_bits, after those of the coefficients before it:
+  // six independent streams, so that decoding one does not wait for the others.
+  std::uint32_t stream_bytes = 0;
 };
 
 struct PackedRegistrationPoints {

@@ -50,6 +50,7 @@ class BitWriter {
 
 class BitReader {
  public:
+  BitReader() = default;
   explicit BitReader(std::span<const std::uint8_t> bytes) : bytes_(bytes) {}
   std::uint32_t get(int bits) {  // bits <= 32
     if (bits == 0) return 0;

@@ -165,6 +165,7 @@ TEST(PackedRegistrationPoints, InconsistentHeadersAndRunsAreDetected) {
   EXPECT_FALSE(with_coding([](CoefficientCoding& c) { c.step = std::nan(""); }));
   EXPECT_FALSE(with_coding([](CoefficientCoding& c) { c.high = 1 << 29; }));
   EXPECT_FALSE(with_coding([](CoefficientCoding& c) { c.ratio_x = -(1 << 30) - 1; }));
+  EXPECT_FALSE(with_coding([](CoefficientCoding& c) { ++c.stream_bytes; }));
 }
 
 // Coefficient bits are not checked on loading (a stream cut short or crafted still decodes):
