@@ -1,5 +1,8 @@
 #include "core/io/model_base_file.hpp"
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -58,31 +61,49 @@ void write_all(std::FILE* file, const void* data, std::size_t bytes, const fs::p
     refuse(path, std::string("cannot write: ") + std::strerror(errno));
 }
 
-// The whole file in one block, aligned for the payload's doubles (operator new aligns to 16
-// and the header is 32 bytes).
+// The whole file, mapped read-only: the pages are the file's (the page cache's), read as the
+// checksum and the verifier walk them, never copied; page-aligned, so the payload's doubles
+// are aligned (the header is 32 bytes). A base is replaced only by renaming a new file over
+// it (write_model_base), which leaves the mapped one intact.
 struct FileBytes {
-  std::shared_ptr<std::uint8_t[]> bytes;
+  std::shared_ptr<const void> owner;
+  const std::uint8_t* bytes = nullptr;
   std::size_t size = 0;
+};
+
+struct FileDescriptor {
+  int fd = -1;
+  ~FileDescriptor() {
+    if (fd >= 0) ::close(fd);
+  }
 };
 
 FileBytes read_file(const fs::path& path) {
   std::error_code error;
   if (fs::is_directory(path, error)) refuse(path, "is a directory, not a model base file");
-  const File file(std::fopen(path.c_str(), "rb"));
-  if (!file) refuse(path, std::string("cannot open: ") + std::strerror(errno));
-  const auto size = fs::file_size(path, error);
-  if (error) refuse(path, "cannot read its size: " + error.message());
+  const FileDescriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
+  if (file.fd < 0) refuse(path, std::string("cannot open: ") + std::strerror(errno));
+  struct stat status {};
+  if (::fstat(file.fd, &status) != 0)
+    refuse(path, std::string("cannot read its size: ") + std::strerror(errno));
   FileBytes out;
-  out.size = static_cast<std::size_t>(size);
-  out.bytes = std::shared_ptr<std::uint8_t[]>(new std::uint8_t[std::max<std::size_t>(out.size, 1)]);
-  if (std::fread(out.bytes.get(), 1, out.size, file.get()) != out.size)
-    refuse(path, std::string("cannot read: ") +
-                     (std::ferror(file.get()) ? std::strerror(errno) : "shorter than its size"));
+  out.size = static_cast<std::size_t>(status.st_size);
+  if (out.size == 0) {
+    static constexpr std::uint8_t kNothing[1] = {0};
+    out.bytes = kNothing;
+    return out;
+  }
+  void* address = ::mmap(nullptr, out.size, PROT_READ, MAP_PRIVATE, file.fd, 0);
+  if (address == MAP_FAILED) refuse(path, std::string("cannot read: ") + std::strerror(errno));
+  const std::size_t size = out.size;
+  out.owner = std::shared_ptr<const void>(
+      address, [size](const void* mapped) { ::munmap(const_cast<void*>(mapped), size); });
+  out.bytes = static_cast<const std::uint8_t*>(address);
   return out;
 }
 
 Header check_header(const FileBytes& file, const fs::path& path) {
-  const std::uint8_t* p = file.bytes.get();
+  const std::uint8_t* p = file.bytes;
   if (file.size < sizeof kMagic || std::memcmp(p, kMagic, sizeof kMagic) != 0) {
     if (file.size < sizeof kMagic && std::memcmp(p, kMagic, file.size) == 0)
       refuse(path, "truncated: " + std::to_string(file.size) + " bytes, shorter than the header");
@@ -154,13 +175,13 @@ ModelBase read_model_base(const fs::path& path,
                           const std::optional<std::string>& expected_parameters_text) {
   const FileBytes file = read_file(path);
   const Header header = check_header(file, path);
-  const std::uint8_t* payload = file.bytes.get() + kModelBaseHeaderBytes;
+  const std::uint8_t* payload = file.bytes + kModelBaseHeaderBytes;
   const std::uint64_t checksum = xxh64(payload, header.payload_bytes);
   if (checksum != header.payload_checksum)
     refuse(path, "corrupted: checksum mismatch (header " + hex(header.payload_checksum) +
                      ", payload " + hex(checksum) + ")");
   ModelBase base;
-  if (auto reason = decode_model_base(payload, header.payload_bytes, file.bytes, base))
+  if (auto reason = decode_model_base(payload, header.payload_bytes, file.owner, base))
     refuse(path, "corrupted: " + *reason);
   if (expected_parameters_text) {
     if (auto difference =

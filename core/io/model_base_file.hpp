@@ -16,7 +16,8 @@
 // Reading verifies everything before anything is used; every refusal is one InputError line
 // `FILE: reason`, the reason starting with one of: "truncated", "corrupted", "format version",
 // "built with other parameters" (naming the first differing key), or "not a COSMOS model
-// base". A loaded base's registration arrays live in the file's bytes (read once, zero copy).
+// base". A loaded base's registration streams live in the file's bytes, mapped read-only
+// (zero copy).
 #include <cstdint>
 #include <filesystem>
 #include <optional>

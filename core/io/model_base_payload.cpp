@@ -63,25 +63,46 @@ bool packed_is_set(const PackedRegistrationPoints& p) {
   return p.size() > 0 || p.grid_width > 0 || p.grid_height > 0;
 }
 
-Offset<fb::RegistrationPoints> encode_registration(FlatBufferBuilder& b,
-                                                   const ModelBaseView& view) {
+// The fit's cofactor depends only on the window and the grid spacing (registration_points.hpp),
+// so a base's views share a few: each distinct one is written once and referenced by every
+// view that has it (FlatBuffers offsets may point to the same vector).
+class SharedCofactors {
+ public:
+  using Cofactor = Eigen::Matrix<double, kSurfaceCoefficients, kSurfaceCoefficients>;
+  Offset<flatbuffers::Vector<double>> offset(FlatBufferBuilder& b, const Cofactor& cofactor) {
+    for (const auto& [known, offset] : written_)
+      if (std::memcmp(known.data(), cofactor.data(), sizeof(double) * known.size()) == 0)
+        return offset;
+    const auto offset = b.CreateVector(cofactor.data(), static_cast<std::size_t>(cofactor.size()));
+    written_.emplace_back(cofactor, offset);
+    return offset;
+  }
+
+ private:
+  std::vector<std::pair<Cofactor, Offset<flatbuffers::Vector<double>>>> written_;
+};
+
+Offset<fb::RegistrationPoints> encode_registration(FlatBufferBuilder& b, const ModelBaseView& view,
+                                                   SharedCofactors& cofactors) {
   const PackedRegistrationPoints packed = packed_is_set(view.registration_packed)
                                               ? view.registration_packed
                                               : pack_registration_points(view.registration);
-  const auto occupied = b.CreateVector(packed.occupied_cells.data(), packed.occupied_cells.size());
-  const auto plane = b.CreateVector(packed.plane.data(), packed.plane.size());
-  const auto curvature = b.CreateVector(packed.curvature.data(), packed.curvature.size());
-  const auto normal = b.CreateVector(packed.normal_xy.data(), packed.normal_xy.size());
-  const auto residual = b.CreateVector(packed.residual.data(), packed.residual.size());
-  const auto cofactor = b.CreateVector(packed.fit_cofactor.data(),
-                                       static_cast<std::size_t>(packed.fit_cofactor.size()));
-  return fb::CreateRegistrationPoints(
-      b, packed.grid_width, packed.grid_height, packed.origin_x_mm, packed.origin_y_mm,
-      packed.spacing_x_mm, packed.spacing_y_mm, occupied, plane, curvature, packed.curvature_step,
-      normal, residual, packed.residual_step_mm, cofactor, packed.z_noise_sigma_mm);
+  const auto runs = b.CreateVector(packed.occupancy_runs.data(), packed.occupancy_runs.size());
+  const auto bits = b.CreateVector(packed.coefficient_bits.data(), packed.coefficient_bits.size());
+  std::vector<fb::CoefficientCoding> codings;
+  for (const CoefficientCoding& c : packed.coefficients)
+    codings.emplace_back(c.step, c.low, c.high, c.predictor, c.rice_bits, c.ratio_x, c.ratio_y,
+                         c.stream_bytes);
+  const auto coefficients = b.CreateVectorOfStructs(codings);
+  const auto cofactor = cofactors.offset(b, packed.fit_cofactor);
+  return fb::CreateRegistrationPoints(b, packed.grid_width, packed.grid_height, packed.origin_x_mm,
+                                      packed.origin_y_mm, packed.spacing_x_mm, packed.spacing_y_mm,
+                                      packed.point_count, runs, bits, coefficients, cofactor,
+                                      packed.z_noise_sigma_mm);
 }
 
-Offset<fb::View> encode_view(FlatBufferBuilder& b, const ModelBaseView& view) {
+Offset<fb::View> encode_view(FlatBufferBuilder& b, const ModelBaseView& view,
+                             SharedCofactors& cofactors) {
   std::vector<Offset<fb::Patch>> patches;
   for (const Csmp& p : view.cosmos.patches) patches.push_back(encode_patch(b, p));
   const auto patch_vector = b.CreateVector(patches);
@@ -90,7 +111,7 @@ Offset<fb::View> encode_view(FlatBufferBuilder& b, const ModelBaseView& view) {
     gauss_map.push_back(encode_gauss_point(b, g));
   const auto gauss_vector = b.CreateVector(gauss_map);
   const auto moments = b.CreateVector(view.moments.data(), view.moments.size());
-  const auto registration = encode_registration(b, view);
+  const auto registration = encode_registration(b, view, cofactors);
   const fb::Vec3 direction = vec3(view.direction_part);
   const fb::Transform T_scanner_part = transform(view.T_scanner_part);
   return fb::CreateView(b, view.part_index, view.view_index, &direction, &T_scanner_part,
@@ -108,9 +129,9 @@ std::size_t estimated_payload_bytes(const ModelBase& base) {
     const bool packed = packed_is_set(view.registration_packed);
     const std::size_t points = static_cast<std::size_t>(packed ? view.registration_packed.size()
                                                                : view.registration.size());
-    const std::size_t cells = packed ? view.registration_packed.occupied_bytes()
-                                     : (view.registration.cell_point.size() + 7) / 8;
-    bytes += 1024 + 24 * points + cells;  // core/registration/packed_registration_points.hpp
+    // The Rice codes take a few bytes per point; escapes, a few more: 12 is far above.
+    const std::size_t coded = packed ? view.registration_packed.packed_bytes() : 12 * points;
+    bytes += 1024 + coded + view.registration.cell_point.size() / 8;
     for (const Csmp& p : view.cosmos.patches) bytes += 160 + 8 * p.neighbors.size();
     for (const GaussMapPoint& g : view.cosmos.gauss_map) {
       bytes += 64;
@@ -130,7 +151,8 @@ void encode_model_base(const ModelBase& base, FlatBufferBuilder& b) {
   const auto part_vector = b.CreateVector(parts);
   std::vector<Offset<fb::View>> views;
   views.reserve(base.views.size());
-  for (const ModelBaseView& view : base.views) views.push_back(encode_view(b, view));
+  SharedCofactors cofactors;
+  for (const ModelBaseView& view : base.views) views.push_back(encode_view(b, view, cofactors));
   const auto view_vector = b.CreateVector(views);
   std::vector<Offset<fb::Cluster>> clusters;
   for (const ViewCluster& cluster : base.clusters) {
@@ -217,21 +239,27 @@ std::optional<std::string> decode_registration(const fb::RegistrationPoints* in,
   out.origin_y_mm = in->origin_y_mm();
   out.spacing_x_mm = in->spacing_x_mm();
   out.spacing_y_mm = in->spacing_y_mm();
-  out.occupied_cells = span_of(in->occupied_cells());
-  out.plane = span_of(in->plane());
-  out.curvature = span_of(in->curvature());
-  out.curvature_step = in->curvature_step();
-  out.normal_xy = span_of(in->normal_xy());
-  out.residual = span_of(in->residual());
-  out.residual_step_mm = in->residual_step_mm();
+  out.point_count = in->point_count();
+  out.occupancy_runs = span_of(in->occupancy_runs());
+  out.coefficient_bits = span_of(in->coefficient_bits());
   out.z_noise_sigma_mm = in->z_noise_sigma_mm();
   out.storage = owner;
+  const auto* codings = in->coefficients();
+  if (!codings || codings->size() != out.coefficients.size())
+    return where + ": " + std::to_string(codings ? codings->size() : 0) +
+           " coefficient codings, expected " + std::to_string(out.coefficients.size());
+  for (std::size_t c = 0; c < out.coefficients.size(); ++c) {
+    const fb::CoefficientCoding& coding = *codings->Get(static_cast<flatbuffers::uoffset_t>(c));
+    out.coefficients[c] = {coding.step(),      coding.low(),         coding.high(),
+                           coding.predictor(), coding.rice_bits(),   coding.ratio_x(),
+                           coding.ratio_y(),   coding.stream_bytes()};
+  }
   const auto cofactor = span_of(in->fit_cofactor());
   if (cofactor.size() != static_cast<std::size_t>(out.fit_cofactor.size()))
     return where + ": fit cofactor has " + std::to_string(cofactor.size()) + " values, expected 36";
   std::memcpy(out.fit_cofactor.data(), cofactor.data(), sizeof(double) * cofactor.size());
   if (!packed_registration_points_consistent(out))
-    return where + ": registration arrays do not match the grid (" +
+    return where + ": registration streams do not match their header (" +
            std::to_string(out.grid_width) + " x " + std::to_string(out.grid_height) + " cells, " +
            std::to_string(out.size()) + " points)";
   return std::nullopt;

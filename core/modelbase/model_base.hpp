@@ -32,8 +32,8 @@ struct ModelBaseView {
   CosmosView cosmos;                // patches and connectivity
   MomentVector moments{};           // Eqs. 4.1-4.2 + planar fraction
   RegistrationPoints registration;  // model surface for ch. 6
-  // The compact form the base keeps for every view (24 bytes per point, not 104): what the
-  // builder produces and read_model_base fills, zero-copy from the file; `registration` is
+  // The compact form the base keeps for every view (about 3 bytes per point, not 104): what
+  // the builder produces and read_model_base fills, zero-copy from the file; `registration` is
   // then empty, and the recognizer unpacks (unpack_registration_points) only the candidate
   // views of §5.2. write_model_base packs `registration` when this one is empty.
   PackedRegistrationPoints registration_packed;
@@ -54,7 +54,8 @@ struct ViewCluster {
 
 struct ModelBase {
   // Raised whenever what a build writes changes (layout or content), so that caches and
-  // readers refuse or rebuild what an older build wrote. 2: no patch without pixels.
+  // readers refuse or rebuild what an older build wrote. 2: registration streams
+  // (docs/architecture.md), and no patch without pixels.
   static constexpr std::uint32_t kFormatVersion = 2;
   std::string catalog_hash;     // content hash of the catalog and its meshes
   std::string parameters_text;  // every COSMOS/scanner/grouping parameter, canonical text

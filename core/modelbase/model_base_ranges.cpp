@@ -91,6 +91,8 @@ void check_cosmos(RangeCheck& check, const std::string& where, const CosmosView&
 
 // The registration points' positions are the grid's cell centres and the stored heights
 // (packed_registration_points.hpp): bounding the grid and the heights bounds every point.
+// Every coefficient a view's streams decode to is clamped into its [low, high] x step, so
+// checking those bounds checks every value the streams can hold, whatever their bits.
 void check_registration(RangeCheck& check, const std::string& where,
                         const PackedRegistrationPoints& packed) {
   const ModelBaseRanges& ranges = check.ranges();
@@ -98,6 +100,9 @@ void check_registration(RangeCheck& check, const std::string& where,
                 ranges.max_grid_cells_per_side);
   check.between(where, "registration grid_height", packed.grid_height, 0,
                 ranges.max_grid_cells_per_side);
+  check.between(where, "registration grid cells",
+                static_cast<double>(packed.grid_width) * packed.grid_height, 0,
+                ranges.max_grid_cells);
   check.within(where, "registration origin_x_mm", packed.origin_x_mm, ranges.max_coordinate_mm);
   check.within(where, "registration origin_y_mm", packed.origin_y_mm, ranges.max_coordinate_mm);
   check.between(where, "registration spacing_x_mm", packed.spacing_x_mm, 1e-6,
@@ -108,18 +113,23 @@ void check_registration(RangeCheck& check, const std::string& where,
                ranges.max_coordinate_mm);
   check.within(where, "registration grid extent in y (mm)",
                packed.spacing_y_mm * packed.grid_height, ranges.max_coordinate_mm);
-  check.between(where, "registration curvature_step", packed.curvature_step, 0, 1e6);
-  check.between(where, "registration residual_step_mm", packed.residual_step_mm, 0, 1e6);
   check.between(where, "registration z_noise_sigma_mm", packed.z_noise_sigma_mm, 0, 1e3);
   for (Eigen::Index k = 0; k < packed.fit_cofactor.size() && !check.failed(); ++k)
     check.finite(where, "registration fit_cofactor", packed.fit_cofactor.data()[k]);
-  for (std::size_t k = 0; k < packed.plane.size() && !check.failed(); ++k) {
-    if (k % 3 == 0)
-      check.within(where, "registration point " + std::to_string(k / 3) + " height_mm",
-                   packed.plane[k], ranges.max_coordinate_mm);
-    else
-      check.finite(where, "registration point " + std::to_string(k / 3) + " slope",
-                   packed.plane[k]);
+  static constexpr const char* kNames[kSurfaceCoefficients] = {
+      "height_mm", "slope x", "slope y", "curvature xx", "curvature xy", "curvature yy"};
+  for (int c = 0; c < kSurfaceCoefficients && !check.failed(); ++c) {
+    const CoefficientCoding& coding = packed.coefficients[static_cast<std::size_t>(c)];
+    const std::string name = std::string("registration ") + kNames[c];
+    check.between(where, name + " step", coding.step, 0, ranges.max_coordinate_mm);
+    const double low = coding.low * coding.step, high = coding.high * coding.step;
+    if (c == kHeight) {
+      check.within(where, name + " lower bound", low, ranges.max_coordinate_mm);
+      check.within(where, name + " upper bound", high, ranges.max_coordinate_mm);
+    } else {
+      check.finite(where, name + " lower bound", low);
+      check.finite(where, name + " upper bound", high);
+    }
   }
 }
 

@@ -20,6 +20,9 @@ struct ModelBaseRanges {
   double max_coordinate_mm = 1e4;  // any position, translation, size, centroid
   double max_spacing_mm = 100.0;   // the registration grid's cell size
   int max_grid_cells_per_side = 1 << 16;
+  // A view's whole grid (an unpacked view holds an index per cell): 16 Mi cells is a 640-pixel
+  // profile over 10 m of belt at stride 1.
+  double max_grid_cells = 1 << 24;
   double max_unit_vector_error = 1e-3;  // directions and normals: |norm - 1|
   double max_rotation_error = 1e-6;     // |R^T R - I|, element-wise
 };

@@ -87,7 +87,7 @@ PartDistanceField::PartDistanceField(const std::vector<Eigen::Vector3d>& points_
   // Far, in squared voxels: more than any distance in the grid, small enough to add to.
   const float far = 4.0f * static_cast<float>(size_[0] + size_[1] + size_[2]) *
                     static_cast<float>(size_[0] + size_[1] + size_[2]);
-  distance_mm_.assign(voxels, far);
+  std::vector<float> distance_mm(voxels, far);
   const auto voxel_index = [&](int x, int y, int z) {
     return (static_cast<std::size_t>(z) * size_[1] + y) * size_[0] + x;
   };
@@ -97,7 +97,7 @@ PartDistanceField::PartDistanceField(const std::vector<Eigen::Vector3d>& points_
   for (const Eigen::Vector3d& p : points_part_mm) {
     if (!p.allFinite()) continue;
     const Eigen::Vector3d u = (p - origin_mm_) / voxel_mm_;
-    distance_mm_[voxel_index(voxel_of(u.x(), 0), voxel_of(u.y(), 1), voxel_of(u.z(), 2))] = 0.0f;
+    distance_mm[voxel_index(voxel_of(u.x(), 0), voxel_of(u.y(), 1), voxel_of(u.z(), 2))] = 0.0f;
   }
   const int longest = std::max({size_[0], size_[1], size_[2]});
   std::vector<float> line(static_cast<std::size_t>(longest));
@@ -106,23 +106,33 @@ PartDistanceField::PartDistanceField(const std::vector<Eigen::Vector3d>& points_
   const std::ptrdiff_t step_y = size_[0], step_z = static_cast<std::ptrdiff_t>(size_[0]) * size_[1];
   for (int z = 0; z < size_[2]; ++z)
     for (int y = 0; y < size_[1]; ++y)
-      squared_distance_1d(&distance_mm_[voxel_index(0, y, z)], size_[0], 1, line, apex, boundary);
+      squared_distance_1d(&distance_mm[voxel_index(0, y, z)], size_[0], 1, line, apex, boundary);
   for (int z = 0; z < size_[2]; ++z)
     for (int x = 0; x < size_[0]; ++x)
-      squared_distance_1d(&distance_mm_[voxel_index(x, 0, z)], size_[1], step_y, line, apex,
+      squared_distance_1d(&distance_mm[voxel_index(x, 0, z)], size_[1], step_y, line, apex,
                           boundary);
   for (int y = 0; y < size_[1]; ++y)
     for (int x = 0; x < size_[0]; ++x)
-      squared_distance_1d(&distance_mm_[voxel_index(x, y, 0)], size_[2], step_z, line, apex,
+      squared_distance_1d(&distance_mm[voxel_index(x, y, 0)], size_[2], step_z, line, apex,
                           boundary);
-  for (float& d : distance_mm_) d = std::sqrt(d) * static_cast<float>(voxel_mm_);
+  float largest = 0.0f;
+  for (float& d : distance_mm) {
+    d = std::sqrt(d) * static_cast<float>(voxel_mm_);
+    largest = std::max(largest, d);
+  }
+  mm_per_unit_ = largest > 0 ? largest / 65535.0 : voxel_mm_;
+  const double units_per_mm = 1.0 / mm_per_unit_;
+  distance_units_.resize(voxels);
+  for (std::size_t k = 0; k < voxels; ++k)
+    distance_units_[k] = static_cast<std::uint16_t>(
+        std::min(65535.0, std::round(static_cast<double>(distance_mm[k]) * units_per_mm)));
 }
 
 template <bool kGradient>
 [[gnu::always_inline]] inline double PartDistanceField::sample(const Eigen::Vector3d& point_part_mm,
                                                                Eigen::Vector3d& gradient) const {
   if (kGradient) gradient.setZero();
-  if (distance_mm_.empty()) return std::numeric_limits<double>::infinity();
+  if (distance_units_.empty()) return std::numeric_limits<double>::infinity();
   // The hot loop of the pose search: one base index and fixed strides to the 8 corners, and
   // the way out of the grid only for points outside it. The upper clamp keeps the base a
   // corner below the last, so its +1 neighbours always exist (grids are >= 2 voxels wide).
@@ -141,7 +151,8 @@ template <bool kGradient>
       outside ? std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * voxel_mm_ : 0.0;
   const std::ptrdiff_t step_y = size_[0];
   const std::ptrdiff_t step_z = static_cast<std::ptrdiff_t>(size_[0]) * size_[1];
-  const float* c = distance_mm_.data() + base[2] * step_z + base[1] * step_y + base[0];
+  // Interpolated in the stored units, scaled once: the interpolant is linear in them.
+  const std::uint16_t* c = distance_units_.data() + base[2] * step_z + base[1] * step_y + base[0];
   const double c000 = c[0], c100 = c[1], c010 = c[step_y], c110 = c[step_y + 1];
   const double c001 = c[step_z], c101 = c[step_z + 1], c011 = c[step_z + step_y],
                c111 = c[step_z + step_y + 1];
@@ -152,11 +163,12 @@ template <bool kGradient>
   if (kGradient && !outside) {
     const double dx0 = (c100 - c000) + fy * ((c110 - c010) - (c100 - c000));
     const double dx1 = (c101 - c001) + fy * ((c111 - c011) - (c101 - c001));
-    gradient.x() = (dx0 + fz * (dx1 - dx0)) * voxels_per_mm_;
-    gradient.y() = ((c10 - c00) + fz * ((c11 - c01) - (c10 - c00))) * voxels_per_mm_;
-    gradient.z() = (c1 - c0) * voxels_per_mm_;
+    const double scale = voxels_per_mm_ * mm_per_unit_;
+    gradient.x() = (dx0 + fz * (dx1 - dx0)) * scale;
+    gradient.y() = ((c10 - c00) + fz * ((c11 - c01) - (c10 - c00))) * scale;
+    gradient.z() = (c1 - c0) * scale;
   }
-  return c0 + fz * (c1 - c0) + outside_mm;
+  return (c0 + fz * (c1 - c0)) * mm_per_unit_ + outside_mm;
 }
 
 double PartDistanceField::interpolate(const Eigen::Vector3d& point_part_mm,

@@ -9,9 +9,12 @@
 // Huttenlocher, 2012), trilinearly interpolated: a table lookup per query instead of a
 // tangent-plane search, so thousands of start poses can be scored and aligned per part.
 // Distances are accurate to half a voxel diagonal: enough to rank starts, never used for the
-// final pose (ch. 6 registration on the views does that).
+// final pose (ch. 6 registration on the views does that). So each voxel keeps its distance in
+// 16 bits, in steps of the grid's largest distance / 65535 (a few micrometres on real parts,
+// a thousandth of that accuracy): half the memory of floats for every part of the catalog.
 #include <Eigen/Core>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "core/parameter_visitor.hpp"
@@ -38,12 +41,13 @@ class PartDistanceField {
   PartDistanceField(const std::vector<Eigen::Vector3d>& points_part_mm,
                     const PartDistanceFieldParameters& parameters);
 
-  // The grid never holds more voxels (16 Mi floats, 64 MiB; a 500 mm part at the default
+  // The grid never holds more voxels (16 Mi of 2 bytes, 32 MiB; a 500 mm part at the default
   // 2 mm voxel fits): points spread wider get a coarser voxel than asked for.
   static constexpr std::size_t kMaxVoxels = std::size_t{1} << 24;
 
-  bool empty() const { return distance_mm_.empty(); }
-  std::size_t voxel_count() const { return distance_mm_.size(); }
+  bool empty() const { return distance_units_.empty(); }
+  std::size_t voxel_count() const { return distance_units_.size(); }
+  std::size_t memory_bytes() const { return distance_units_.size() * sizeof(std::uint16_t); }
   double voxel_mm() const { return voxel_mm_; }
   // Distance to the part's surface; beyond the grid, at least the margin (the grid edge's
   // value plus the way out). The gradient is that of the trilinear interpolant (zero
@@ -72,7 +76,8 @@ class PartDistanceField {
   double voxel_mm_ = 1.0;
   double voxels_per_mm_ = 1.0;  // multiplying is several times faster than dividing
   int size_[3] = {0, 0, 0};
-  std::vector<float> distance_mm_;  // x fastest
+  double mm_per_unit_ = 0.0;
+  std::vector<std::uint16_t> distance_units_;  // x fastest
 };
 
 // Mean over the scene points of min(d^2, truncation^2), d their distance to the part surface

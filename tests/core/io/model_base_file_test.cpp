@@ -151,8 +151,8 @@ void expect_same_patches(const CosmosView& read, const CosmosView& written) {
   }
 }
 
-// Floats and scaled integers where the packed form keeps them (half a step of rounding),
-// exact elsewhere.
+// Each fit coefficient within half its fixed-point step (packed_registration_points.hpp),
+// the grid exactly; normals are the fit's tangent plane's.
 void expect_same_registration(const RegistrationPoints& read, const RegistrationPoints& written) {
   EXPECT_EQ(read.grid_width, written.grid_width);
   EXPECT_EQ(read.grid_height, written.grid_height);
@@ -164,20 +164,22 @@ void expect_same_registration(const RegistrationPoints& read, const Registration
   EXPECT_EQ(read.fit_cofactor, written.fit_cofactor);
   EXPECT_EQ(read.z_noise_sigma_mm, written.z_noise_sigma_mm);
   ASSERT_EQ(read.size(), written.size());
-  const double curvature_step = written.surface.bottomRows(3).cwiseAbs().maxCoeff() / 32767;
-  const double residual_step_mm = written.residual_rms_mm.maxCoeff() / 65535;
-  EXPECT_GT(curvature_step, 0.0);
+  const double noise_mm = std::max(written.z_noise_sigma_mm, kMinNoiseSigmaMm);
+  for (int c = 0; c < kSurfaceCoefficients; ++c) {
+    const double step = kStepPerSigma * noise_mm * std::sqrt(written.fit_cofactor(c, c));
+    EXPECT_GT(step, 0.0);
+    EXPECT_LE((read.surface.row(c) - written.surface.row(c)).cwiseAbs().maxCoeff(),
+              0.5 * step * (1 + 1e-9))
+        << c;
+  }
+  EXPECT_LT(kStepPerSigma * noise_mm * std::sqrt(written.fit_cofactor(kHeight, kHeight)), 0.01);
   for (int i = 0; i < read.size(); ++i) {
-    for (int c = kHeight; c <= kSlopeY; ++c)
-      EXPECT_EQ(read.surface(c, i), static_cast<double>(static_cast<float>(written.surface(c, i))));
-    for (int c = kCurveXX; c <= kCurveYY; ++c)
-      EXPECT_NEAR(read.surface(c, i), written.surface(c, i), 0.5001 * curvature_step);
     EXPECT_NEAR(read.position_mm(0, i), written.position_mm(0, i), 1e-9);
     EXPECT_NEAR(read.position_mm(1, i), written.position_mm(1, i), 1e-9);
-    EXPECT_NEAR(read.position_mm(2, i), written.position_mm(2, i), 1e-5);
-    EXPECT_NEAR((read.normal.col(i) - written.normal.col(i)).norm(), 0.0, 1e-4);
-    EXPECT_NEAR(read.normal.col(i).norm(), 1.0, 1e-12);
-    EXPECT_NEAR(read.residual_rms_mm(i), written.residual_rms_mm(i), 0.5001 * residual_step_mm);
+    EXPECT_NEAR(read.position_mm(2, i), written.position_mm(2, i), 0.005);
+    const Eigen::Vector3d tangent_normal =
+        Eigen::Vector3d(-read.surface(kSlopeX, i), -read.surface(kSlopeY, i), 1.0).normalized();
+    EXPECT_NEAR((read.normal.col(i) - tangent_normal).norm(), 0.0, 1e-12);
   }
 }
 
@@ -349,6 +351,12 @@ TEST_F(ModelBaseFile, AbsurdValuesBehindAValidChecksumAreRefusedNamingThem) {
   expect_refused([](ModelBase& b) { b.views[4].registration_packed.spacing_x_mm = 0; },
                  "view 4: registration spacing_x_mm is 0");
   expect_refused(
+      [](ModelBase& b) { b.views[2].registration_packed.coefficients[kSlopeX].step = 1e300; },
+      "view 2: registration slope x step is 1e+300");
+  expect_refused(
+      [](ModelBase& b) { b.views[1].registration_packed.coefficients[kHeight].low = -(1 << 28); },
+      "view 1: registration height_mm lower bound is -");
+  expect_refused(
       [](ModelBase& b) {
         b.views[3].direction_part = {0, 0, 7};
       },
@@ -361,27 +369,46 @@ TEST_F(ModelBaseFile, AbsurdValuesBehindAValidChecksumAreRefusedNamingThem) {
                  "cluster 2: moment 1 is nan");
 }
 
-// A point height is stored in the packed arrays the file's bytes hold: patched in place
-// behind a recomputed checksum.
-TEST_F(ModelBaseFile, AbsurdPointHeightInTheFileIsRefused) {
+// A view's heights are bounded by its height coding's [low, high] (every decoded height is
+// clamped into it): an absurd bound patched into the file's bytes behind a recomputed
+// checksum is refused.
+TEST_F(ModelBaseFile, AbsurdPointHeightBoundInTheFileIsRefused) {
   write_model_base(hand_made_base(), path_);
   std::string content = bytes();
   const ModelBase read = read_model_base(path_);
-  // The loaded base's arrays point into its file's bytes, which `storage` holds from the
-  // header on: the height's offset in the file is its distance from there.
+  // The height coding struct (step, low, high, ...; core/io/model_base.fbs) is found by its
+  // bytes: a double and two integers no other place of the file repeats.
   const PackedRegistrationPoints& packed = read.views[3].registration_packed;
-  const auto offset =
-      static_cast<std::size_t>(reinterpret_cast<const char*>(packed.plane.data() + 3 * 7) -
-                               static_cast<const char*>(packed.storage.get()));
-  ASSERT_LT(offset + 4, content.size());
-  const float absurd = 3e38f;
-  std::memcpy(content.data() + offset, &absurd, 4);
+  const CoefficientCoding& height = packed.coefficients[kHeight];
+  ASSERT_GT(height.step, 0.0);
+  std::string coding(16, '\0');
+  std::memcpy(coding.data(), &height.step, 8);
+  std::memcpy(coding.data() + 8, &height.low, 4);
+  std::memcpy(coding.data() + 12, &height.high, 4);
+  const std::size_t step_at = content.find(coding);
+  ASSERT_NE(step_at, std::string::npos);
+  ASSERT_EQ(content.find(coding, step_at + 1), std::string::npos);
+  const std::int32_t absurd = (1 << 28);
+  std::memcpy(content.data() + step_at + 12, &absurd, 4);
   const std::uint64_t checksum =
       xxh64(content.data() + kModelBaseHeaderBytes, content.size() - kModelBaseHeaderBytes);
   for (int k = 0; k < 8; ++k)
     content[24 + static_cast<std::size_t>(k)] = static_cast<char>(checksum >> (8 * k));
   put_bytes(content);
-  expect_refusal("height_mm is 3e+38, expected within +-10000");
+  expect_refusal("view 3: registration height_mm upper bound is ");
+  expect_refusal("expected within +-10000");
+}
+
+// A base of the previous format (24-byte points) is refused before anything is decoded, with
+// the one line saying how to get a current one.
+TEST_F(ModelBaseFile, AVersion1BaseIsRefusedWithTheWayToRebuildIt) {
+  write_model_base(hand_made_base(), path_);
+  std::string content = bytes();
+  content[8] = 1;
+  put_bytes(content);
+  expect_refusal(
+      "format version 1, this build reads version 2 (rebuild it with `cosmos modelbase "
+      "build`)");
 }
 
 }  // namespace

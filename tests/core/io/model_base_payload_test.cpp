@@ -120,7 +120,7 @@ TEST(ModelBasePayload, DecodesWhatWasEncoded) {
   EXPECT_EQ(read.clusters[1].centroid, base.clusters[1].centroid);
 }
 
-TEST(ModelBasePayload, RegistrationArraysAreReadInPlace) {
+TEST(ModelBasePayload, RegistrationStreamsAreReadInPlace) {
   const Decoded decoded = decode(encode(small_base()));
   ASSERT_FALSE(decoded.refusal) << *decoded.refusal;
   const auto inside = [&](const void* p) {
@@ -130,11 +130,8 @@ TEST(ModelBasePayload, RegistrationArraysAreReadInPlace) {
   for (const ModelBaseView& view : decoded.base.views) {
     const PackedRegistrationPoints& packed = view.registration_packed;
     ASSERT_GT(packed.size(), 20);
-    EXPECT_TRUE(inside(packed.plane.data()));
-    EXPECT_TRUE(inside(packed.curvature.data()));
-    EXPECT_TRUE(inside(packed.normal_xy.data()));
-    EXPECT_TRUE(inside(packed.residual.data()));
-    EXPECT_TRUE(inside(packed.occupied_cells.data()));
+    EXPECT_TRUE(inside(packed.coefficient_bits.data()));
+    EXPECT_TRUE(inside(packed.occupancy_runs.data()));
     EXPECT_EQ(packed.storage.get(), decoded.payload.get());  // keeps the payload alive
     EXPECT_EQ(view.registration.size(), 0);                  // only the packed form
   }

@@ -86,6 +86,20 @@ TEST(PartDistanceField, SphereDistanceIsRadialWithinHalfAVoxelDiagonal) {
   }
 }
 
+// 16 bits per voxel, in steps of the grid's largest distance / 65535: the sphere's distances
+// keep the accuracy of the voxels (within a voxel diagonal where the interpolation spans
+// voxels a half diagonal off each way, as at its centre).
+TEST(PartDistanceField, KeepsTwoBytesPerVoxel) {
+  const double radius_mm = 25.0;
+  const PartDistanceField field(sphere_points(radius_mm), {.voxel_mm = kVoxelMm, .margin_mm = 12});
+  EXPECT_EQ(field.memory_bytes(), 2 * field.voxel_count());
+  EXPECT_NEAR(field.distance_mm(Eigen::Vector3d::Zero()), radius_mm, 2 * kHalfDiagonalMm);
+  for (double r : {24.0, 25.0, 26.0})
+    EXPECT_NEAR(field.distance_mm(Eigen::Vector3d(0, r, 0)), std::abs(r - radius_mm),
+                kHalfDiagonalMm)
+        << r;
+}
+
 TEST(PartDistanceField, TruncatedMeanSquareIsSmallOnTheSurfaceAndCappedFarFromIt) {
   const std::vector<Eigen::Vector3d> surface = relief_points(0.5);
   const PartDistanceField field(surface, {.voxel_mm = kVoxelMm, .margin_mm = 12});
@@ -191,7 +205,9 @@ TEST(PartDistanceField, ASinglePointWithoutMarginStillInterpolates) {
   ASSERT_FALSE(field.empty());
   EXPECT_EQ(field.voxel_count(), 8u);
   EXPECT_NEAR(field.distance_mm(Eigen::Vector3d(4, 5, 6)), 0.0, 1e-6);
-  EXPECT_NEAR(field.distance_mm(Eigen::Vector3d(4, 5, 16)), 10.0, 1e-6);
+  // The edge voxel's 2 mm in 16-bit steps of the grid's largest distance (its diagonal,
+  // 3.5 mm) / 65535: within half a step, 2.7e-5 mm.
+  EXPECT_NEAR(field.distance_mm(Eigen::Vector3d(4, 5, 16)), 10.0, 2.7e-5);
 }
 
 }  // namespace
