@@ -79,9 +79,16 @@ bool PieceJoiner::recognize_together(const Piece& piece, const PartBuilder& buil
   for (const Piece& held : held_)
     if (!held.recognized && near(held, piece)) images.push_back(&held.image);
   if (images.size() < 2) return false;
-  RecognitionResult result = context_.recognizer->recognize(union_image(images));
+  RangeImage joined = union_image(images);
+  RecognitionResult result = context_.recognizer->recognize(joined);
   if (result.status != RecognitionStatus::kOk) return false;
   PartRecognition together = recognition_of(std::move(result), builder, context_, 0);
+  if (context_.keep_part_image) {
+    // The loop frame's y is the profile index times the grid (ScanLoop::begin_part).
+    together.image_first_profile =
+        static_cast<std::int64_t>(std::lround(joined.origin_y_mm / joined.pixel_size_y_mm));
+    together.image = std::move(joined);
+  }
   std::int64_t first_profile = piece.first_profile;
   for (auto held = held_.begin(); held != held_.end();) {
     if (!held->recognized && near(*held, piece)) {
