@@ -70,7 +70,8 @@ struct CellStatus {
     v("parts_seen", self.parts_seen, "parts the tracker completed");
     v("parts_recognized", self.parts_recognized, "poses published with status OK");
     v("parts_rejected", self.parts_rejected, "poses published as REJECTED or ERROR");
-    v("parts_dropped", self.parts_dropped, "parts that found no free builder, queue slot or row-pool block");
+    v("parts_dropped", self.parts_dropped,
+      "parts that found no free builder, queue slot or row-pool block");
     v("parts_truncated", self.parts_truncated, "parts longer than the builders' rows");
     v("runs_dropped", self.runs_dropped,
       "runs of data beyond the tracker's per-row or open limits");
