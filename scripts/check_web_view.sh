@@ -132,7 +132,7 @@ try:
     url = wait_for(cell_url, 60, "the cell's web view address")
     request(f"{page}/url", {"url": url})
 
-    summary_line = r"cell: (\d+) of (\d+) parts identified correctly"
+    summary_line = r"cell: of (\d+) parts placed: (\d+) identified"
     wait_for(lambda: re.search(summary_line, cell_output()), 120, "the cell's summary")
     text = cell_output()
     printed = {}  # part_seq -> (name, truth)
