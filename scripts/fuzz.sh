@@ -4,6 +4,7 @@
 # A crash, leak, timeout or sanitizer report fails the script and leaves the reproducer in
 # build-fuzz/fuzz/crashes/<harness>/. Each harness's corpus grows in build-fuzz/fuzz/corpus/.
 # Prints per harness: executions, coverage (libFuzzer's cov: edges), corpus size.
+# The mutations follow COSMOS_FUZZ_SEED (default 1), so a finding can be reproduced by rerunning.
 #   scripts/fuzz.sh [SECONDS] [HARNESS...]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -36,7 +37,8 @@ fuzz_one() {  # HARNESS
   # Inputs up to 64 KiB; 10 s or 2 GB for one input is a finding too (an unbounded loop or
   # allocation from input).
   local rc=0
-  "$build_dir/fuzz/fuzz_$1" "$corpus" -max_total_time="$seconds" -max_len=65536 -timeout=10 \
+  "$build_dir/fuzz/fuzz_$1" "$corpus" -max_total_time="$seconds" -seed="${COSMOS_FUZZ_SEED:-1}" \
+    -max_len=65536 -timeout=10 \
     -rss_limit_mb=2048 -artifact_prefix="$crashes/" -print_final_stats=1 > "$log" 2>&1 || rc=$?
   echo "$rc" > "$log.status"
 }

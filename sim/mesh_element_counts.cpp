@@ -305,12 +305,16 @@ void check_ply(const fs::path& path, const std::string& bytes) {
 
 // ---- OFF ----
 
-// The next line holding data: comments (from '#') and blank lines skipped.
+// The next line holding data, as assimp reads them: comments (from '#') and empty lines are
+// skipped, but a line of spaces or tabs is data to it (assimp read a face from one past its
+// buffers), so it is returned here and refused as no vertex or face.
 std::optional<std::string> data_line(Tokens& text) {
   while (!text.at_end()) {
     std::string line = text.line();
+    const bool comment = line.find('#') != std::string::npos;
     line = line.substr(0, line.find('#'));
     if (line.find_first_not_of(" \t\r") != std::string::npos) return line;
+    if (!comment && line.find_first_not_of('\r') != std::string::npos) return line;
   }
   return std::nullopt;
 }

@@ -302,6 +302,11 @@ TEST_F(MeshFiles, HeaderlessOffCountsAndUnknownPlyHeaderLinesAreRefused) {
   const fs::path short_face = write("short_face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n");
   expect_one_line_naming(load_error(short_face), short_face,
                          "face 0 has fewer than 3 vertex indices");
+  // A line of blanks where the face is: assimp read it as one, past its buffers.
+  const fs::path blank_face =
+      write("blank_face.off", "3 1 0\n0 0 0\n1 0 0\n0 1 0\n \n\t\n3 0 1 2\n");
+  expect_one_line_naming(load_error(blank_face), blank_face,
+                         "face 0 does not start with a vertex count of 3 or more");
 }
 
 }  // namespace
