@@ -18,6 +18,7 @@
 #include "realtime/lcm/memory_publisher.hpp"
 #include "sim/part_catalog.hpp"
 #include "sim/source/simulated_source.hpp"
+#include "tests/realtime/regression_recognizer.hpp"
 #include "tests/regression_model_base.hpp"
 
 namespace cosmos {
@@ -27,17 +28,8 @@ namespace fs = std::filesystem;
 
 class BlobRecognition : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    base_ = std::make_unique<ModelBase>(read_model_base(testing::regression_model_base()));
-    catalog_ = std::make_unique<PartCatalog>(
-        read_part_catalog(fs::path(COSMOS_SOURCE_DIR) / "config/parts-regression.yaml"));
-    recognizer_ = std::make_unique<Recognizer>(*base_, CosmosParameters{}, RecognitionParameters{});
-  }
-  static void TearDownTestSuite() {
-    recognizer_.reset();
-    catalog_.reset();
-    base_.reset();
-  }
+  static void SetUpTestSuite() { world_ = std::make_unique<testing::RegressionRecognizer>(); }
+  static void TearDownTestSuite() { world_.reset(); }
 
   struct Outcome {
     std::size_t placed = 0;
@@ -51,15 +43,15 @@ class BlobRecognition : public ::testing::Test {
   };
 
   static Outcome run(const SimulatedSourceSettings& settings) {
-    SimulatedSource source(*catalog_, ScannerParameters{}, settings);
+    SimulatedSource source(world_->catalog, ScannerParameters{}, settings);
     EXPECT_EQ(source.start(), SourceStatus::kOk);
     ScanLoopSettings loop_settings;
     loop_settings.wait_for_recognizer = true;
     ScanLoop loop(loop_settings);
     PartRecognitionContext context;
-    context.recognizer = recognizer_.get();
-    context.model_base = base_.get();
-    context.catalog_index_of_base_part.assign(base_->parts.size(), -1);
+    context.recognizer = &world_->recognizer;
+    context.model_base = &world_->base;
+    context.catalog_index_of_base_part.assign(world_->base.parts.size(), -1);
     context.mm_per_tick = ScannerParameters{}.encoder_mm_per_tick;
     context.x0_loop_mm = loop.x0_loop_mm();
     MemoryPublisher publisher;
@@ -103,9 +95,7 @@ class BlobRecognition : public ::testing::Test {
     return settings;
   }
 
-  static inline std::unique_ptr<ModelBase> base_;
-  static inline std::unique_ptr<PartCatalog> catalog_;
-  static inline std::unique_ptr<Recognizer> recognizer_;
+  static inline std::unique_ptr<testing::RegressionRecognizer> world_;
 };
 
 TEST_F(BlobRecognition, EveryPlacedPartIsReportedAtEveryGap) {

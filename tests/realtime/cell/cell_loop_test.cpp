@@ -28,6 +28,7 @@
 #include "sim/part_catalog.hpp"
 #include "sim/source/simulated_source.hpp"
 #include "tests/common/allocation_counter.hpp"
+#include "tests/realtime/regression_recognizer.hpp"
 #include "tests/regression_model_base.hpp"
 
 namespace cosmos {
@@ -37,17 +38,8 @@ namespace fs = std::filesystem;
 
 class CellLoop : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    base_ = std::make_unique<ModelBase>(read_model_base(testing::regression_model_base()));
-    catalog_ = std::make_unique<PartCatalog>(
-        read_part_catalog(fs::path(COSMOS_SOURCE_DIR) / "config/parts-regression.yaml"));
-    recognizer_ = std::make_unique<Recognizer>(*base_, CosmosParameters{}, RecognitionParameters{});
-  }
-  static void TearDownTestSuite() {
-    recognizer_.reset();
-    catalog_.reset();
-    base_.reset();
-  }
+  static void SetUpTestSuite() { world_ = std::make_unique<testing::RegressionRecognizer>(); }
+  static void TearDownTestSuite() { world_.reset(); }
 
   static SimulatedSourceSettings sim_settings(int parts, std::uint64_t seed) {
     SimulatedSourceSettings settings;
@@ -64,12 +56,12 @@ class CellLoop : public ::testing::Test {
 
   static PartRecognitionContext context(const ScanLoop& loop) {
     PartRecognitionContext context;
-    context.recognizer = recognizer_.get();
-    context.model_base = base_.get();
-    for (const ModelPart& part : base_->parts) {
+    context.recognizer = &world_->recognizer;
+    context.model_base = &world_->base;
+    for (const ModelPart& part : world_->base.parts) {
       int index = -1;
-      for (std::size_t c = 0; c < catalog_->parts.size(); ++c)
-        if (catalog_->parts[c].name == part.name) index = static_cast<int>(c);
+      for (std::size_t c = 0; c < world_->catalog.parts.size(); ++c)
+        if (world_->catalog.parts[c].name == part.name) index = static_cast<int>(c);
       context.catalog_index_of_base_part.push_back(index);
     }
     context.mm_per_tick = ScannerParameters{}.encoder_mm_per_tick;
@@ -92,9 +84,7 @@ class CellLoop : public ::testing::Test {
     return bytes;
   }
 
-  static inline std::unique_ptr<ModelBase> base_;
-  static inline std::unique_ptr<PartCatalog> catalog_;
-  static inline std::unique_ptr<Recognizer> recognizer_;
+  static inline std::unique_ptr<testing::RegressionRecognizer> world_;
 };
 
 TEST_F(CellLoop, ReplayedStreamGivesByteIdenticalPosesWithASlowWorker) {
@@ -102,7 +92,7 @@ TEST_F(CellLoop, ReplayedStreamGivesByteIdenticalPosesWithASlowWorker) {
       fs::temp_directory_path() / ("cosmos-cell-replay-" + std::to_string(::getpid()) + ".lcmlog");
   MemoryPublisher live;
   {
-    SimulatedSource source(*catalog_, ScannerParameters{}, sim_settings(4, 21));
+    SimulatedSource source(world_->catalog, ScannerParameters{}, sim_settings(4, 21));
     ASSERT_EQ(source.start(), SourceStatus::kOk);
     ScanLoop loop(loop_settings());
     CellRunSettings settings = unpaced(true);
@@ -154,7 +144,7 @@ struct MemqSubscriber {
 RigidPose rigid(const RigidTransform& T) { return {T.rotation, T.translation_mm}; }
 
 TEST_F(CellLoop, TwentySimulatedPartsArrivePublishedOverLcmWithTheirTruePoses) {
-  SimulatedSource source(*catalog_, ScannerParameters{}, sim_settings(20, 7));
+  SimulatedSource source(world_->catalog, ScannerParameters{}, sim_settings(20, 7));
   ASSERT_EQ(source.start(), SourceStatus::kOk);
   LcmPublisher publisher("memq://");
   MemqSubscriber received;
@@ -172,8 +162,8 @@ TEST_F(CellLoop, TwentySimulatedPartsArrivePublishedOverLcmWithTheirTruePoses) {
 
   std::map<std::string, std::unique_ptr<AddSDistance>> add_s;
   std::map<std::string, double> diameter_mm;
-  for (const ModelPart& part : base_->parts) {
-    const PartEntry& entry = catalog_->at(part.name);
+  for (const ModelPart& part : world_->base.parts) {
+    const PartEntry& entry = world_->catalog.at(part.name);
     const TriangleMesh mesh = load_mesh(entry.mesh_path, entry.size_mm);
     std::vector<Eigen::Vector3d> points_mm;
     for (const auto& vertex : mesh.vertices) points_mm.push_back(vertex.cast<double>());
@@ -207,7 +197,7 @@ TEST_F(CellLoop, TwentySimulatedPartsArrivePublishedOverLcmWithTheirTruePoses) {
 }
 
 TEST_F(CellLoop, ProcessingAProfileAllocatesNothingAfterWarmUp) {
-  SimulatedSource source(*catalog_, ScannerParameters{}, sim_settings(2, 3));
+  SimulatedSource source(world_->catalog, ScannerParameters{}, sim_settings(2, 3));
   ASSERT_EQ(source.start(), SourceStatus::kOk);
   ScanLoopSettings settings = loop_settings();
   settings.wait_for_recognizer = false;
