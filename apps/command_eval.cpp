@@ -1,5 +1,6 @@
-// `cosmos eval --modelbase FILE --catalog FILE --tests N --seed S [--noise-mm S]
-// [--unknown PART,...] [--only TEST,...] [--threads N] --out DIR`: N seeded random-pose scans
+// `cosmos eval --modelbase FILE --catalog FILE --tests N --seed S [--pose random|resting]
+// [--noise-mm S] [--unknown PART,...] [--only TEST,...] [--threads N] --out DIR`: N seeded scans
+// (random poses, or the parts' stable resting poses on the belt)
 // of the base's parts and scans of parts it does not hold, each recognized; metrics.json and
 // report.html (sim/evaluation/evaluation_report.hpp) in DIR, and confusions.json: which part
 // was taken for which, and why known parts were rejected (evaluation_confusions.hpp). --only
@@ -44,6 +45,7 @@ struct EvalOptions {
   std::string config;
   int tests = 100;
   std::uint64_t seed = 1;
+  std::string pose = "random";
   double noise_mm = -1;
   std::vector<std::string> unknown;
   std::vector<int> only;
@@ -124,7 +126,9 @@ void run(const EvalOptions& options) {
       model_base_view_conditioning(base, options.model_base).height_threshold_mm;
 
   const std::vector<EvaluationPart> parts = evaluation_parts(base, catalog, options.unknown);
-  std::vector<EvaluationTest> plan = evaluation_plan(parts, options.tests, options.seed);
+  std::vector<EvaluationTest> plan = evaluation_plan(
+      parts, options.tests, options.seed,
+      options.pose == "resting" ? EvaluationPoseMode::kResting : EvaluationPoseMode::kRandom);
   if (!options.only.empty()) plan = chosen_tests(plan, options.only);
   const Recognizer recognizer(base, cosmos, RecognitionParameters{});
   const std::vector<EvaluationRecord> records =
@@ -168,6 +172,13 @@ void install(CLI::App& root) {
       ->check(within_range<int>(Range{1, kMaxTests}))
       ->capture_default_str();
   command->add_option("--seed", options->seed, "seed of the test plan, poses and noise")
+      ->capture_default_str();
+  command
+      ->add_option(
+          "--pose", options->pose,
+          "random: uniform over all rotations; resting: the part's stable poses on the belt")
+      ->check(CLI::IsMember({"random", "resting"}))
+      ->type_name("random|resting")
       ->capture_default_str();
   command->add_option("--noise-mm", options->noise_mm, "z noise sigma (default: the scanner's)")
       ->type_name("MM")

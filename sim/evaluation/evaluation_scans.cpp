@@ -65,7 +65,7 @@ std::vector<EvaluationPart> evaluation_parts(const ModelBase& base, const PartCa
 }
 
 std::vector<EvaluationTest> evaluation_plan(const std::vector<EvaluationPart>& parts, int tests,
-                                            std::uint64_t seed) {
+                                            std::uint64_t seed, EvaluationPoseMode pose) {
   std::vector<int> known, unknown;
   for (std::size_t p = 0; p < parts.size(); ++p)
     (parts[p].base_index >= 0 ? known : unknown).push_back(static_cast<int>(p));
@@ -74,13 +74,14 @@ std::vector<EvaluationTest> evaluation_plan(const std::vector<EvaluationPart>& p
   std::uint64_t stream = kTestStreamBase;
   for (int i = 0; i < tests; ++i, ++stream) {
     const std::uint64_t test_seed = mix_seed(seed, stream);
-    plan.push_back({known[test_seed % known.size()], test_seed, static_cast<int>(plan.size())});
+    plan.push_back(
+        {known[test_seed % known.size()], test_seed, static_cast<int>(plan.size()), pose});
   }
   const int per_part =
       (tests + static_cast<int>(known.size()) - 1) / static_cast<int>(known.size());
   for (int part : unknown)
     for (int i = 0; i < per_part; ++i, ++stream)
-      plan.push_back({part, mix_seed(seed, stream), static_cast<int>(plan.size())});
+      plan.push_back({part, mix_seed(seed, stream), static_cast<int>(plan.size()), pose});
   return plan;
 }
 
@@ -91,8 +92,11 @@ RangeImage scan_evaluation_test(const EvaluationTest& test,
   const EvaluationPart& part = parts[static_cast<std::size_t>(test.part)];
   ScannerParameters noisy = scanner;
   noisy.seed = mix_seed(test.seed, 1);
-  return scan_single_part(part.mesh, part.name, random_rotation(mix_seed(test.seed, 0)), noisy,
-                          conditioning);
+  const std::uint64_t pose_seed = mix_seed(test.seed, 0);
+  const Eigen::Matrix3d rotation = test.pose == EvaluationPoseMode::kResting
+                                       ? resting_rotation(part.mesh, pose_seed)
+                                       : random_rotation(pose_seed);
+  return scan_single_part(part.mesh, part.name, rotation, noisy, conditioning);
 }
 
 EvaluationRecord run_evaluation_test(const EvaluationTest& test,

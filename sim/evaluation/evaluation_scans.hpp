@@ -2,12 +2,14 @@
 // The test scans of `cosmos eval`: which part each test scans, in which pose and with which
 // noise, and the record its recognition gives (sim/evaluation/evaluation_metrics.hpp).
 //
-// Test i of a run with seed S scans known part (mix_seed(S, i) mod the known parts) in a
-// uniformly random pose drawn from mix_seed(S, i) and noise from another stream of it, so the
-// plan is fixed by (S, N) alone. The model views are scanned with the scanner's own seed
-// stream (per view index), the tests with streams of S above 2^32: the two never share noise.
-// Unknown parts (in the catalog, not in the base) are scanned as many times each as an
-// average known part, with seeds following the known tests'.
+// Test i of a run with seed S scans known part (mix_seed(S, i) mod the known parts) in a pose
+// drawn from mix_seed(S, i) and noise from another stream of it, so the plan is fixed by
+// (S, N, pose mode) alone. The pose is uniformly random over SO(3), or one of the part's
+// stable resting poses on the belt (sim/part_pose.hpp), as parts arrive on a real conveyor. The
+// model views are scanned with the scanner's own seed stream (per view index), the tests with
+// streams of S above 2^32: the two never share noise. Unknown parts (in the catalog, not in the
+// base) are scanned as many times each as an average known part, with seeds following the known
+// tests'.
 #include <Eigen/Core>
 #include <cstdint>
 #include <string>
@@ -33,10 +35,13 @@ struct EvaluationPart {
   std::vector<Eigen::Vector3d> model_points_mm;  // part-frame subsample for ADD-S
 };
 
+enum class EvaluationPoseMode { kRandom, kResting };
+
 struct EvaluationTest {
   int part = 0;  // index into the parts list
   std::uint64_t seed = 0;
   int index = 0;  // position in the whole plan: the number the report shows
+  EvaluationPoseMode pose = EvaluationPoseMode::kRandom;
 };
 
 // Known parts: the base's parts, found in the catalog by name (InputError naming a base part
@@ -46,10 +51,11 @@ std::vector<EvaluationPart> evaluation_parts(const ModelBase& base, const PartCa
                                              const std::vector<std::string>& unknown_names);
 
 std::vector<EvaluationTest> evaluation_plan(const std::vector<EvaluationPart>& parts, int tests,
-                                            std::uint64_t seed);
+                                            std::uint64_t seed,
+                                            EvaluationPoseMode pose = EvaluationPoseMode::kRandom);
 
-// The test's scan: its part in the test's random pose, with the test's noise, losing the belt
-// at the conditioning's threshold (that of the base's views).
+// The test's scan: its part in the test's pose (random or resting), with the test's noise, losing
+// the belt at the conditioning's threshold (that of the base's views).
 RangeImage scan_evaluation_test(const EvaluationTest& test,
                                 const std::vector<EvaluationPart>& parts,
                                 const ScannerParameters& scanner,
