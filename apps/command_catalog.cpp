@@ -1,7 +1,14 @@
 // `cosmos catalog list [--catalog FILE]`: the parts of the catalog, and whether each mesh
 // loads, so a user adding a mesh sees at once what the cell will make of it.
+// `cosmos catalog procedural [--out DIR] [--per-family N] [--seed S]`: the mechanical parts
+// built in code (sim/procedural_parts.hpp) written as OFF files, by default into the mesh
+// cache's procedural/ folder where config/parts-250.yaml looks for them; prints the catalog
+// line of each.
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -13,6 +20,7 @@
 #include "core/input_error.hpp"
 #include "sim/mesh.hpp"
 #include "sim/part_catalog.hpp"
+#include "sim/procedural_parts.hpp"
 
 namespace cosmos::cli {
 namespace {
@@ -84,6 +92,28 @@ void run_list(const std::string& catalog_option) {
   }
 }
 
+struct ProceduralOptions {
+  std::string out;
+  int per_family = 5;
+  std::uint64_t seed = 1;
+};
+
+void run_procedural(const ProceduralOptions& options) {
+  const std::filesystem::path out = options.out.empty() ? default_mesh_cache_dir() / "procedural"
+                                                        : std::filesystem::path(options.out);
+  std::error_code error;
+  std::filesystem::create_directories(out, error);
+  if (error) throw InputError(out.string() + ": cannot create directory (" + error.message() + ")");
+  for (const ProceduralPart& part : procedural_parts(options.per_family, options.seed)) {
+    write_off_file(part.mesh, out / (part.name + ".off"));
+    const Eigen::Vector3f extent = bounding_box(part.mesh).sizes();
+    std::printf("  - {name: %s, mesh: procedural/%s.off, size_mm: %.0f, symmetric: %s}\n",
+                part.name.c_str(), part.name.c_str(), std::ceil(extent.maxCoeff()),
+                part.symmetric ? "true" : "false");
+  }
+  std::fprintf(stderr, "catalog: procedural meshes in %s\n", out.string().c_str());
+}
+
 void install(CLI::App& root) {
   CLI::App* catalog =
       root.add_subcommand("catalog", "The part catalog (config/parts.yaml) and its meshes");
@@ -95,6 +125,18 @@ void install(CLI::App& root) {
                    "Part catalog YAML (default: ./config/parts.yaml, else ../../config/parts.yaml "
                    "beside the executable)");
   list->callback([catalog_option] { run_list(*catalog_option); });
+  auto procedural_options = std::make_shared<ProceduralOptions>();
+  CLI::App* procedural = catalog->add_subcommand(
+      "procedural", "Write the mechanical parts built in code as OFF files (the mesh cache)");
+  procedural
+      ->add_option("--out", procedural_options->out, "folder (default: MESH_CACHE/procedural)")
+      ->type_name("DIR");
+  procedural->add_option("--per-family", procedural_options->per_family, "parts of each family")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  procedural->add_option("--seed", procedural_options->seed, "seed of the families' proportions")
+      ->capture_default_str();
+  procedural->callback([procedural_options] { run_procedural(*procedural_options); });
 }
 
 const CommandRegistration registration("catalog", install);

@@ -56,6 +56,40 @@ TEST(DefaultCatalog, EveryPartLoadsAtItsSize) {
   }
 }
 
+// The catalog-scale test catalog: at least 250 parts, the default catalog's among them as they
+// are, and each size family three sizes 10 % apart of one mesh. Its meshes are not loaded here
+// (the procedural ones exist once `cosmos catalog procedural` wrote them).
+TEST(ScaleCatalog, HoldsTheDefaultPartsAndSizeFamiliesTenPercentApart) {
+  const PartCatalog defaults =
+      read_part_catalog(fs::path(COSMOS_SOURCE_DIR) / "config" / "parts.yaml");
+  const PartCatalog scale =
+      read_part_catalog(fs::path(COSMOS_SOURCE_DIR) / "config" / "parts-250.yaml");
+  EXPECT_GE(scale.parts.size(), 250u);
+  std::set<std::string> names;
+  for (const PartEntry& part : scale.parts) names.insert(part.name);
+  EXPECT_EQ(names.size(), scale.parts.size());
+  for (const PartEntry& part : defaults.parts) {
+    const PartEntry* same = scale.find(part.name);
+    ASSERT_NE(same, nullptr) << part.name;
+    EXPECT_EQ(same->mesh_path, part.mesh_path) << part.name;
+    EXPECT_EQ(same->size_mm, part.size_mm) << part.name;
+  }
+  int families = 0;
+  for (const PartEntry& part : scale.parts) {
+    const PartEntry* larger = scale.find(part.name + "-110");
+    if (larger == nullptr) continue;
+    const PartEntry* largest = scale.find(part.name + "-121");
+    ASSERT_NE(largest, nullptr) << part.name;
+    EXPECT_EQ(larger->mesh_path, part.mesh_path) << part.name;
+    EXPECT_EQ(largest->mesh_path, part.mesh_path) << part.name;
+    EXPECT_NEAR(larger->size_mm, 1.10 * part.size_mm, 0.051) << part.name;
+    EXPECT_NEAR(largest->size_mm, 1.21 * part.size_mm, 0.051) << part.name;
+    EXPECT_EQ(larger->symmetric, part.symmetric) << part.name;
+    ++families;
+  }
+  EXPECT_GE(families, 70);
+}
+
 class CatalogFiles : public ::testing::Test {
  protected:
   void SetUp() override {
