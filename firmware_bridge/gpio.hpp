@@ -30,6 +30,15 @@ struct EncoderReading {
   std::uint64_t reversals = 0;
 };
 
+// The encoder count as of an instant (a frame's time stamp).
+struct EncoderAtTime {
+  std::int64_t ticks = 0;
+  // Every edge stamped up to the instant was decoded, and the kept history reaches back to it.
+  // Otherwise `ticks` is the best count there was: the edges read by the end of the wait, or
+  // the oldest count kept.
+  bool settled = false;
+};
+
 struct PhotoEyeEvent {
   bool present = false;            // true: a part arrived; false: it left
   std::int64_t t_ns = 0;           // the edge that began it, CLOCK_MONOTONIC
@@ -55,6 +64,11 @@ class GpioLines {
   // Real-time: waits at most timeout_ns for input edges and decodes all that arrived.
   virtual GpioStatus poll_inputs(std::int64_t timeout_ns) noexcept = 0;
   virtual EncoderReading encoder() const noexcept = 0;
+  // Real-time: the count as of t_ns (CLOCK_MONOTONIC; the simulated twins' belt clock), after
+  // decoding every edge stamped up to t_ns, waiting at most wait_ns for the edges to be read.
+  // kError when the lines failed.
+  virtual GpioStatus encoder_at(std::int64_t t_ns, std::int64_t wait_ns,
+                                EncoderAtTime& at) noexcept = 0;
   virtual bool part_present() const noexcept = 0;
   // Real-time: the oldest undelivered photo-eye transition; false when there is none.
   virtual bool next_photo_eye_event(PhotoEyeEvent& event) noexcept = 0;

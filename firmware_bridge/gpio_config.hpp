@@ -59,11 +59,16 @@ struct GpioConfig {
   GpioLineRef laser_enable;
   GpioLineRef result_ready;
 
+  // How long a frame waits for the encoder's edges up to its time stamp to be read: the
+  // event reader thread's latency, or a time stamp the driver puts ahead of the dequeue.
+  std::int64_t frame_edges_wait_us = 2'000;
+
   // The decoders count in nanoseconds (kernel event stamps).
   std::int64_t encoder_debounce_ns() const { return encoder_debounce_us * 1000; }
   std::int64_t photo_eye_debounce_ns() const { return photo_eye_debounce_us * 1000; }
   std::int64_t photo_eye_min_on_ns() const { return photo_eye_min_on_us * 1000; }
   std::int64_t photo_eye_min_off_ns() const { return photo_eye_min_off_us * 1000; }
+  std::int64_t frame_edges_wait_ns() const { return frame_edges_wait_us * 1000; }
 
   template <class Visitor>
   void visit(Visitor& v) {
@@ -85,6 +90,10 @@ struct GpioConfig {
       Range{0, kMaxGpioMicroseconds});
     v("laser_enable", laser_enable, "output: on while the source streams");
     v("result_ready", result_ready, "output: pulses once per published result");
+    v("frame_edges_wait_us", frame_edges_wait_us,
+      "longest wait of a frame for the encoder edges up to its time stamp, us (the count at "
+      "that time is the frame's)",
+      Range{0, kMaxGpioMicroseconds});
   }
 };
 

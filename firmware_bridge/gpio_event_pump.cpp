@@ -54,8 +54,9 @@ bool GpioEventPump::start(const Line* lines, std::size_t count) noexcept {
   ring_.clear();
   known_until_ns_.store(monotonic_now_ns(), std::memory_order_release);
   stop_fd_ = eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK);
+  request_fd_ = eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK);
   wake_fd_ = eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK);
-  if (stop_fd_ < 0 || wake_fd_ < 0) {
+  if (stop_fd_ < 0 || request_fd_ < 0 || wake_fd_ < 0) {
     error_.set("cannot make an eventfd for the edge reader: %s", errno_text(errno));
     stop();
     return false;
@@ -75,10 +76,14 @@ void GpioEventPump::stop() noexcept {
     eventfd_write(stop_fd_, 1);
     thread_.join();
   }
-  for (int* fd : {&stop_fd_, &wake_fd_}) {
+  for (int* fd : {&stop_fd_, &request_fd_, &wake_fd_}) {
     if (*fd >= 0) ::close(*fd);
     *fd = -1;
   }
+}
+
+void GpioEventPump::request_cut() noexcept {
+  if (request_fd_ >= 0) eventfd_write(request_fd_, 1);
 }
 
 void GpioEventPump::wait(std::int64_t timeout_ns) noexcept {
@@ -91,10 +96,13 @@ void GpioEventPump::wait(std::int64_t timeout_ns) noexcept {
 }
 
 void GpioEventPump::run() noexcept {
-  std::array<pollfd, kGpioInputCount + 1> fds{};
+  // fds: the stop request, the cut request, then the lines.
+  constexpr std::size_t kFirstLine = 2;
+  std::array<pollfd, kGpioInputCount + kFirstLine> fds{};
   fds[0] = {stop_fd_, POLLIN, 0};
-  for (std::size_t i = 0; i < line_count_; ++i) fds[i + 1] = {lines_[i].fd, POLLIN, 0};
-  const auto watched = static_cast<nfds_t>(line_count_ + 1);
+  fds[1] = {request_fd_, POLLIN, 0};
+  for (std::size_t i = 0; i < line_count_; ++i) fds[i + kFirstLine] = {lines_[i].fd, POLLIN, 0};
+  const auto watched = static_cast<nfds_t>(line_count_ + kFirstLine);
   const timespec idle = ns_to_timespec(kIdlePeriodNs);
   const timespec no_wait{};
   gpiod_line_event events[kEventBatch];
@@ -105,14 +113,20 @@ void GpioEventPump::run() noexcept {
       return;
     }
     if ((fds[0].revents & POLLIN) != 0) return;
+    const bool requested = (fds[1].revents & POLLIN) != 0;
+    if (requested) {
+      eventfd_t count = 0;
+      eventfd_read(request_fd_, &count);
+    }
     // The cut is taken before the queues are read: see EdgeEventMerger.
     const std::int64_t cut_ns = monotonic_now_ns();
-    if (::ppoll(fds.data() + 1, watched - 1, &no_wait, nullptr) < 0 && errno != EINTR) {
+    if (::ppoll(fds.data() + kFirstLine, watched - kFirstLine, &no_wait, nullptr) < 0 &&
+        errno != EINTR) {
       fail("checking edge events: %s", errno_text(errno));
       return;
     }
     for (std::size_t i = 0; i < line_count_; ++i) {
-      if ((fds[i + 1].revents & POLLIN) == 0) continue;
+      if ((fds[i + kFirstLine].revents & POLLIN) == 0) continue;
       const Line& line = lines_[i];
       const int count = gpiod_line_event_read_fd_multiple(line.fd, events, kEventBatch);
       if (count < 0) {
@@ -134,7 +148,7 @@ void GpioEventPump::run() noexcept {
     bool handed = false;
     merger_.drain(cut_ns, [&](const GpioEdge& edge) { handed = ring_.push(edge) || handed; });
     known_until_ns_.store(cut_ns, std::memory_order_release);
-    if (handed) eventfd_write(wake_fd_, 1);
+    if (handed || requested) eventfd_write(wake_fd_, 1);
   }
 }
 

@@ -11,10 +11,12 @@
 // (EdgeEventMerger, up to a cut taken before the queues are read), and hands the ordered
 // edges to the loop through an EdgeRing together with the time up to which every edge has
 // been handed over (known_until_ns). It also wakes every kIdlePeriodNs without edges, so that
-// the decoder's debounce and photo-eye timers move on while the lines are quiet.
+// the decoder's debounce and photo-eye timers move on while the lines are quiet, and at once
+// when the consumer asks for a new cut (request_cut): a frame whose time stamp lies after the
+// last cut learns without an idle period's delay that no edge came before it.
 //
-// The consumer side (wait, pop, known_until_ns, failed) is real-time: lock-free, no
-// allocation, only an eventfd read and ppoll.
+// The consumer side (request_cut, wait, pop, known_until_ns, failed) is real-time: lock-free,
+// no allocation, only eventfd reads and writes and ppoll.
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -53,7 +55,11 @@ class GpioEventPump {
   void stop() noexcept;
   bool running() const noexcept { return thread_.joinable(); }
 
-  // Consumer: returns once an edge is waiting, or after timeout_ns.
+  // Consumer: asks the thread to read the lines now and move known_until_ns to that time;
+  // it wakes wait() when done.
+  void request_cut() noexcept;
+  // Consumer: returns once an edge is waiting or a requested cut was taken, or after
+  // timeout_ns.
   void wait(std::int64_t timeout_ns) noexcept;
   bool pop(GpioEdge& edge) noexcept { return ring_.pop(edge); }
   // Every edge stamped up to this time (CLOCK_MONOTONIC) is in the ring or was popped; read
@@ -78,6 +84,7 @@ class GpioEventPump {
   Line lines_[kGpioInputCount] = {};
   std::size_t line_count_ = 0;
   int stop_fd_ = -1;
+  int request_fd_ = -1;  // consumer -> thread: take a cut now
   int wake_fd_ = -1;
   std::thread thread_;
   std::atomic<std::int64_t> known_until_ns_{0};

@@ -1,5 +1,7 @@
 #include "firmware_bridge/gpio_input_decoder.hpp"
 
+#include <algorithm>
+
 namespace cosmos {
 
 GpioInputDecoder::GpioInputDecoder(const GpioInputParameters& parameters)
@@ -7,8 +9,9 @@ GpioInputDecoder::GpioInputDecoder(const GpioInputParameters& parameters)
 
 void GpioInputDecoder::reset(bool encoder_a, bool encoder_b, bool photo_eye,
                              std::int64_t t_ns) noexcept {
-  encoder_.reset(encoder_a, encoder_b);
+  encoder_.reset(encoder_a, encoder_b, 0, t_ns);
   photo_eye_.reset(photo_eye, t_ns);
+  decoded_until_ns_ = t_ns;
   first_event_ = 0;
   event_count_ = 0;
   lost_events_ = 0;
@@ -42,6 +45,7 @@ void GpioInputDecoder::on_edge(const GpioEdge& edge) noexcept {
 }
 
 void GpioInputDecoder::advance_to(std::int64_t t_ns) noexcept {
+  decoded_until_ns_ = std::max(decoded_until_ns_, t_ns);
   encoder_.advance_to(t_ns);
   record(photo_eye_.advance_to(t_ns));
 }

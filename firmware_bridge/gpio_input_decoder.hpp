@@ -43,7 +43,14 @@ class GpioInputDecoder {
   // Logical levels read when the lines were requested.
   void reset(bool encoder_a, bool encoder_b, bool photo_eye, std::int64_t t_ns) noexcept;
   void on_edge(const GpioEdge& edge) noexcept;
+  // Every edge stamped up to t_ns has been given to on_edge().
   void advance_to(std::int64_t t_ns) noexcept;
+  // The latest advance_to() (or reset()) time: the counts up to it are final.
+  std::int64_t decoded_until_ns() const noexcept { return decoded_until_ns_; }
+  // The encoder count as of t_ns; final when t_ns <= decoded_until_ns().
+  EncoderHistory::Count encoder_ticks_at(std::int64_t t_ns) const noexcept {
+    return encoder_.ticks_at(t_ns);
+  }
 
   EncoderReading encoder() const noexcept;
   const EncoderCounts& encoder_counts() const noexcept { return encoder_.counts(); }
@@ -65,6 +72,7 @@ class GpioInputDecoder {
   std::size_t first_event_ = 0;
   std::size_t event_count_ = 0;
   std::uint64_t lost_events_ = 0;
+  std::int64_t decoded_until_ns_ = EncoderHistory::kSinceEver;
 };
 
 }  // namespace cosmos

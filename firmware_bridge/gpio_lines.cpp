@@ -2,9 +2,11 @@
 
 #include <gpiod.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdarg>
 #include <cstdio>
+#include <ctime>
 #include <utility>
 
 #include "firmware_bridge/kernel_timestamp.hpp"
@@ -207,4 +209,32 @@ GpioStatus LibgpiodLines::poll_inputs(std::int64_t timeout_ns) noexcept {
   decoder_.advance_to(known_ns);
   return decoded ? GpioStatus::kOk : GpioStatus::kTimeout;
 }
+
+GpioStatus LibgpiodLines::encoder_at(std::int64_t t_ns, std::int64_t wait_ns,
+                                     EncoderAtTime& at) noexcept {
+  const auto failed = [](GpioStatus status) {
+    return status == GpioStatus::kError || status == GpioStatus::kWrongState;
+  };
+  if (const GpioStatus polled = poll_inputs(0); failed(polled)) return polled;
+  const std::int64_t deadline_ns = monotonic_now_ns() + wait_ns;
+  while (decoder_.decoded_until_ns() < t_ns) {
+    const std::int64_t now_ns = monotonic_now_ns();
+    if (now_ns >= deadline_ns) break;
+    if (now_ns < t_ns) {
+      // A time stamp still ahead (a driver that stamps the frame's end in advance): no read
+      // of the lines can settle it before then.
+      const timespec until = ns_to_timespec(std::min(t_ns, deadline_ns));
+      clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &until, nullptr);
+      continue;
+    }
+    pump_.request_cut();
+    pump_.wait(deadline_ns - now_ns);
+    if (const GpioStatus polled = poll_inputs(0); failed(polled)) return polled;
+  }
+  const EncoderHistory::Count count = decoder_.encoder_ticks_at(t_ns);
+  at.ticks = count.ticks;
+  at.settled = count.covered && decoder_.decoded_until_ns() >= t_ns;
+  return GpioStatus::kOk;
+}
+
 }  // namespace cosmos

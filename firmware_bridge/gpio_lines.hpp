@@ -12,7 +12,10 @@
 // the kernel keeps only 16 events per line, which at 20 kHz of encoder edges is 0.8 ms, and
 // the loop may be held up far longer (the cell starts its source before loading its model
 // base). poll_inputs() decodes the edges the pump has handed over (GpioInputDecoder), waiting
-// up to its timeout when there are none; it is lock-free and allocates nothing. libgpiod's
+// up to its timeout when there are none; it is lock-free and allocates nothing. encoder_at()
+// decodes until the pump has read the lines past the asked time (asking it for a fresh read
+// when its last one was earlier, and sleeping first while the time still lies ahead), so a
+// frame's count is the count at its time stamp, whenever the frame was dequeued. libgpiod's
 // set-value calls use stack arrays and plain syscalls (Debian's 1.6.3 binary calls only ioctl
 // in them), so set_output() runs on the acquisition thread too.
 #include <array>
@@ -40,6 +43,8 @@ class LibgpiodLines final : public GpioLines {
   GpioStatus stop() noexcept override;
   GpioStatus poll_inputs(std::int64_t timeout_ns) noexcept override;
   EncoderReading encoder() const noexcept override { return decoder_.encoder(); }
+  GpioStatus encoder_at(std::int64_t t_ns, std::int64_t wait_ns,
+                        EncoderAtTime& at) noexcept override;
   bool part_present() const noexcept override { return decoder_.part_present(); }
   bool next_photo_eye_event(PhotoEyeEvent& event) noexcept override {
     return decoder_.next_photo_eye_event(event);

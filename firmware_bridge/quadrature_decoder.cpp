@@ -19,11 +19,13 @@ int state_of(bool a, bool b) noexcept { return (a ? 2 : 0) | (b ? 1 : 0); }
 QuadratureDecoder::QuadratureDecoder(const QuadratureDecoderParameters& parameters)
     : parameters_(parameters) {}
 
-void QuadratureDecoder::reset(bool level_a, bool level_b, std::int64_t ticks) noexcept {
+void QuadratureDecoder::reset(bool level_a, bool level_b, std::int64_t ticks,
+                              std::int64_t t_ns) noexcept {
   lines_[0] = {level_a, level_a, false, 0};
   lines_[1] = {level_b, level_b, false, 0};
   counts_ = {};
   counts_.ticks = ticks;
+  history_.reset(ticks, t_ns);
 }
 
 void QuadratureDecoder::count(int step, std::int64_t t_ns) noexcept {
@@ -32,6 +34,7 @@ void QuadratureDecoder::count(int step, std::int64_t t_ns) noexcept {
   counts_.ticks += step;
   counts_.last_step_t_ns = t_ns;
   ++counts_.steps;
+  history_.record(t_ns, counts_.ticks);
 }
 
 void QuadratureDecoder::apply_state(bool level_a, bool level_b, std::int64_t t_ns) noexcept {

@@ -19,9 +19,14 @@
 // leaving the decoder one state off. debounce_ns must stay well below the shortest quarter
 // period at top belt speed, or real edges are taken for bounce.
 //
+// Every count is also kept with its edge's time stamp (EncoderHistory), so the count at a
+// past instant, a frame's exposure, can be asked for once the edges up to it are decoded.
+//
 // Real-time: fixed state, no allocation, no exceptions.
 #include <array>
 #include <cstdint>
+
+#include "firmware_bridge/encoder_history.hpp"
 
 namespace cosmos {
 
@@ -48,8 +53,10 @@ class QuadratureDecoder {
  public:
   explicit QuadratureDecoder(const QuadratureDecoderParameters& parameters = {});
 
-  // The lines' levels as read when the lines were requested, and the count to start from.
-  void reset(bool level_a, bool level_b, std::int64_t ticks = 0) noexcept;
+  // The lines' levels as read when the lines were requested at t_ns, and the count to start
+  // from.
+  void reset(bool level_a, bool level_b, std::int64_t ticks = 0,
+             std::int64_t t_ns = EncoderHistory::kSinceEver) noexcept;
 
   // One kernel edge event, in time order: `level` is the line's level after the edge.
   void on_edge(EncoderLine line, bool level, std::int64_t t_ns) noexcept;
@@ -60,6 +67,10 @@ class QuadratureDecoder {
 
   const EncoderCounts& counts() const noexcept { return counts_; }
   std::int64_t ticks() const noexcept { return counts_.ticks; }
+  // The count after every edge decoded so far that was stamped at or before t_ns.
+  EncoderHistory::Count ticks_at(std::int64_t t_ns) const noexcept {
+    return history_.ticks_at(t_ns);
+  }
   const QuadratureDecoderParameters& parameters() const noexcept { return parameters_; }
 
  private:
@@ -78,6 +89,7 @@ class QuadratureDecoder {
   QuadratureDecoderParameters parameters_;
   std::array<LineState, 2> lines_{};
   EncoderCounts counts_;
+  EncoderHistory history_;
 };
 
 }  // namespace cosmos

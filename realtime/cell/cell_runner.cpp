@@ -32,7 +32,7 @@ struct SharedStatus {
   // read the source) at every status snapshot.
   std::atomic<std::int64_t> profiles_lost{0}, camera_timeouts{0}, encoder_errors{0},
       encoder_reversals{0}, gpio_edges_lost{0}, photo_eye_bounces{0}, encoder_stalls{0},
-      laser_off_profiles{0};
+      laser_off_profiles{0}, encoder_counts_unsettled{0};
   // The source's last call timed out: the camera stalls while this lasts.
   std::atomic<bool> source_stalled{false};
   std::atomic<std::int64_t> time_p50_ns{0}, time_p99_ns{0}, time_max_ns{0};
@@ -99,6 +99,7 @@ CellStatus status_message(ScanLoop& loop, const SharedStatus& shared,
   status.photo_eye_bounces = shared.photo_eye_bounces;
   status.encoder_stalls = shared.encoder_stalls;
   status.laser_off_profiles = shared.laser_off_profiles;
+  status.encoder_counts_unsettled = shared.encoder_counts_unsettled;
   status.profile_time_p50_us = shared.time_p50_ns / 1e3;
   status.profile_time_p99_us = shared.time_p99_ns / 1e3;
   status.profile_time_max_us = shared.time_max_ns / 1e3;
@@ -207,6 +208,7 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
     store(shared.photo_eye_bounces, health.photo_eye_bounces);
     store(shared.encoder_stalls, health.encoder_stalls);
     store(shared.laser_off_profiles, health.laser_off_profiles);
+    store(shared.encoder_counts_unsettled, health.encoder_counts_unsettled);
   };
   for (;;) {
     pacer.wait_next();

@@ -31,6 +31,7 @@ struct CellStatus {
   std::int64_t photo_eye_bounces = 0;
   std::int64_t encoder_stalls = 0;
   std::int64_t laser_off_profiles = 0;
+  std::int64_t encoder_counts_unsettled = 0;
 
   // Per-profile processing time of the acquisition thread over the last period.
   double profile_time_p50_us = 0.0;
@@ -67,6 +68,8 @@ struct CellStatus {
     v("photo_eye_bounces", self.photo_eye_bounces, "photo-eye edges rejected as bounce");
     v("encoder_stalls", self.encoder_stalls, "profiles whose encoder count did not advance");
     v("laser_off_profiles", self.laser_off_profiles, "profiles without a single laser point");
+    v("encoder_counts_unsettled", self.encoder_counts_unsettled,
+      "profiles whose encoder count is not the count at their time stamp (edges read too late)");
     v("parts_seen", self.parts_seen, "parts the tracker completed");
     v("parts_recognized", self.parts_recognized, "poses published with status OK");
     v("parts_rejected", self.parts_rejected, "poses published as REJECTED or ERROR");

@@ -154,7 +154,9 @@ PartRecognition recognition_of(RecognitionResult result, const PartBuilder& buil
   }
   const StreamFaultKind fault =
       context.stream_faults
-          ? context.stream_faults->fault_in(builder.first_profile, builder.last_t_us)
+          ? context.stream_faults->fault_in({static_cast<std::uint64_t>(builder.first_profile),
+                                             static_cast<std::uint64_t>(builder.last_data_profile),
+                                             static_cast<std::uint64_t>(builder.last_profile)})
           : StreamFaultKind::kNone;
   if (fault != StreamFaultKind::kNone) {
     pose.status = PoseStatus::kError;

@@ -86,6 +86,7 @@ void to_message(const CellStatus& status, cosmos_lcm::cell_status_t& message) {
   message.photo_eye_bounces = status.photo_eye_bounces;
   message.encoder_stalls = status.encoder_stalls;
   message.laser_off_profiles = status.laser_off_profiles;
+  message.encoder_counts_unsettled = status.encoder_counts_unsettled;
   message.parts_dropped = status.parts_dropped;
   message.parts_truncated = status.parts_truncated;
   message.runs_dropped = status.runs_dropped;
@@ -116,6 +117,7 @@ void from_message(const cosmos_lcm::cell_status_t& message, CellStatus& status) 
   status.photo_eye_bounces = message.photo_eye_bounces;
   status.encoder_stalls = message.encoder_stalls;
   status.laser_off_profiles = message.laser_off_profiles;
+  status.encoder_counts_unsettled = message.encoder_counts_unsettled;
   status.parts_dropped = message.parts_dropped;
   status.parts_truncated = message.parts_truncated;
   status.runs_dropped = message.runs_dropped;

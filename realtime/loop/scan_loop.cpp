@@ -167,6 +167,7 @@ void ScanLoop::complete(const TrackedPart& part) {
   builder.soft_link_of = part.soft_link_of;
   builder.has_soft_successor = part.has_soft_successor;
   builder.tracked_rows = part.last_row - part.first_row + 1;
+  builder.last_data_profile = stamp_of_row(part.last_row).profile;
   builder.completed_ns = monotonic_now_ns();
   counters_.parts_seen.fetch_add(1, std::memory_order_relaxed);
   counters_.parts_truncated.fetch_add(builder.truncated ? 1 : 0, std::memory_order_relaxed);
@@ -202,6 +203,8 @@ void ScanLoop::start_parts(std::int64_t profile_index, const Profile& profile) {
     builder.part_id = part.id;
     builder.merged_count = 0;
     builder.first_profile = profile_index;
+    builder.last_data_profile = profile_index;
+    builder.last_profile = profile_index;
     builder.first_encoder_ticks = profile.encoder_ticks;
     builder.first_t_us = profile.t_us;
     builder.truncated = false;
@@ -245,6 +248,7 @@ bool ScanLoop::add_row_to(int index, const Profile& profile) {
   const int last_column = width() - 1;
   for (int c = row.column_begin; c < row.column_end; ++c)
     row.tracker_label[row.at(c)] = labels[static_cast<std::size_t>(last_column - c)];
+  builder.last_profile = static_cast<std::int64_t>(profile.seq);
   builder.last_encoder_ticks = profile.encoder_ticks;
   builder.last_t_us = profile.t_us;
   return true;

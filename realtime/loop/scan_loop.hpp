@@ -70,6 +70,10 @@ struct PartBuilder {
   std::array<std::int64_t, kMaxMergedIds> merged_ids{};  // ids merged into this part
   int merged_count = 0;
   std::int64_t first_profile = 0;  // the source's profile index of row 0
+  // The profile indices of its last row with data (known once the tracker completed it) and
+  // of the last row added, up to tracking.link_gap_rows of empty belt later.
+  std::int64_t last_data_profile = 0;
+  std::int64_t last_profile = 0;
   std::int64_t first_encoder_ticks = 0;
   std::int64_t last_encoder_ticks = 0;
   std::int64_t first_t_us = 0;

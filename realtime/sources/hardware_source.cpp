@@ -57,6 +57,7 @@ SourceStatus HardwareSource::start() {
   stop();
   error_.clear();
   dropped_ = 0;
+  encoder_counts_unsettled_ = 0;
   photo_eye_ = {};
   result_pulses_ = 0;
   // Results announced while stopped are not owed: their parts were seen by an earlier run.
@@ -75,6 +76,7 @@ SourceStatus HardwareSource::start() {
     const bool opening = reason.find(": open: ") != std::string_view::npos;
     return fail_start(reason, opening ? "camera.device" : "camera");
   }
+  corrupted_at_start_ = camera_->stats().corrupted_frames;
   if (gpio_->start() != GpioStatus::kOk) {
     const std::string_view reason = gpio_->last_error();
     const bool opening = reason.find("cannot open GPIO chip") != std::string_view::npos;
@@ -94,8 +96,15 @@ SourceStatus HardwareSource::start() {
 }
 
 SourceHealth HardwareSource::health() const noexcept {
-  SourceHealth health{.profiles_lost = dropped_};
-  if (camera_) health.camera_timeouts = camera_->stats().timeouts;
+  SourceHealth health{.profiles_lost = dropped_,
+                      .encoder_counts_unsettled = encoder_counts_unsettled_};
+  if (camera_) {
+    const CameraStats stats = camera_->stats();
+    health.camera_timeouts = stats.timeouts;
+    // A corrupted frame is requeued unseen: its profile is lost as a dropped frame's is.
+    if (stats.corrupted_frames > corrupted_at_start_)
+      health.profiles_lost += stats.corrupted_frames - corrupted_at_start_;
+  }
   if (gpio_) {
     const EncoderReading encoder = gpio_->encoder();
     const GpioInputHealth inputs = gpio_->input_health();
@@ -131,16 +140,18 @@ SourceStatus HardwareSource::next(Profile& out) noexcept {
     return retry ? SourceStatus::kTimeout : SourceStatus::kError;
   }
   dropped_ += frame.dropped_before;
-  // Edges since the last frame; none pending is the normal case, not a failure.
-  if (gpio_->poll_inputs(0) == GpioStatus::kError) {
+  EncoderAtTime encoder;
+  if (gpio_->encoder_at(frame.t_us * 1000, config_.gpio.frame_edges_wait_ns(), encoder) ==
+      GpioStatus::kError) {
     const std::string_view reason = gpio_->last_error();
     error_.set("%.*s", view_length(reason), reason.data());
     camera_->release_frame(frame);
     return SourceStatus::kError;
   }
+  encoder_counts_unsettled_ += encoder.settled ? 0 : 1;
   drain_photo_eye();
   out.seq = frame.frame_index;
-  out.encoder_ticks = gpio_->encoder().ticks;
+  out.encoder_ticks = encoder.ticks;
   out.t_us = frame.t_us;
   out.x0_mm = parameters_.first_sample_x_mm(width_);
   out.dx_mm = parameters_.sample_spacing_mm(width_);

@@ -15,9 +15,15 @@
 // next() waits up to frame_timeout_us for a frame, drains the encoder's and the photo eye's
 // edges, turns the frame into the profile with the simulator's camera-mode code
 // (StripeProfiler) and gives the frame back. seq is the camera's frame index, t_us the
-// frame's time stamp (CLOCK_MONOTONIC), encoder_ticks the count once the frame has arrived:
-// a free-running camera's count lags the exposure by the frame's readout and is, at
-// constant belt speed, a constant offset. Frames the camera lost add to health().profiles_lost.
+// frame's time stamp (CLOCK_MONOTONIC), encoder_ticks the count at that time stamp
+// (GpioLines::encoder_at, waiting up to gpio.frame_edges_wait_us for the edges before it):
+// not the count when the frame was dequeued, which jitters with a free-running camera's
+// bursts of delivery while the belt moved evenly. A driver that stamps the end of the frame
+// puts a constant offset on the count at constant belt speed, which cancels (the pose is
+// published with the count of its last row). A count that could not be settled is counted
+// in health().encoder_counts_unsettled. Every frame that never became a profile adds to
+// health().profiles_lost: the frames the camera lost (sequence gaps) and those it delivered
+// corrupted, so that the loss equals the gaps in the profiles' seq.
 // A finite camera's end (CameraStatus::kEndOfStream) is the source's kEndOfStream.
 //
 // Photo eye: its transitions are counted (photo_eye(): arrivals, departures, and the latest
@@ -102,6 +108,8 @@ class HardwareSource final : public ScannerSource {
   int width_ = 0;  // profile samples
   bool started_ = false;
   std::uint64_t dropped_ = 0;
+  std::uint64_t corrupted_at_start_ = 0;  // the camera's count when it started
+  std::uint64_t encoder_counts_unsettled_ = 0;
   PhotoEyeTally photo_eye_;
   std::atomic<std::uint64_t> results_announced_{0};
   std::uint64_t results_signalled_ = 0;  // announcements taken up (acquisition thread)

@@ -18,6 +18,8 @@ void add_since(SourceHealth& to, const SourceHealth& now, const SourceHealth& si
   to.photo_eye_bounces += added(now.photo_eye_bounces, since.photo_eye_bounces);
   to.encoder_stalls += added(now.encoder_stalls, since.encoder_stalls);
   to.laser_off_profiles += added(now.laser_off_profiles, since.laser_off_profiles);
+  to.encoder_counts_unsettled +=
+      added(now.encoder_counts_unsettled, since.encoder_counts_unsettled);
 }
 
 }  // namespace

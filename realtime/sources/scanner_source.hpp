@@ -24,6 +24,9 @@ struct SourceHealth {
   std::uint64_t encoder_reversals = 0;  // direction changes of the count
   std::uint64_t gpio_edges_lost = 0;    // input edges never decoded (FIFO or ring overflow)
   std::uint64_t photo_eye_bounces = 0;  // photo-eye edges rejected as bounce or glitch
+  // Profiles whose encoder count is not the count at their time stamp: the edges up to it
+  // were not read within gpio.frame_edges_wait_us, or it lay before the kept count history.
+  std::uint64_t encoder_counts_unsettled = 0;
   // Found in the data by the stream checker (stream_checked_source.hpp): no device reports them.
   std::uint64_t encoder_stalls = 0;      // profiles whose encoder count did not advance
   std::uint64_t laser_off_profiles = 0;  // profiles without a single laser point

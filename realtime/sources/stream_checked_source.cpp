@@ -69,7 +69,7 @@ void StreamCheckedSource::check(const Profile& profile, const SourceHealth& repo
   tally_.encoder_reversals += reported_reversals;
 
   const std::uint64_t seq = profile.seq;
-  const std::int64_t t_before_us = have_previous_ ? previous_t_us_ : profile.t_us;
+  const std::uint64_t previous_seq = have_previous_ ? previous_seq_ : seq;
   std::uint64_t gap = 0;
   bool broken_sequence = false;
   bool encoder_jump = reported_errors > 0 || reported_reversals > 0;
@@ -83,14 +83,13 @@ void StreamCheckedSource::check(const Profile& profile, const SourceHealth& repo
     if (step == 0 && !encoder_jump) {
       if (++zero_steps_ == 1) {
         first_zero_seq_ = seq;
-        first_zero_t_before_us_ = t_before_us;
-        first_zero_t_us_ = profile.t_us;
+        first_zero_previous_seq_ = previous_seq;
       } else if (zero_steps_ >= stuck_profiles_) {
         encoder_stuck = true;
         if (zero_steps_ == stuck_profiles_) {  // the zero steps before were the fault, not jitter
           tally_.encoder_stalls += static_cast<std::uint64_t>(stuck_profiles_ - 1);
-          faults_->record(StreamFaultKind::kEncoderStuck, first_zero_seq_, first_zero_t_before_us_,
-                          first_zero_t_us_);
+          faults_->record(StreamFaultKind::kEncoderStuck, first_zero_previous_seq_,
+                          first_zero_seq_);
         }
         ++tally_.encoder_stalls;
       }
@@ -112,18 +111,16 @@ void StreamCheckedSource::check(const Profile& profile, const SourceHealth& repo
   }
   tally_.profiles_lost += std::max(gap, reported_lost);
   if (gap > 0 || reported_lost > 0 || broken_sequence)
-    faults_->record(StreamFaultKind::kSequenceGap, seq, t_before_us, profile.t_us);
-  if (encoder_jump) faults_->record(StreamFaultKind::kEncoderJump, seq, t_before_us, profile.t_us);
-  if (encoder_stuck)
-    faults_->record(StreamFaultKind::kEncoderStuck, seq, t_before_us, profile.t_us);
+    faults_->record(StreamFaultKind::kSequenceGap, previous_seq, seq);
+  if (encoder_jump) faults_->record(StreamFaultKind::kEncoderJump, previous_seq, seq);
+  if (encoder_stuck) faults_->record(StreamFaultKind::kEncoderStuck, previous_seq, seq);
   if (!has_laser_point(profile)) {
     ++tally_.laser_off_profiles;
-    faults_->record(StreamFaultKind::kLaserOff, seq, t_before_us, profile.t_us);
+    faults_->record(StreamFaultKind::kLaserOff, previous_seq, seq);
   }
   have_previous_ = true;
   previous_seq_ = seq;
   previous_ticks_ = profile.encoder_ticks;
-  previous_t_us_ = profile.t_us;
 }
 
 }  // namespace cosmos

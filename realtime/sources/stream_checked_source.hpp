@@ -7,15 +7,16 @@
 //              same call, which for a camera are the same frames); a seq that does not
 //              increase is a broken stream (recorded, not counted as a loss)
 //   encoder    with the belt moving at the config's speed the count advances
-//              encoder_ticks_per_profile per profile (per seq step). A free-running camera's
-//              count is read once its frame has arrived, so the step jitters with the frame's
-//              delivery: a step further off than encoder_tolerance_profiles profiles' ticks is
-//              an encoder error, unless the decoder counted the missed edges itself (then its
-//              count is taken, as for frames); a change of the step's sign at belt speed is a
-//              reversal. A count that stands still for stuck_profiles profiles in a row (one
-//              zero step is delivery jitter) is a stuck encoder, every profile of it in
-//              encoder_stalls: a fault no decoder can see, its lines are simply quiet. A camera
-//              whose frames arrive in bursts needs both wider (the `stream_check:` keys)
+//              encoder_ticks_per_profile per profile (per seq step). The hardware source takes
+//              each frame's count at the frame's time stamp, so the step stays even however the
+//              frames are delivered, give or take a tick of edge timing: a step further off
+//              than encoder_tolerance_profiles profiles' ticks is an encoder error, unless the
+//              decoder counted the missed edges itself (then its count is taken, as for
+//              frames); a change of the step's sign at belt speed is a reversal. A count that
+//              stands still for stuck_profiles profiles in a row (one zero step is jitter) is a
+//              stuck encoder, every profile of it in encoder_stalls: a fault no decoder can
+//              see, its lines are simply quiet. A source whose counts jitter more needs both
+//              wider (the `stream_check:` keys)
 //   laser      a profile without a single point, not even the belt, was taken with the laser
 //              off or blocked (laser_off_profiles)
 // Every such profile is recorded in faults() for the recognizer (stream_fault_log.hpp).
@@ -76,12 +77,10 @@ class StreamCheckedSource final : public ScannerSource {
   bool have_previous_ = false;
   std::uint64_t previous_seq_ = 0;
   std::int64_t previous_ticks_ = 0;
-  std::int64_t previous_t_us_ = 0;
   int previous_direction_ = 0;
   int zero_steps_ = 0;  // consecutive profiles without an encoder step
   std::uint64_t first_zero_seq_ = 0;
-  std::int64_t first_zero_t_before_us_ = 0;
-  std::int64_t first_zero_t_us_ = 0;
+  std::uint64_t first_zero_previous_seq_ = 0;
 };
 
 }  // namespace cosmos

@@ -5,6 +5,14 @@
 // has rows missing or a wrong encoder count at its last row (its pose's position), so it is
 // published as ERROR with the reason instead of as a pose nobody can trust.
 //
+// Each fault is placed where it happened, by sequence number: lost frames at the frames
+// between the profile before the gap and the one after it, the others at their profile. A
+// part has three extents (PartProfileSpan): its first row, its last row with data, and the
+// last row the loop added to it, which lies up to tracking.link_gap_rows of empty belt later
+// (the tracker completes a part only then) and whose count the pose is published with.
+// Frames lost in those empty rows took nothing of the part and leave its placement alone, so
+// they are not the part's fault; an encoder fault there changes the published count, so it is.
+//
 // One writer (the acquisition thread) and any readers (the recognizer): a ring of the last
 // kCapacity faults in atomics, the count published with release after each entry. A part
 // completes after its last row was checked and reaches the recognizer through an acquiring
@@ -29,31 +37,38 @@ enum class StreamFaultKind : std::uint8_t {
 // "frames lost", "encoder jump", ... for a pose's reason.
 const char* to_string(StreamFaultKind kind);
 
+// A part's rows by the sequence numbers of their profiles.
+struct PartProfileSpan {
+  std::uint64_t first_seq = 0;      // its first row
+  std::uint64_t last_data_seq = 0;  // its last row with data of it
+  std::uint64_t last_seq = 0;       // the last row added to it: its pose's encoder count
+};
+
 class StreamFaultLog {
  public:
   static constexpr std::size_t kCapacity = 4096;
 
   // Writer side, with no reader running (the source's start()).
   void clear() noexcept;
-  // Writer: profile `seq`, exposed at t_us, whose predecessor was exposed at t_before_us.
-  void record(StreamFaultKind kind, std::uint64_t seq, std::int64_t t_before_us,
-              std::int64_t t_us) noexcept;
+  // Writer: a fault at profile `seq`, whose predecessor in the stream was profile
+  // previous_seq (for kSequenceGap: the frames between the two were lost).
+  void record(StreamFaultKind kind, std::uint64_t previous_seq, std::uint64_t seq) noexcept;
 
-  // Any thread: the first fault touching the rows of a part whose first row is profile
-  // first_seq and whose last row was exposed at last_t_us, kNone if there is none. A fault
-  // touches a part when its profile is one of the part's rows after the first (rows before
-  // it are fine: the encoder count that positions the part is its last row's); laser off
-  // also when it is the profile right before or right after the part (the dark profile cut
-  // the part short).
-  StreamFaultKind fault_in(std::uint64_t first_seq, std::int64_t last_t_us) const noexcept;
+  // Any thread: a fault touching the part's rows (the latest), kNone if there is none.
+  //   frames lost   the lost frames lie among the part's rows with data or right next to
+  //                 them (a lost frame beside its first or last row may have held more of it)
+  //   encoder       its profile is a row after the first, up to last_seq (rows before it are
+  //                 fine: the count that positions the part is last_seq's)
+  //   laser off     its profile is a row with data or right next to them (the dark profile
+  //                 cut the part short)
+  StreamFaultKind fault_in(const PartProfileSpan& rows) const noexcept;
   std::uint64_t recorded() const noexcept { return count_.load(std::memory_order_acquire); }
 
  private:
   struct Entry {
     std::atomic<std::uint8_t> kind{0};
+    std::atomic<std::uint64_t> previous_seq{0};
     std::atomic<std::uint64_t> seq{0};
-    std::atomic<std::int64_t> t_before_us{0};
-    std::atomic<std::int64_t> t_us{0};
   };
 
   std::array<Entry, kCapacity> entries_{};

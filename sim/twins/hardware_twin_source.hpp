@@ -60,6 +60,7 @@ class HardwareTwinSource final : public ScannerSource {
   HardwareSource& hardware() { return hardware_; }
   const HardwareSource& hardware() const { return hardware_; }
   const SimulatedCamera& camera() const { return camera_; }
+  SimulatedCamera& camera() { return camera_; }
   const SimulatedGpioLines& gpio() const { return gpio_; }
 
  private:

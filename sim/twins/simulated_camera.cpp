@@ -133,7 +133,7 @@ CameraStatus SimulatedCamera::inject_losses(std::int64_t timeout_us) noexcept {
     ++stalled;
   }
   frames_lost_ += static_cast<std::uint64_t>(stalled);
-  clock_.advance_to_frame(next_index_ - 1);
+  expose_up_to(next_index_ - 1);
   const bool timed_out =
       stalled == frames_per_wait &&
       (next_index_ > last || faults_.active(InjectedFault::kCameraStall, next_index_));
@@ -177,7 +177,9 @@ CameraStatus SimulatedCamera::next_frame(std::int64_t timeout_us, FrameView& fra
   cv::Mat& buffer = buffers_[index];
   renderer_->render(line_, mix_seed(scanner.seed ^ kFrameStream, static_cast<std::uint64_t>(ticks)),
                     buffer);
-  clock_.advance_to_frame(next_index_);
+  // A burst begins when the clock has not reached this frame: it exposes the burst's frames.
+  if (clock_.frame() < next_index_ || (next_index_ == 0 && clock_.frame() == 0))
+    expose_up_to(std::min(next_index_ + burst_frames_ - 1, conveyor_.last_profile()));
   lent_[index] = 1;
 
   frame.format = config_.pixel_format;
@@ -193,12 +195,16 @@ CameraStatus SimulatedCamera::next_frame(std::int64_t timeout_us, FrameView& fra
   stats_.dropped_frames += frames_lost_;
   frames_lost_ = 0;
   stats_.consecutive_timeouts = 0;
-  frame.t_us = clock_.now_ns() / 1000;
+  frame.t_us = clock_.frame_time_ns(next_index_) / 1000;
   frame.t_is_start_of_exposure = true;
   frame.buffer_index = static_cast<int>(index);
   ++next_index_;
   ++stats_.frames;
   return CameraStatus::kOk;
+}
+
+void SimulatedCamera::expose_up_to(std::int64_t frame) noexcept {
+  if (frame > clock_.frame()) clock_.advance_to_frame(frame);
 }
 
 void SimulatedCamera::project_through_true_camera() noexcept {

@@ -15,10 +15,13 @@
 //
 // Sequence and time: frame indices 0, 1, 2, … (nothing is dropped), t_us the frame's
 // exposure time on the shared SimulatedBeltClock (t_is_start_of_exposure), which the camera
-// moves to each frame it hands out. A frame is always ready at once, so next_frame()'s
-// timeout never expires; after the conveyor's last profile it says kEndOfStream. A
-// restarted camera goes on down the belt where it stopped (frame indices continue, as the
-// interface asks); rewind() puts the belt back at frame 0.
+// moves to each frame it hands out. Delivered in bursts (deliver_in_bursts(n)), as a
+// free-running camera's driver hands over its queue when the reader was held up, the clock
+// moves on to the last of n frames before the first of them is handed out, so the belt has
+// run past a frame's exposure when the frame arrives; each frame keeps its own t_us. A frame is
+// always ready at once, so next_frame()'s timeout never expires; after the conveyor's last profile
+// it says kEndOfStream. A restarted camera goes on down the belt where it stopped (frame indices
+// continue, as the interface asks); rewind() puts the belt back at frame 0.
 //
 // Lifecycle as V4l2Camera: start (closed → streaming; builds the scanner, the renderer and
 // buffer_count frame buffers) → next_frame / release_frame → stop (any state → closed).
@@ -85,6 +88,8 @@ class SimulatedCamera final : public Camera {
   // The laser lights the frames only while `gpio`'s laser_enable is active (it must outlive
   // the camera); without this call it always does.
   void follow_laser_enable(const SimulatedGpioLines& gpio) noexcept { laser_line_ = &gpio; }
+  // Frames exposed n at a time before the first of them is handed out (1: one by one).
+  void deliver_in_bursts(int frames) noexcept { burst_frames_ = frames < 1 ? 1 : frames; }
 
   bool streaming() const noexcept { return streaming_; }
   int lent_frames() const noexcept;
@@ -99,6 +104,8 @@ class SimulatedCamera final : public Camera {
   CameraStatus check_roi() noexcept;
   // Skips the frames an injected gap or stall loses; kTimeout after waiting out a stall.
   CameraStatus inject_losses(std::int64_t timeout_us) noexcept;
+  // Moves the belt clock on to `frame`'s exposure; never back (a burst ran ahead).
+  void expose_up_to(std::int64_t frame) noexcept;
   void project_through_true_camera() noexcept;
   [[gnu::format(printf, 2, 3)]] CameraStatus fail(const char* format, ...) noexcept;
 
@@ -116,6 +123,7 @@ class SimulatedCamera final : public Camera {
   std::vector<cv::Mat> buffers_;  // full sensor width, the ROI's rows
   std::vector<std::uint8_t> lent_;
   std::int64_t next_index_ = 0;
+  int burst_frames_ = 1;
   bool streaming_ = false;
   int exposure_us_ = 0;
   int gain_ = -1;

@@ -176,6 +176,15 @@ GpioStatus SimulatedGpioLines::poll_inputs(std::int64_t) noexcept {
   return edges ? GpioStatus::kOk : GpioStatus::kTimeout;
 }
 
+GpioStatus SimulatedGpioLines::encoder_at(std::int64_t t_ns, std::int64_t,
+                                          EncoderAtTime& at) noexcept {
+  if (poll_inputs(0) == GpioStatus::kWrongState) return GpioStatus::kError;
+  const EncoderHistory::Count count = decoder_.encoder_ticks_at(t_ns);
+  at.ticks = count.ticks;
+  at.settled = count.covered && decoder_.decoded_until_ns() >= t_ns;
+  return GpioStatus::kOk;
+}
+
 void SimulatedGpioLines::record(GpioOutput output, bool active) noexcept {
   if (writes_.size() == kWriteCapacity) {
     ++unrecorded_writes_;

@@ -79,6 +79,9 @@ class SimulatedGpioLines final : public GpioLines {
   GpioStatus stop() noexcept override;
   GpioStatus poll_inputs(std::int64_t timeout_ns) noexcept override;
   EncoderReading encoder() const noexcept override { return decoder_.encoder(); }
+  // The edges up to the clock's "now" are all there is: no wait.
+  GpioStatus encoder_at(std::int64_t t_ns, std::int64_t wait_ns,
+                        EncoderAtTime& at) noexcept override;
   bool part_present() const noexcept override { return decoder_.part_present(); }
   bool next_photo_eye_event(PhotoEyeEvent& event) noexcept override {
     return decoder_.next_photo_eye_event(event);

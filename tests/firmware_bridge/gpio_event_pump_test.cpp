@@ -1,8 +1,8 @@
 // The GPIO event pump against file descriptors that carry gpio-cdev's v1 event records (the
 // struct gpioevent_data libgpiod reads), written into pipes: edges of several lines come out
 // in time order, far more of them than the kernel's 16-event FIFO while nobody polls, time
-// moves on while the lines are quiet, and an event not stamped with CLOCK_MONOTONIC stops the
-// pump with one line naming the input.
+// moves on while the lines are quiet, a requested read answers at once, and an event not stamped
+// with CLOCK_MONOTONIC stops the pump with one line naming the input.
 #include "firmware_bridge/gpio_event_pump.hpp"
 
 #include <gtest/gtest.h>
@@ -81,6 +81,24 @@ TEST(GpioEventPump, TimeMovesOnWhileTheLinesAreQuiet) {
   std::this_thread::sleep_for(std::chrono::milliseconds(50));
   EXPECT_GT(pump.known_until_ns(), before + 20'000'000);
   EXPECT_LE(pump.known_until_ns(), monotonic_now_ns());
+}
+
+TEST(GpioEventPump, ARequestedCutWakesTheConsumerWithTheLinesReadPastTheRequest) {
+  EventPipe a;
+  GpioEventPump pump;
+  const GpioEventPump::Line lines[] = {{a.fds[0], GpioInput::kEncoderA, false, "encoder_a"}};
+  ASSERT_TRUE(pump.start(lines, 1));
+  // No edge ever comes, and idle cuts wake nobody: only the answer to the request ends the
+  // (minute-long) wait.
+  for (int k = 0; k < 3; ++k) {
+    const std::int64_t asked_ns = monotonic_now_ns();
+    pump.request_cut();
+    pump.wait(60'000'000'000);
+    EXPECT_GE(pump.known_until_ns(), asked_ns);
+  }
+  GpioEdge edge;
+  EXPECT_FALSE(pump.pop(edge));
+  EXPECT_FALSE(pump.failed());
 }
 
 TEST(GpioEventPump, EventsNotOnTheMonotonicClockStopItWithTheInputNamed) {

@@ -45,6 +45,9 @@ TEST(LibgpiodLines, RealTimeCallsBeforeStartAreRefused) {
   LibgpiodLines lines(quadrature_config("gpiochip0"));
   EXPECT_EQ(lines.poll_inputs(1000), GpioStatus::kWrongState);
   EXPECT_EQ(lines.last_error(), "gpiochip0: poll_inputs: lines not started");
+  EncoderAtTime at;
+  EXPECT_EQ(lines.encoder_at(0, 1'000'000'000, at), GpioStatus::kWrongState);
+  EXPECT_FALSE(at.settled);
   EXPECT_EQ(lines.set_output(GpioOutput::kLaserEnable, true), GpioStatus::kWrongState);
   EXPECT_EQ(lines.last_error(), "gpiochip0: laser_enable: lines not started");
   EXPECT_EQ(lines.stop(), GpioStatus::kOk);

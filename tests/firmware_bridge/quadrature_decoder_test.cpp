@@ -62,6 +62,19 @@ TEST(QuadratureDecoder, ForwardStepsCountFourPerCycle) {
   EXPECT_EQ(decoder.counts().last_step_t_ns, encoder.t_ns());
 }
 
+TEST(QuadratureDecoder, KeepsTheCountAtEveryEdgesTime) {
+  QuadratureDecoder decoder;
+  SyntheticEncoder encoder(decoder);  // edges 10 us apart from t = 10 us
+  encoder.move(100);
+  encoder.move(-20);
+  EXPECT_EQ(decoder.ticks_at(0).ticks, 0);
+  EXPECT_EQ(decoder.ticks_at(25'000).ticks, 2);
+  EXPECT_EQ(decoder.ticks_at(1'000'000).ticks, 100);
+  EXPECT_EQ(decoder.ticks_at(1'100'000).ticks, 90);  // ten counts back
+  EXPECT_EQ(decoder.ticks_at(encoder.t_ns()).ticks, 80);
+  EXPECT_TRUE(decoder.ticks_at(0).covered);
+}
+
 TEST(QuadratureDecoder, ReversalCountsBackAndIsCounted) {
   QuadratureDecoder decoder;
   SyntheticEncoder encoder(decoder);

@@ -141,10 +141,13 @@ std::vector<ProbeCheck> probe_bridge(const BridgeProbeSettings& settings) {
   const PlayedFault* skip = fault_of(log, "skip");
   checks.push_back(check_line(
       static_cast<std::int64_t>(stats.dropped_frames) == gaps && skip != nullptr &&
-          skip->observed == skip->amount && source.health().profiles_lost == stats.dropped_frames,
-      "bridge dropped: the camera counted %llu dropped frames, the source %llu, vivid left %lld "
-      "sequence gaps; the skip of %lld frames left a gap of %lld",
+          skip->observed == skip->amount &&
+          source.health().profiles_lost == stats.dropped_frames + stats.corrupted_frames,
+      "bridge dropped: the camera counted %llu dropped frames and %llu corrupted ones, the source "
+      "%llu lost profiles, vivid left %lld sequence gaps; the skip of %lld frames left a gap of "
+      "%lld",
       static_cast<unsigned long long>(stats.dropped_frames),
+      static_cast<unsigned long long>(stats.corrupted_frames),
       static_cast<unsigned long long>(source.health().profiles_lost), static_cast<long long>(gaps),
       static_cast<long long>(skip ? skip->amount : -1),
       static_cast<long long>(skip ? skip->observed : -1)));

@@ -12,11 +12,12 @@
 //            agree (docs/hil.md, "Where a pose is judged").
 //   frames   every frame the capture side was given reached the cell as a profile of that
 //            sequence number with its time stamp (within two frame periods after the fill
-//            began), except the one flagged corrupted; the cell's dropped count equals the
-//            sequence gaps; COSMOS_STATUS agrees.
+//            began), except the one flagged corrupted; the gaps in the profiles' sequence
+//            numbers are the frames vivid could not fill and the corrupted one, and
+//            COSMOS_STATUS profiles_lost and profiles_dropped equal them.
 //   faults   each injected fault shows where it should (the skip's and the stall's gaps, the
-//            corrupted frame missing but not dropped) and the cell ran on to the end; on
-//            COSMOS_STATUS as status_check.hpp says.
+//            corrupted frame missing, a lost profile but no dropped camera frame) and the cell ran
+//            on to the end; on COSMOS_STATUS as status_check.hpp says.
 // The last line is a summary of the figures (scripts/hil.sh repeats it).
 #include <vector>
 

@@ -65,7 +65,9 @@ void check_frames(CellCheckContext& c, std::vector<ProbeCheck>& checks) {
     delays_ms.push_back(delay_ns / 1e6);
   }
   const std::int64_t player_gaps = (last - first + 1) - captures_inside - merged_inside + first;
-  const std::int64_t dropped = profile_gaps - corrupted_inside;
+  // Every frame that never became a profile is a lost profile: the frames vivid could not
+  // fill and the corrupted one (delivered, flagged, requeued unseen), as the gaps in seq say.
+  const std::int64_t unfilled = profile_gaps - corrupted_inside;
   const std::int64_t status_dropped =
       c.run.statuses.empty() ? -1 : c.run.statuses.back().profiles_dropped;
   const std::int64_t status_acquired =
@@ -86,13 +88,13 @@ void check_frames(CellCheckContext& c, std::vector<ProbeCheck>& checks) {
       static_cast<long long>(unknown), static_cast<long long>(first_unknown),
       static_cast<long long>(merged_inside), static_cast<long long>(status_acquired)));
   checks.push_back(check_line(
-      dropped == status_dropped && dropped == player_gaps && status_lost == player_gaps,
-      "frames dropped: %lld sequence-number gaps in the profiles (%lld corrupted frame(s) not "
-      "counted), COSMOS_STATUS profiles_lost %lld and profiles_dropped %lld, frames vivid could "
-      "not fill %lld (the skip and the stall among them)",
-      static_cast<long long>(dropped), static_cast<long long>(corrupted_inside),
-      static_cast<long long>(status_lost), static_cast<long long>(status_dropped),
-      static_cast<long long>(player_gaps)));
+      unfilled == player_gaps && status_lost == profile_gaps && status_dropped == profile_gaps,
+      "frames dropped: %lld sequence-number gaps in the profiles, %lld of them corrupted frames, "
+      "the rest frames vivid could not fill (%lld by the player's count; the skip and the stall "
+      "among them); COSMOS_STATUS profiles_lost %lld and profiles_dropped %lld",
+      static_cast<long long>(profile_gaps), static_cast<long long>(corrupted_inside),
+      static_cast<long long>(player_gaps), static_cast<long long>(status_lost),
+      static_cast<long long>(status_dropped)));
   // Time stamps on the capture's clock: vivid numbers a frame by the time its capture tick
   // ran and stamps it then, so a stamp lies within half a frame period (and a jiffy) of where
   // its number puts it, however late the tick; a frame period is allowed, for a guest CPU the
@@ -137,11 +139,11 @@ void check_fault_traces(const CellCheckContext& c, std::vector<ProbeCheck>& chec
           static_cast<long long>(seen)));
     } else if (fault.kind == "corrupt") {
       const bool absent = c.profile_sequences.count(fault.observed) == 0;
-      checks.push_back(check_line(
-          absent && c.corrupted.count(fault.observed) == 1,
-          "fault corrupt: frame %lld came with V4L2_BUF_FLAG_ERROR: %s, and not counted as dropped",
-          static_cast<long long>(fault.observed),
-          absent ? "no profile made of it" : "made a profile"));
+      checks.push_back(
+          check_line(absent && c.corrupted.count(fault.observed) == 1,
+                     "fault corrupt: frame %lld came with V4L2_BUF_FLAG_ERROR: %s, a lost profile",
+                     static_cast<long long>(fault.observed),
+                     absent ? "no profile made of it" : "made a profile"));
     } else {
       const auto after = c.profile_sequences.upper_bound(fault.sequence);
       checks.push_back(

@@ -1,8 +1,10 @@
 // The live source without live hardware: a missing camera fails start() with one line naming
 // the device and its config key; a V4L2 camera played by the fake device (a synthetic stripe
 // over a 20 mm step) and fake GPIO lines give profiles with the step's heights, the frame
-// indices, time stamps and encoder counts, and the frames the camera lost; the photo eye's
-// transitions are counted and each announced result is one result_ready pulse.
+// indices, time stamps and encoder counts, and the frames the camera lost; the encoder count
+// is asked for at the frame's time stamp, a count that could not be settled is counted, and a
+// corrupted frame is a lost profile as a dropped one is; the photo eye's transitions are
+// counted and each announced result is one result_ready pulse.
 #include "realtime/sources/hardware_source.hpp"
 
 #include <gtest/gtest.h>
@@ -45,6 +47,14 @@ class FakeGpioLines final : public GpioLines {
     reading.ticks = ticks;
     return reading;
   }
+  GpioStatus encoder_at(std::int64_t t_ns, std::int64_t wait_ns,
+                        EncoderAtTime& at) noexcept override {
+    poll_inputs(0);
+    asked_t_ns = t_ns;
+    asked_wait_ns = wait_ns;
+    at = {ticks, settled};
+    return GpioStatus::kOk;
+  }
   bool part_present() const noexcept override { return false; }
   bool next_photo_eye_event(PhotoEyeEvent& event) noexcept override {
     if (photo_eye_events.empty()) return false;
@@ -65,6 +75,9 @@ class FakeGpioLines final : public GpioLines {
   bool started = false;
   bool laser_on = false;
   std::int64_t ticks = 1000;
+  bool settled = true;  // what encoder_at() says of its count
+  std::int64_t asked_t_ns = -1;
+  std::int64_t asked_wait_ns = -1;
   EncoderReading encoder_faults;  // invalid transitions and reversals to report
   GpioInputHealth health;
   std::deque<PhotoEyeEvent> photo_eye_events;
@@ -251,6 +264,32 @@ TEST_F(HardwareSourceTest, EncoderAndGpioFaultsShowInItsHealth) {
   EXPECT_EQ(health.photo_eye_bounces, 7u);
   EXPECT_EQ(health.camera_timeouts, 0u);
   EXPECT_EQ(health.profiles_lost, 0u);
+}
+
+TEST_F(HardwareSourceTest, CountsAreAskedAtTheFrameTimeAndCorruptedFramesAreLostProfiles) {
+  config_.gpio.frame_edges_wait_us = 3'000;
+  V4l2Camera camera(config_.camera, device_);
+  HardwareSource source(config_, parameters_, camera, gpio_);
+  ASSERT_EQ(source.start(), SourceStatus::kOk) << source.last_error();
+  device_.deliver(0, 7'000'100);
+  device_.deliver(1, 7'000'500, V4L2_BUF_FLAG_ERROR);
+  device_.deliver(2, 7'000'900);
+  gpio_.settled = false;
+  Profile slot;
+  source.reserve(slot);
+  ASSERT_EQ(source.next(slot), SourceStatus::kOk) << source.last_error();
+  EXPECT_EQ(gpio_.asked_t_ns, 7'000'100'000);
+  EXPECT_EQ(gpio_.asked_wait_ns, 3'000'000);
+  EXPECT_EQ(source.next(slot), SourceStatus::kTimeout);  // the corrupted frame, requeued
+  ASSERT_EQ(source.next(slot), SourceStatus::kOk) << source.last_error();
+  EXPECT_EQ(slot.seq, 2u);
+  EXPECT_EQ(gpio_.asked_t_ns, 7'000'900'000);
+  const SourceHealth health = source.health();
+  EXPECT_EQ(camera.stats().corrupted_frames, 1u);
+  EXPECT_EQ(camera.stats().dropped_frames, 0u);
+  // The loss the source reports equals the gap in the profiles' seq (0, 2).
+  EXPECT_EQ(health.profiles_lost, 1u);
+  EXPECT_EQ(health.encoder_counts_unsettled, 2u);
 }
 
 TEST_F(HardwareSourceTest, GpioAndSensorMismatchFailuresNameTheirKeys) {

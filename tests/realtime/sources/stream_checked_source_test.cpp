@@ -86,8 +86,13 @@ TEST(StreamCheckedSource, CountsASequenceGapOnceEvenWhenTheSourceReportedIt) {
   checked.run();
   EXPECT_EQ(checked.source.health().profiles_lost, 10u);
   EXPECT_EQ(checked.source.faults().recorded(), 2u);
-  EXPECT_EQ(checked.source.faults().fault_in(5, 17 * 400), StreamFaultKind::kSequenceGap);
-  EXPECT_EQ(checked.source.faults().fault_in(17, 29 * 400), StreamFaultKind::kNone);
+  EXPECT_EQ(checked.source.faults().fault_in({5, 17, 17}), StreamFaultKind::kSequenceGap);
+  // A part whose rows lie between the gaps, not beside them, lost nothing.
+  EXPECT_EQ(checked.source.faults().fault_in({18, 25, 25}), StreamFaultKind::kNone);
+  // Frames 27 to 29 lost in the empty rows the tracker kept after a part's data (to 25): not
+  // the part's; right after its data (to 26) they may have held more of it.
+  EXPECT_EQ(checked.source.faults().fault_in({18, 25, 31}), StreamFaultKind::kNone);
+  EXPECT_EQ(checked.source.faults().fault_in({18, 26, 31}), StreamFaultKind::kSequenceGap);
 }
 
 TEST(StreamCheckedSource, AnEncoderSpikeIsTwoEncoderErrorsAndNoReversal) {
@@ -97,7 +102,7 @@ TEST(StreamCheckedSource, AnEncoderSpikeIsTwoEncoderErrorsAndNoReversal) {
   checked.run();
   EXPECT_EQ(checked.source.health().encoder_errors, 2u);
   EXPECT_EQ(checked.source.health().encoder_reversals, 0u);
-  EXPECT_EQ(checked.source.faults().fault_in(0, 29 * 400), StreamFaultKind::kEncoderJump);
+  EXPECT_EQ(checked.source.faults().fault_in({0, 29, 29}), StreamFaultKind::kEncoderJump);
 }
 
 TEST(StreamCheckedSource, ABeltRunningBackIsTwoReversals) {
@@ -119,8 +124,8 @@ TEST(StreamCheckedSource, ACountThatStopsWhileFramesArriveIsAStuckEncoder) {
   checked.run();
   EXPECT_EQ(checked.source.health().encoder_stalls, 8u);
   EXPECT_EQ(checked.source.health().encoder_errors, 0u);
-  EXPECT_EQ(checked.source.faults().fault_in(12, 16 * 400), StreamFaultKind::kEncoderStuck);
-  EXPECT_EQ(checked.source.faults().fault_in(18, 29 * 400), StreamFaultKind::kNone);
+  EXPECT_EQ(checked.source.faults().fault_in({12, 16, 16}), StreamFaultKind::kEncoderStuck);
+  EXPECT_EQ(checked.source.faults().fault_in({18, 29, 29}), StreamFaultKind::kNone);
 }
 
 TEST(StreamCheckedSource, AProfileWithoutASinglePointIsLaserOff) {
@@ -132,8 +137,8 @@ TEST(StreamCheckedSource, AProfileWithoutASinglePointIsLaserOff) {
   checked.run();
   EXPECT_EQ(checked.source.health().laser_off_profiles, 4u);
   // A part that ended right before the dark profiles was cut short by them.
-  EXPECT_EQ(checked.source.faults().fault_in(10, 19 * 400), StreamFaultKind::kLaserOff);
-  EXPECT_EQ(checked.source.faults().fault_in(10, 18 * 400), StreamFaultKind::kNone);
+  EXPECT_EQ(checked.source.faults().fault_in({10, 19, 19}), StreamFaultKind::kLaserOff);
+  EXPECT_EQ(checked.source.faults().fault_in({10, 18, 18}), StreamFaultKind::kNone);
 }
 
 TEST(StreamCheckedSource, TakesTheDecodersEncoderCountsWithoutAddingItsOwn) {

@@ -2,7 +2,9 @@
 // its profiles are the simulated source's camera-mode profiles bit for bit (same frames,
 // same stripe extraction and triangulation, encoder counts equal to the simulator's ticks),
 // and the cell over it identifies twenty catalog parts with their true poses, as the cell
-// over the simulated source does (tests/realtime/cell/cell_loop_test.cpp).
+// over the simulated source does (tests/realtime/cell/cell_loop_test.cpp). A camera that
+// delivers its frames in bursts gives every profile the same encoder count as an evenly
+// paced one: the count at the frame's exposure, not at its delivery.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -17,6 +19,7 @@
 #include "realtime/cell/cell_runner.hpp"
 #include "realtime/config/hardware_config.hpp"
 #include "realtime/lcm/memory_publisher.hpp"
+#include "realtime/sources/stream_checked_source.hpp"
 #include "sim/evaluation/add_s_distance.hpp"
 #include "sim/source/simulated_source.hpp"
 #include "sim/twins/hardware_twin_source.hpp"
@@ -76,6 +79,43 @@ TEST(HardwareTwinSource, GivesTheSimulatedSourcesCameraModeProfiles) {
     EXPECT_FALSE(twins.gpio().output_active(GpioOutput::kLaserEnable));
     EXPECT_FALSE(twins.camera().streaming());
   }
+}
+
+TEST(HardwareTwinSource, FramesDeliveredInBurstsKeepTheCountsOfTheirExposure) {
+  const ScannerParameters parameters;
+  HardwareTwinSource paced(twin_hardware_config(), testing::twin_test_conveyor(parameters));
+  ASSERT_EQ(paced.start(), SourceStatus::kOk) << paced.last_error();
+  const testing::SourceStream even = testing::read_stream(paced);
+  ASSERT_EQ(even.end, SourceStatus::kEndOfStream) << paced.last_error();
+
+  // Eight frames exposed before the first of them arrives: the belt runs 28 ticks ahead of
+  // the first frame of a burst when it is dequeued.
+  auto bursts = std::make_unique<HardwareTwinSource>(twin_hardware_config(),
+                                                     testing::twin_test_conveyor(parameters));
+  bursts->camera().deliver_in_bursts(8);
+  HardwareTwinSource& twins = *bursts;
+  StreamCheckedSource checked(std::move(bursts), parameters.encoder_ticks_per_profile);
+  ASSERT_EQ(checked.start(), SourceStatus::kOk) << checked.last_error();
+  const testing::SourceStream stream = testing::read_stream(checked);
+  ASSERT_EQ(stream.end, SourceStatus::kEndOfStream) << checked.last_error();
+  EXPECT_EQ(stream.allocations_in_next, 0u);
+  ASSERT_EQ(stream.profiles.size(), even.profiles.size());
+  int same_count = 0;
+  for (std::size_t k = 0; k < stream.profiles.size(); ++k) {
+    ASSERT_EQ(stream.profiles[k].seq, even.profiles[k].seq);
+    EXPECT_EQ(stream.profiles[k].t_us, even.profiles[k].t_us);
+    same_count += stream.profiles[k].encoder_ticks == even.profiles[k].encoder_ticks ? 1 : 0;
+  }
+  EXPECT_EQ(same_count, static_cast<int>(stream.profiles.size()));
+  EXPECT_EQ(
+      stream.profiles.back().encoder_ticks,
+      static_cast<std::int64_t>(stream.profiles.back().seq) * parameters.encoder_ticks_per_profile);
+  EXPECT_EQ(twins.camera().stats().frames, stream.profiles.size());
+  const SourceHealth health = checked.health();
+  EXPECT_EQ(health.encoder_counts_unsettled, 0u);
+  EXPECT_EQ(health.encoder_errors, 0u);
+  EXPECT_EQ(health.encoder_reversals, 0u);
+  EXPECT_EQ(checked.faults().recorded(), 0u);
 }
 
 TEST(HardwareTwinSource, RefusesAConfigThatIsNotTheTwins) {

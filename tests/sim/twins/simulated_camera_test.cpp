@@ -134,6 +134,23 @@ TEST(SimulatedCamera, FramesAreCameraModesFramesInSequenceOnTheBeltClock) {
   EXPECT_EQ(camera.stats().errors, 0u);
 }
 
+TEST(SimulatedCamera, FramesDeliveredInBurstsRunTheBeltAheadAndKeepTheirExposureTimes) {
+  const ScannerParameters parameters;
+  const auto conveyor = twin_test_conveyor(parameters);
+  SimulatedBeltClock clock(parameters);
+  SimulatedCamera camera(*conveyor, clock, simulator_camera(parameters));
+  camera.deliver_in_bursts(4);
+  ASSERT_EQ(camera.start(), CameraStatus::kOk) << camera.last_error();
+  FrameView frame;
+  for (std::int64_t k = 0; k < 12; ++k) {
+    ASSERT_EQ(camera.next_frame(1000, frame), CameraStatus::kOk) << camera.last_error();
+    ASSERT_EQ(frame.frame_index, static_cast<std::uint64_t>(k));
+    EXPECT_EQ(frame.t_us, parameters.time_us_of_profile(k));
+    EXPECT_EQ(clock.frame(), k / 4 * 4 + 3) << "frame " << k;  // the burst's last exposure
+    ASSERT_EQ(camera.release_frame(frame), CameraStatus::kOk);
+  }
+}
+
 TEST(SimulatedCamera, StripeLiesWhereTheSimulatorPredictsIt) {
   const ScannerParameters parameters;
   const auto conveyor = twin_test_conveyor(parameters);
