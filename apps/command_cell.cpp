@@ -139,7 +139,9 @@ void run(const CellOptions& options) {
   const double model_base_loaded_mb = peak_resident_mb();
   const ModelBase& base = loaded.base;
   const CosmosParameters& cosmos = loaded.cosmos;
-  const Recognizer recognizer(base, cosmos, RecognitionParameters{});
+  RecognitionParameters recognition;
+  recognition.surfaces = config.realtime.recognizer_surfaces;
+  const Recognizer recognizer(base, cosmos, recognition);
   LcmPublisher lcm_publisher(config.lcm.url, config.lcm.channels());
   Publisher& publisher = web ? web->publisher(lcm_publisher) : lcm_publisher;
 

@@ -124,7 +124,9 @@ void BM_PartSupport(benchmark::State& state) {
   if (!fixture) return;
   const RecognitionParameters& parameters = fixture->parameters();
   over_scans(state, *fixture, [&](const TestScan& scan) {
-    ModelSurfaces surfaces(fixture->base());  // as a recognition's first measurement: cold
+    ModelSurfaces surfaces(
+        fixture->base(),
+        fixture->parameters().surfaces);  // as a recognition's first measurement: cold
     benchmark::DoNotOptimize(measure_part_support(
         scan.scene_points, fixture->base(), scan.chosen_view, scan.chosen_registered,
         parameters.registration, parameters.support, surfaces));
@@ -139,7 +141,9 @@ void BM_FallbackPoseSearchOnePart(benchmark::State& state) {
   if (!fixture) return;
   const RecognitionParameters& parameters = fixture->parameters();
   over_scans(state, *fixture, [&](const TestScan& scan) {
-    ModelSurfaces surfaces(fixture->base());  // cold, as the recognition's first search
+    ModelSurfaces surfaces(
+        fixture->base(),
+        fixture->parameters().surfaces);  // cold, as the recognition's first search
     benchmark::DoNotOptimize(
         search_part_pose(scan.scene_points, fixture->base(), scan.searched_part,
                          fixture->recognizer().part_search_model(scan.searched_part),

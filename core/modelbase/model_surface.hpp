@@ -2,10 +2,11 @@
 // A model view's registration surface (ch. 6) for the recognizer: the view's own points when
 // it has them (a base built in memory), else unpacked from the compact form that a base read
 // from a file keeps (packed_registration_points.hpp), for as long as this object lives.
-#include <memory>
+#include <cstdint>
 #include <vector>
 
 #include "core/modelbase/model_base.hpp"
+#include "core/parameter_visitor.hpp"
 #include "core/registration/packed_registration_points.hpp"
 
 namespace cosmos {
@@ -25,27 +26,50 @@ class ModelSurface {
   RegistrationPoints unpacked_;
 };
 
-// The surfaces one recognition needs, each unpacked once: verification, the pose search and
-// the support measurement (which asks up to 20 views around each candidate, twice) come back
-// to the same views again and again, and unpacking was a tenth of the recognizer's time.
+// The surfaces one recognition needs, each unpacked once while it stays among the
+// `capacity` most recently asked: verification, the pose search and the support measurement
+// (which asks up to 20 views around each candidate, twice) come back to the same views again
+// and again, and unpacking was a tenth of the recognizer's time. The bound keeps a
+// recognition's memory fixed: the pose search alone asks for hundreds of views of the
+// catalog's parts, and keeping every one unpacked until the recognition ended made the
+// process's peak memory follow the hardest scan. A view asked again after being dropped is
+// unpacked again, to the same points.
+struct ModelSurfaceCacheParameters {
+  // An unpacked view takes 104 bytes per control point besides its grid: 0.1-0.6 MB for the
+  // default catalog's views (1,000-5,000 points), so the default bounds a recognition's
+  // surfaces near 30 MB.
+  int unpacked_views = 48;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("unpacked_views", unpacked_views,
+      "model views a recognition keeps unpacked; up to ~0.6 MB each (104 bytes per point)",
+      Range{1, 100000});
+  }
+};
+
 class ModelSurfaces {
  public:
-  explicit ModelSurfaces(const ModelBase& base)
-      : base_(base), slot_of_view_(base.views.size(), -1) {}
-  const RegistrationPoints& points(int view) {
-    int& slot = slot_of_view_[static_cast<std::size_t>(view)];
-    if (slot < 0) {
-      slot = static_cast<int>(surfaces_.size());
-      surfaces_.push_back(
-          std::make_unique<ModelSurface>(base_.views[static_cast<std::size_t>(view)]));
-    }
-    return surfaces_[static_cast<std::size_t>(slot)]->points();
-  }
+  ModelSurfaces(const ModelBase& base, const ModelSurfaceCacheParameters& parameters);
+
+  // The view's points; the reference stays valid until the next call.
+  const RegistrationPoints& points(int view);
+
+  int capacity() const { return static_cast<int>(slots_.size()); }
+  // Views unpacked so far, a view unpacked again counted again.
+  std::int64_t unpackings() const { return unpackings_; }
 
  private:
+  struct Slot {
+    int view = -1;
+    std::int64_t last_use = -1;
+    RegistrationPoints points;
+  };
   const ModelBase& base_;
   std::vector<int> slot_of_view_;
-  std::vector<std::unique_ptr<ModelSurface>> surfaces_;
+  std::vector<Slot> slots_;
+  std::int64_t uses_ = 0;
+  std::int64_t unpackings_ = 0;
 };
 
 }  // namespace cosmos

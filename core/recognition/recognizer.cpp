@@ -142,7 +142,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
 
   ScenePoints points{std::move(scene_points.points), {}};
   points.coarse = spread_subset(points.all, parameters_.coarse_points);
-  ModelSurfaces surfaces(model_base_);
+  ModelSurfaces surfaces(model_base_, parameters_.surfaces);
   std::size_t next = 0;
   while (next < selected.size()) {
     result.candidates.push_back(verify(analysis, points, selected[next++], surfaces,

@@ -30,6 +30,7 @@
 #include "core/matching/pose_from_patches.hpp"
 #include "core/matching/spectral_view_selection.hpp"
 #include "core/modelbase/model_base.hpp"
+#include "core/modelbase/model_surface.hpp"
 #include "core/parameter_visitor.hpp"
 #include "core/range_image.hpp"
 #include "core/recognition/part_ambiguity.hpp"
@@ -106,6 +107,8 @@ struct RecognitionParameters {
   double min_seen_fraction = 0.3;
   // Rejection as ambiguous between two parts (§5.3.6, §5.4).
   PartAmbiguityParameters ambiguity;
+  // The model surfaces a recognition keeps unpacked at once (model_surface.hpp).
+  ModelSurfaceCacheParameters surfaces;
 
   template <class Visitor>
   void visit(Visitor& v) {
@@ -146,6 +149,7 @@ struct RecognitionParameters {
     v("min_seen_fraction", min_seen_fraction,
       "less of the winner's matched view seen in the scene: rejected", Range{0, 1});
     v("ambiguity", ambiguity, "rejection as ambiguous between two parts (§5.3.6, §5.4)");
+    v("surfaces", surfaces, "the model surfaces a recognition keeps unpacked");
   }
 };
 

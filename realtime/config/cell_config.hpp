@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <string>
 
+#include "core/modelbase/model_surface.hpp"
 #include "core/parameter_visitor.hpp"
 #include "core/rigid_transform.hpp"
 #include "realtime/cell/cell_runner.hpp"
@@ -98,11 +99,15 @@ struct LcmSettings {
 struct RealtimeQueueSettings {
   CellThreadSettings threads;
   PartQueueSettings parts;
+  // The recognizer thread's bound on unpacked model surfaces
+  // (RecognitionParameters::surfaces).
+  ModelSurfaceCacheParameters recognizer_surfaces;
 
   template <class Visitor>
   void visit(Visitor& v) {
     v.fields(threads);
     v.fields(parts);
+    v.fields(recognizer_surfaces);
   }
 };
 

@@ -64,7 +64,7 @@ TEST_F(PartPoseSearch, FindsTheTruePoseOfRandomPoseScansAndOtherPartsFitWorse) {
   std::vector<PartSearchModel> models;
   for (int part = 0; part < parts; ++part)
     models.push_back(build_part_search_model(*base_, part, parameters.field));
-  ModelSurfaces surfaces(*base_);
+  ModelSurfaces surfaces(*base_, ModelSurfaceCacheParameters{});
   for (std::uint64_t seed = 101; seed < 111; ++seed) {
     const int part = static_cast<int>(seed % parts);
     const Scan scene = scan(part, seed);

@@ -85,7 +85,7 @@ RegistrationPoints scene_points(Offset offset_mm) {
 
 PartSupport support_of(const RegistrationPoints& scene, const ModelBase& base,
                        const PartSupportParameters& parameters = {}) {
-  ModelSurfaces surfaces(base);
+  ModelSurfaces surfaces(base, ModelSurfaceCacheParameters{});
   return measure_part_support(scene, base, 0, RigidTransform::identity(), RegistrationParameters{},
                               parameters, surfaces);
 }
@@ -132,7 +132,7 @@ TEST(PartSupport, NeighbouringViewsOfThePartExplainWhatTheMatchedViewMisses) {
 TEST(PartSupport, AWrongPoseOrAnEmptySceneIsSupportedByNothing) {
   const ModelBase base = two_view_base(30.0);
   const RegistrationPoints scene = scene_points([](int) { return 0.0; });
-  ModelSurfaces surfaces(base);
+  ModelSurfaces surfaces(base, ModelSurfaceCacheParameters{});
   const PartSupport lifted =
       measure_part_support(scene, base, 0, {Eigen::Matrix3d::Identity(), {0.0, 0.0, 3.0}},
                            RegistrationParameters{}, PartSupportParameters{}, surfaces);
