@@ -86,7 +86,7 @@ TEST_F(SimCli, BadMeshesNameTheFileAndTheReason) {
   write("empty.off", "OFF\n0 0 0\n");
   expect_one_line_failure(scan_mesh("empty.off"), "empty.off");
   write("nan.off", "OFF\n3 1 0\n0 0 0\n1 0 0\nnan 1 0\n3 0 1 2\n");
-  expect_one_line_failure(scan_mesh("nan.off"), "nan.off: vertex");
+  expect_one_line_failure(scan_mesh("nan.off"), "nan.off:5: vertex 2 (nan, 1, 0) has a NaN");
   write("part.xyz", kBoxOff);
   expect_one_line_failure(scan_mesh("part.xyz"), "part.xyz: unknown mesh extension");
   expect_one_line_failure(scan_mesh("box.off", "0"), "--size-mm: must be in (0, 5000], got 0");
