@@ -155,8 +155,9 @@ TEST_F(HardwareConfigTest, BadKeysTypesAndRangesNameFileLineAndKey) {
   EXPECT_EQ(error_of(gpio + "  camera_trigger: CAM_TRIG\n"),
             at(4) +
                 ": gpio.camera_trigger: unknown key (known: chip, consumer, debounce_us, "
-                "encoder_a, encoder_b, encoder_mode, laser_enable, photo_eye, "
-                "photo_eye_debounce_us, photo_eye_min_off_us, photo_eye_min_on_us, result_ready)");
+                "encoder_a, encoder_b, encoder_mode, frame_edges_wait_us, laser_enable, "
+                "photo_eye, photo_eye_debounce_us, photo_eye_min_off_us, photo_eye_min_on_us, "
+                "result_ready)");
   EXPECT_EQ(error_of(gpio + "lights: on\n"),
             at(4) + ": lights: unknown section (known: camera, gpio, stripe, calibration)");
   EXPECT_EQ(error_of("camera: [1, 2]\n" + gpio), at(1) + ": camera: expected a map, got a list");
