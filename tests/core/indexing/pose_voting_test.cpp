@@ -76,7 +76,9 @@ TEST_F(PoseVoting, IsDeterministicAndBestFirst) {
     EXPECT_EQ(first[i].part, again[i].part);
     EXPECT_EQ(first[i].votes, again[i].votes);
     EXPECT_EQ(first[i].T_part_scene.rotation, again[i].T_part_scene.rotation);
-    if (i > 0) EXPECT_GE(first[i - 1].votes, first[i].votes);
+    if (i > 0) {
+      EXPECT_GE(first[i - 1].votes, first[i].votes);
+    }
   }
   EXPECT_LE(first.size(), static_cast<std::size_t>(PoseVotingParameters{}.voted_poses));
 }
