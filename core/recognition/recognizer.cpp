@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 
+#include "core/indexing/pose_voting.hpp"
 #include "core/modelbase/model_surface.hpp"
 #include "core/recognition/part_ambiguity.hpp"
 #include "core/recognition/part_pose_search.hpp"
@@ -89,6 +92,8 @@ Recognizer::Recognizer(const ModelBase& model_base, const CosmosParameters& cosm
       selector_(model_base, parameters.selection) {
   for (int part = 0; part < static_cast<int>(model_base.parts.size()); ++part)
     part_search_models_.push_back(build_part_search_model(model_base, part, parameters.field));
+  if (parameters_.vote_index.enabled)
+    patch_pair_table_ = PatchPairTable(model_base, parameters_.vote_index.key);
 }
 
 RecognitionResult Recognizer::recognize(const RangeImage& scene) const {
@@ -175,8 +180,15 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
         .seen_fraction();
   };
   const RecognitionCandidate* best = best_candidate(result.candidates);
-  if (!best || best->inlier_fraction < parameters_.sufficient_support ||
-      seen_fraction(*best) < parameters_.min_seen_fraction) {
+  const auto explains_scene = [&] {
+    best = best_candidate(result.candidates);
+    return best && best->inlier_fraction >= parameters_.sufficient_support &&
+           seen_fraction(*best) >= parameters_.min_seen_fraction;
+  };
+  if (!explains_scene() && parameters_.vote_index.enabled)
+    verify_voted_poses(analysis, points, surfaces, result);
+  if (!explains_scene()) {
+    result.catalog_searched = true;
     search_candidate_parts(analysis, points, surfaces, result);
     best = best_candidate(result.candidates);
   }
@@ -213,7 +225,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
                      [rival_part](const RecognitionCandidate& c) {
                        return c.part == rival_part && c.from_pose_search;
                      })) {
-      search_candidate_parts(analysis, points, surfaces, result, rival_part);
+      search_candidate_parts(analysis, points, surfaces, result, {rival_part});
       choose();
     }
   }
@@ -299,14 +311,69 @@ RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene, const ScenePo
   return candidate;
 }
 
+void Recognizer::verify_voted_poses(const ViewAnalysis& scene, const ScenePoints& scene_points,
+                                    ModelSurfaces& surfaces, RecognitionResult& result) const {
+  Clock::time_point stage = Clock::now();
+  PoseVoter voter(patch_pair_table_, parameters_.vote_index.voting);
+  const std::span<const VotedPose> voted = voter.vote(scene.view);
+  result.timings.selection_ms += elapsed_ms(stage);
+  std::vector<RigidTransform> starts;
+  std::vector<int> voted_parts;
+  for (std::size_t first = 0; first < voted.size(); ++first) {
+    const int part = voted[first].part;
+    if (std::any_of(voted.begin(), voted.begin() + static_cast<std::ptrdiff_t>(first),
+                    [part](const VotedPose& earlier) { return earlier.part == part; }))
+      continue;
+    voted_parts.push_back(part);
+    const PartSearchModel& model = part_search_model(part);
+    if (model.start_views.empty()) continue;
+    // The part's poses as starts on one of its views; aligning them in the part's field moves
+    // each onto the view nearest to it (part_pose_search.hpp).
+    const int view = model.start_views.front();
+    const RigidTransform& T_view_part =
+        model_base_.views[static_cast<std::size_t>(view)].T_scanner_part;
+    starts.clear();
+    for (std::size_t v = first; v < voted.size(); ++v)
+      if (voted[v].part == part) starts.push_back(T_view_part * voted[v].T_part_scene);
+    stage = Clock::now();
+    const std::vector<ViewPoseHypothesis> aligned = align_view_starts_in_field(
+        scene_points.all, model_base_, view, starts, model, parameters_.field_starts,
+        parameters_.search, parameters_.registered_hypotheses);
+    result.timings.registration_ms += elapsed_ms(stage);
+    if (aligned.empty()) continue;
+    RecognitionCandidate candidate;
+    candidate.part = part;
+    candidate.view = aligned.front().view;
+    candidate.from_vote_index = true;
+    const ModelBaseView& nearest = model_base_.views[static_cast<std::size_t>(candidate.view)];
+    candidate.spectral_distance = selector_.distance(scene.moments, nearest.moments);
+    stage = Clock::now();
+    candidate.goodness = match_patch_groups(scene.view, nearest.cosmos, parameters_.matching).score;
+    result.timings.matching_ms += elapsed_ms(stage);
+    stage = Clock::now();
+    register_candidate(scene_points, aligned, surfaces, candidate);
+    result.timings.registration_ms += elapsed_ms(stage);
+    result.candidates.push_back(candidate);
+    ++result.views_examined;
+  }
+  // A voted pose can be too far from the truth to register; the part's votes still rank it
+  // far better than the spectra do.
+  if (voted_parts.size() > static_cast<std::size_t>(parameters_.vote_index.searched_parts))
+    voted_parts.resize(static_cast<std::size_t>(parameters_.vote_index.searched_parts));
+  const RecognitionCandidate* best = best_candidate(result.candidates);
+  if (voted_parts.empty() || (best && best->inlier_fraction >= parameters_.sufficient_support))
+    return;
+  search_candidate_parts(scene, scene_points, surfaces, result, voted_parts);
+}
+
 void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
                                         ModelSurfaces& surfaces, RecognitionResult& result,
-                                        int only_part) const {
+                                        const std::vector<int>& only_parts) const {
   // Parts in the order of their closest view.
   std::vector<int> parts = selector_.rank_parts(scene.moments);
   if (parts.size() > static_cast<std::size_t>(parameters_.searched_parts))
     parts.resize(static_cast<std::size_t>(parameters_.searched_parts));
-  if (only_part >= 0) parts = {only_part};
+  if (!only_parts.empty()) parts = only_parts;
   // Registers one part's field poses; true when one explains enough to end the search.
   auto register_part = [&](int part, const std::vector<FieldHypothesis>& field_poses) {
     Clock::time_point stage = Clock::now();

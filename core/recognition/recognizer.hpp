@@ -7,6 +7,11 @@
 //   selection     spectral model-view selection (§5.2): K best clusters, m best views;
 //   matching      for each selected view, COSMOS verification by patch-group graph matching
 //                 (§5.3) and the initial pose it implies (§5.3.5);
+//   voting        when no selected view explains the scene: the scene's CSMP pairs vote
+//                 for (part, pose) over the whole catalog (core/indexing/); the strongest
+//                 poses are verified like selected views, the first voted parts searched
+//                 over all their views, and only when none of that explains the scene does
+//                 the pose search run over every part;
 //   registration  initial-pose hypotheses per candidate — the patch-group pose, the principal
 //                 axes (§6.7.2) and turns about the viewing axis (scene and model views are
 //                 both seen from the scanner, so the unknown is mostly that turn) — scored by
@@ -26,6 +31,8 @@
 #include <vector>
 
 #include "core/cosmos_parameters.hpp"
+#include "core/indexing/patch_pair_table.hpp"
+#include "core/indexing/vote_index_parameters.hpp"
 #include "core/matching/patch_group_matching.hpp"
 #include "core/matching/pose_from_patches.hpp"
 #include "core/matching/spectral_view_selection.hpp"
@@ -76,7 +83,10 @@ struct RecognitionParameters {
   // 60-80 % gets the chance to be explained better by its own views.
   double sufficient_support = 0.9;
   PartSupportParameters support;  // what counts as explained scene surface
-  // When no selected view reaches sufficient_support: the pose search over every view of
+  // When no selected view reaches sufficient_support: the poses the catalog-wide vote index
+  // proposes, verified like selected views.
+  VoteIndexParameters vote_index;
+  // When none of them reaches it either: the pose search over every view of
   // up to `searched_parts` parts (SpectralViewSelector::rank_parts, closest single view
   // first), until one reaches it. Every part of any base: a part the spectra rank below the
   // cut was never registered, and its scans went to whichever searched part explained them
@@ -134,6 +144,7 @@ struct RecognitionParameters {
     v("sufficient_support", sufficient_support, "verification stops at this part support",
       Range{0, 1});
     v("support", support, "what counts as explained scene surface");
+    v("vote_index", vote_index, "votes for (part, pose) over the whole catalog");
     v("searched_parts", searched_parts, "parts the pose search falls back to", Range{0, 100000});
     v("convincing_field_fit_mm2", convincing_field_fit_mm2,
       "a part whose best field pose fits this well is registered at once, mm^2", Range{0, 1e6});
@@ -167,6 +178,7 @@ struct RecognitionCandidate {
   double score = 0;  // the decision's figure of merit, in [0, 1]
   RigidTransform T_model_scene;
   bool from_pose_search = false;  // proposed by the fallback search, not by §5.2 selection
+  bool from_vote_index = false;   // proposed by the vote index (core/indexing/)
 };
 
 struct RecognitionTimings {
@@ -204,6 +216,9 @@ struct RecognitionResult {
   int scene_patches = 0;
   int scene_points = 0;
   int views_examined = 0;  // model views compared with the scene (selected + searched)
+  // The pose search ran over every part of the catalog (neither the selected views nor the
+  // vote index's poses explained the scene).
+  bool catalog_searched = false;
   std::vector<RecognitionCandidate> candidates;  // spectral order
   RecognitionTimings timings;
 };
@@ -225,6 +240,7 @@ class Recognizer {
     return part_search_models_[static_cast<std::size_t>(part)];
   }
   const RecognitionParameters& parameters() const { return parameters_; }
+  const PatchPairTable& patch_pair_table() const { return patch_pair_table_; }
 
  private:
   // The scene's control points, and the spread subset of coarse_points taken once.
@@ -236,11 +252,15 @@ class Recognizer {
   RecognitionCandidate verify(const ViewAnalysis& scene, const ScenePoints& scene_points,
                               const SpectralCandidate& selected, ModelSurfaces& surfaces,
                               double& matching_ms, double& registration_ms) const;
+  // The poses the vote index proposes, one candidate per part, verified in vote order; then,
+  // unless one explains the scene, the pose search over the first voted parts' views.
+  void verify_voted_poses(const ViewAnalysis& scene, const ScenePoints& scene_points,
+                          ModelSurfaces& surfaces, RecognitionResult& result) const;
   // The fallback: every view of the candidates' parts (part_pose_search.hpp).
-  // `only_part` >= 0: that part's views alone.
+  // `only_parts` not empty: those parts' views alone, in that order.
   void search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
                               ModelSurfaces& surfaces, RecognitionResult& result,
-                              int only_part = -1) const;
+                              const std::vector<int>& only_parts = {}) const;
   // Registers from each start on its view, keeps the pose its view supports best (the
   // candidate's view becomes that one), then judges it against the part's views around it
   // (part_support.hpp).
@@ -253,6 +273,7 @@ class Recognizer {
   RecognitionParameters parameters_;
   SpectralViewSelector selector_;
   std::vector<PartSearchModel> part_search_models_;
+  PatchPairTable patch_pair_table_;
 };
 
 const char* to_string(RecognitionStatus status);

@@ -61,9 +61,11 @@ struct EvaluationRecord {
   double recognition_ms = 0;
   // Where the time went (the report's per-test table): chapter-3 features, patch-group
   // matching, registration and pose search; and whether the §5.2 views left the fallback
-  // pose search to run.
+  // pose search to run (over one part or all), and whether it ran over every part of the
+  // catalog (neither the selected views nor the vote index's poses explained the scan).
   double features_ms = 0, matching_ms = 0, registration_ms = 0;
   bool pose_searched = false;
+  bool catalog_searched = false;
   // The decision's margin: the winner's score (the best candidate's when rejected) and the
   // best candidate of another part, empty when none registered.
   double score = 0;
