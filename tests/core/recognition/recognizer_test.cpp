@@ -165,7 +165,7 @@ TEST_F(RecognizerOnRegressionBase, TheVoteIndexFindsThePartAndPoseWithoutSearchi
   const Recognizer recognizer(*base_, CosmosParameters{}, parameters);
   EXPECT_GT(recognizer.patch_pair_table().size(), 0u);
   int decided_by_votes = 0;
-  for (std::uint64_t seed = 61; seed < 71; ++seed) {
+  for (std::uint64_t seed = 61; seed < 81; ++seed) {
     const int part = static_cast<int>(seed % 5);
     const std::string& name = base_->parts[static_cast<std::size_t>(part)].name;
     const RangeImage image = scan(name, seed);

@@ -78,7 +78,8 @@ TEST(PartRecognition, APartSpanningAReplayedGlitchOrGapIsAnErrorNotAPose) {
 
   const Replayed clean = replay(profiles, recognizer, base);
   ASSERT_EQ(clean.parts.size(), 3u);
-  for (const PartRecognition& part : clean.parts) ASSERT_EQ(part.pose.status, PoseStatus::kOk);
+  for (const PartRecognition& part : clean.parts)
+    ASSERT_EQ(part.pose.status, PoseStatus::kOk) << part.pose.part_name << ": " << part.pose.reason;
 
   // Part 1's middle row reads 10^9 ticks low (100 km of belt); five rows of part 2 are lost.
   std::vector<Profile> faulty = profiles;
