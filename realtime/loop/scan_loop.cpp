@@ -167,7 +167,12 @@ void ScanLoop::complete(const TrackedPart& part) {
   builder.soft_link_of = part.soft_link_of;
   builder.has_soft_successor = part.has_soft_successor;
   builder.tracked_rows = part.last_row - part.first_row + 1;
-  builder.last_data_profile = stamp_of_row(part.last_row).profile;
+  // The pose holds at its last row with data: the empty rows the tracker waited through after
+  // it took nothing of the part, so an encoder fault among them must not move its count.
+  const RowStamp& last_data = stamp_of_row(part.last_row);
+  builder.last_data_profile = last_data.profile;
+  builder.last_encoder_ticks = last_data.encoder_ticks;
+  builder.last_t_us = last_data.t_us;
   builder.completed_ns = monotonic_now_ns();
   counters_.parts_seen.fetch_add(1, std::memory_order_relaxed);
   counters_.parts_truncated.fetch_add(builder.truncated ? 1 : 0, std::memory_order_relaxed);

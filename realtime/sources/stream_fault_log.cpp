@@ -41,11 +41,11 @@ bool touches(StreamFaultKind kind, std::uint64_t previous_seq, std::uint64_t seq
     case StreamFaultKind::kSequenceGap:
       // Lost: the frames after previous_seq and before seq, beside or among the data rows.
       if (seq > previous_seq) return previous_seq <= rows.last_data_seq && seq >= rows.first_seq;
-      return after_first && seq <= rows.last_seq;  // the sequence went backwards here
+      return after_first && seq <= rows.last_data_seq;  // the sequence went backwards here
     case StreamFaultKind::kLaserOff:
       return seq + 1 >= rows.first_seq && seq <= rows.last_data_seq + 1;
     default:
-      return after_first && seq <= rows.last_seq;
+      return after_first && seq <= rows.last_data_seq;
   }
 }
 

@@ -9,9 +9,10 @@
 // between the profile before the gap and the one after it, the others at their profile. A
 // part has three extents (PartProfileSpan): its first row, its last row with data, and the
 // last row the loop added to it, which lies up to tracking.link_gap_rows of empty belt later
-// (the tracker completes a part only then) and whose count the pose is published with.
-// Frames lost in those empty rows took nothing of the part and leave its placement alone, so
-// they are not the part's fault; an encoder fault there changes the published count, so it is.
+// (the tracker completes a part only then). The pose holds at the last row with data (its
+// count and time are that row's), so nothing in those empty rows is the part's fault: frames
+// lost there took nothing of it, and an encoder fault there moves neither its rows nor its
+// count.
 //
 // One writer (the acquisition thread) and any readers (the recognizer): a ring of the last
 // kCapacity faults in atomics, the count published with release after each entry. A part
@@ -40,8 +41,8 @@ const char* to_string(StreamFaultKind kind);
 // A part's rows by the sequence numbers of their profiles.
 struct PartProfileSpan {
   std::uint64_t first_seq = 0;      // its first row
-  std::uint64_t last_data_seq = 0;  // its last row with data of it
-  std::uint64_t last_seq = 0;       // the last row added to it: its pose's encoder count
+  std::uint64_t last_data_seq = 0;  // its last row with data of it: its pose's encoder count
+  std::uint64_t last_seq = 0;       // the last row added to it
 };
 
 class StreamFaultLog {
@@ -57,8 +58,8 @@ class StreamFaultLog {
   // Any thread: a fault touching the part's rows (the latest), kNone if there is none.
   //   frames lost   the lost frames lie among the part's rows with data or right next to
   //                 them (a lost frame beside its first or last row may have held more of it)
-  //   encoder       its profile is a row after the first, up to last_seq (rows before it are
-  //                 fine: the count that positions the part is last_seq's)
+  //   encoder       its profile is a row after the first, up to last_data_seq (rows before
+  //                 it are fine: the count that positions the part is last_data_seq's)
   //   laser off     its profile is a row with data or right next to them (the dark profile
   //                 cut the part short)
   StreamFaultKind fault_in(const PartProfileSpan& rows) const noexcept;

@@ -10,12 +10,15 @@
 namespace cosmos {
 namespace {
 
-TEST(StreamFaultLog, AnEncoderFaultTouchesThePartsRowsAfterTheFirstUpToItsPublishedCount) {
+TEST(StreamFaultLog, AnEncoderFaultTouchesThePartsRowsAfterTheFirstUpToItsLastWithData) {
   auto log = std::make_unique<StreamFaultLog>();
   log->record(StreamFaultKind::kEncoderJump, 99, 100);
   EXPECT_EQ(log->fault_in({90, 105, 110}), StreamFaultKind::kEncoderJump);  // inside
-  // After its data, in the empty rows up to the row whose count the pose carries.
-  EXPECT_EQ(log->fault_in({80, 95, 100}), StreamFaultKind::kEncoderJump);
+  EXPECT_EQ(log->fault_in({80, 100, 110}),
+            StreamFaultKind::kEncoderJump);  // at the row whose count the pose carries
+  // After its data, in the empty rows the tracker waited through: neither its rows nor its
+  // pose's count moved.
+  EXPECT_EQ(log->fault_in({80, 95, 100}), StreamFaultKind::kNone);
   EXPECT_EQ(log->fault_in({100, 105, 110}),
             StreamFaultKind::kNone);                                  // its first row
   EXPECT_EQ(log->fault_in({80, 95, 99}), StreamFaultKind::kNone);     // ended before it
