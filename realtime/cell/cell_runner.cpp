@@ -13,11 +13,15 @@
 #include "realtime/rt/deadline_pacer.hpp"
 #include "realtime/rt/latency_histogram.hpp"
 #include "realtime/rt/spsc_ring.hpp"
+#include "realtime/rt/wake_signal.hpp"
 
 namespace cosmos {
 namespace {
 
+// How long a thread backs off when a ring it feeds is full (the consumer is behind).
 constexpr auto kIdleWait = std::chrono::microseconds(200);
+// The longest an idle recognizer sleeps before it looks again without being woken.
+constexpr std::int64_t kRecognizerIdleNs = 50'000'000;
 
 struct CompletedPose {
   PartRecognition recognition;
@@ -41,6 +45,9 @@ struct SharedStatus {
   // The source's one line, written before `fault` is set (release) and read after it.
   std::array<char, 256> fault_reason{};
   std::atomic<bool> acquisition_done{false}, recognizer_done{false};
+  // Idle threads sleep until there is work: the recognizer until a part completed (or was
+  // lost), the publisher until a pose or a profile arrived or its next status is due.
+  WakeSignal recognizer_wake, publisher_wake;
 };
 
 void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
@@ -54,9 +61,11 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
         .fetch_add(1, std::memory_order_relaxed);
     CompletedPose completed{std::move(recognition), joined.completed_ns};
     while (!poses.try_push(std::move(completed))) std::this_thread::sleep_for(kIdleWait);
+    status.publisher_wake.notify();
   };
   PieceJoiner joiner(context);
   for (;;) {
+    const std::uint32_t seen = status.recognizer_wake.epoch();
     // Parts the loop dropped are reported too (ERROR poses): none passes unannounced.
     LostPart lost;
     while (loop.lost_parts().try_pop(lost))
@@ -66,7 +75,7 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
       if (status.acquisition_done.load(std::memory_order_acquire) && loop.completed().empty() &&
           loop.lost_parts().empty())
         break;
-      std::this_thread::sleep_for(kIdleWait);
+      status.recognizer_wake.wait(seen, kRecognizerIdleNs);
       continue;
     }
     if (settings.recognizer_delay_ms > 0)
@@ -80,6 +89,7 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
   }
   for (JoinedRecognition& joined : joiner.finish()) publish(std::move(joined));
   status.recognizer_done.store(true, std::memory_order_release);
+  status.publisher_wake.notify();
 }
 
 CellStatus status_message(ScanLoop& loop, const SharedStatus& shared,
@@ -134,6 +144,7 @@ void run_publisher(ScanLoop& loop, Publisher& publisher, SpscRing<CompletedPose>
   std::int64_t last_data_us = 0;
   CellStatus previous;
   for (;;) {
+    const std::uint32_t seen = shared.publisher_wake.epoch();
     bool idle = true;
     if (CompletedPose* completed = poses.try_front()) {
       PartPose& pose = completed->recognition.pose;
@@ -163,7 +174,11 @@ void run_publisher(ScanLoop& loop, Publisher& publisher, SpscRing<CompletedPose>
       next_status += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
     }
     if (finished) break;
-    if (idle) std::this_thread::sleep_for(kIdleWait);
+    if (idle) {
+      const auto until_status = std::chrono::duration_cast<std::chrono::nanoseconds>(
+          next_status - std::chrono::steady_clock::now());
+      shared.publisher_wake.wait(seen, until_status.count());
+    }
   }
 }
 
@@ -237,6 +252,7 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
       break;
     }
     loop.process(profile);
+    if (!loop.completed().empty() || !loop.lost_parts().empty()) shared.recognizer_wake.notify();
     if (settings.publishing.publish_profiles) {
       Profile* slot = recorded.try_begin_push();
       // Unpaced runs (replays, log recording) lose nothing: they wait for the publisher,
@@ -248,6 +264,7 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
       if (slot) {
         *slot = profile;
         recorded.commit_push();
+        shared.publisher_wake.notify();
       } else {
         shared.profiles_dropped.fetch_add(1, std::memory_order_relaxed);
       }
@@ -272,6 +289,7 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
   snapshot_health();
   shared.source_stalled = false;
   shared.acquisition_done.store(true, std::memory_order_release);
+  shared.recognizer_wake.notify();
   recognizer.join();
   publishing.join();
 
