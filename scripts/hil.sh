@@ -14,7 +14,7 @@
 # Environment: HIL_STEPS (comma-separated guest steps, default all:
 # loop,lifecycle,formats,gpio,faults,cell),
 # HIL_PARTS (parts on the cell's conveyor, default 10),
-# HIL_TIMEOUT_S (the guest's wall-clock limit, default 600).
+# HIL_TIMEOUT_S (the guest's wall-clock limit, default 1800).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build_dir=${COSMOS_BUILD_DIR:-$root/build}
@@ -22,7 +22,7 @@ hil_cache=${COSMOS_CACHE_DIR:-$HOME/.cache/cosmos-cell}/hil
 work=$build_dir/hil
 steps=${HIL_STEPS:-loop,lifecycle,formats,gpio,faults,cell}
 parts=${HIL_PARTS:-10}
-timeout_s=${HIL_TIMEOUT_S:-600}
+timeout_s=${HIL_TIMEOUT_S:-1800}
 mkdir -p "$work" "$hil_cache"
 log=$work/hil.log
 : > "$log"
@@ -83,12 +83,19 @@ say "initramfs $(($(stat -c %s "$work/initramfs.cpio") / 1048576)) MiB ($(elapse
 
 # The binaries use AVX2 and FMA (COSMOS_AVX2): qemu's TCG emulates them when asked.
 cpu=max,+avx,+avx2,+fma
+# The guest's clock runs on its instructions, not on the host's: -icount shift=0 makes every
+# emulated instruction one nanosecond (a 1 GHz CPU whatever the host), sleep=off skips the
+# time the guest idles. Emulated, the cell's floating point runs hundreds of times slower
+# than on the host, and a guest on the host's clock falls behind vivid's frame rate; on its
+# own clock it keeps up, however slow or loaded the host, which then only takes longer.
+# icount runs one emulated CPU (with two, the secondary CPU never comes up).
+clock=(-icount shift=0,sleep=off -smp 1)
 console=$work/console.log
 up_stamp=$work/guest-up-at
 rm -f "$up_stamp"
 boot_started=$(date +%s)
 set +e
-timeout --kill-after=10 "$timeout_s" qemu-system-x86_64 -accel tcg -cpu "$cpu" -smp 2 -m 3072 \
+timeout --kill-after=10 "$timeout_s" qemu-system-x86_64 -accel tcg "${clock[@]}" -cpu "$cpu" -m 3072 \
   -display none -monitor none -serial stdio -no-reboot -nic none \
   -kernel "$kernel_dir/vmlinuz" -initrd "$work/initramfs.cpio" \
   -append "console=ttyS0 quiet panic=-1 hil_steps=$steps hil_parts=$parts" < /dev/null 2>&1 |
