@@ -20,9 +20,10 @@ long futex(std::atomic<std::uint32_t>& word, int operation, std::uint32_t value,
 }  // namespace
 
 void WakeSignal::notify() noexcept {
-  epoch_.fetch_add(1, std::memory_order_acq_rel);
-  // seq_cst pairs with the waiter's: either it sees the new epoch before sleeping, or this
-  // sees it sleeping and wakes it.
+  // Both sides seq_cst (the store-load order of each matters): either the waiter sees the new
+  // epoch before it sleeps (and the kernel's own compare in FUTEX_WAIT catches it in between),
+  // or this sees it sleeping and wakes it.
+  epoch_.fetch_add(1, std::memory_order_seq_cst);
   if (sleeping_.load(std::memory_order_seq_cst) != 0)
     futex(epoch_, FUTEX_WAKE_PRIVATE, INT_MAX, nullptr);
 }
