@@ -102,7 +102,7 @@ RigidTransform cell_pose_of_belt(const RigidTransform& T_belt_part, std::int64_t
 
 RigidTransform cell_pose_of(const RigidTransform& T_loop_part, const PartBuilder& builder,
                             const PartRecognitionContext& context) {
-  return cell_pose_of_belt(T_belt_loop() * T_loop_part, builder.last_encoder_ticks, context);
+  return cell_pose_of_belt(T_belt_loop() * T_loop_part, builder.last_data_encoder_ticks, context);
 }
 
 PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContext& context,
@@ -132,9 +132,9 @@ PartRecognition recognition_of(RecognitionResult result, const PartBuilder& buil
   PartRecognition out;
   out.result = std::move(result);
   PartPose& pose = out.pose;
-  pose.utime_us = builder.last_t_us;
+  pose.utime_us = builder.last_data_t_us;
   pose.part_seq = part_seq;
-  pose.encoder_ticks = builder.last_encoder_ticks;
+  pose.encoder_ticks = builder.last_data_encoder_ticks;
   pose.encoder_ticks_first = builder.first_encoder_ticks;
   pose.blob_extent_mm =
       Eigen::Vector3d((builder.column_max - builder.column_min + 1) * context.grid_mm,
@@ -167,7 +167,7 @@ PartRecognition recognition_of(RecognitionResult result, const PartBuilder& buil
   out.first_profile = builder.first_profile;
   out.last_profile = builder.first_profile + builder.cosmos.rows() - 1;
   const RigidTransform T_cell_part =
-      cell_pose_of_belt(out.T_belt_part, builder.last_encoder_ticks, context);
+      cell_pose_of_belt(out.T_belt_part, builder.last_data_encoder_ticks, context);
   pose.rotation_cell_part = Eigen::Quaterniond(T_cell_part.rotation);
   pose.translation_cell_part_mm = T_cell_part.translation_mm;
   pose.score = out.result.score;

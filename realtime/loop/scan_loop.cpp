@@ -171,8 +171,8 @@ void ScanLoop::complete(const TrackedPart& part) {
   // it took nothing of the part, so an encoder fault among them must not move its count.
   const RowStamp& last_data = stamp_of_row(part.last_row);
   builder.last_data_profile = last_data.profile;
-  builder.last_encoder_ticks = last_data.encoder_ticks;
-  builder.last_t_us = last_data.t_us;
+  builder.last_data_encoder_ticks = last_data.encoder_ticks;
+  builder.last_data_t_us = last_data.t_us;
   builder.completed_ns = monotonic_now_ns();
   counters_.parts_seen.fetch_add(1, std::memory_order_relaxed);
   counters_.parts_truncated.fetch_add(builder.truncated ? 1 : 0, std::memory_order_relaxed);
@@ -180,7 +180,7 @@ void ScanLoop::complete(const TrackedPart& part) {
     if (!settings_.wait_for_recognizer) {
       report_lost({LostPartReason::kQueueFull, builder.first_profile,
                    builder.first_profile + builder.cosmos.rows() - 1, builder.first_encoder_ticks,
-                   builder.last_encoder_ticks, builder.last_t_us, builder.column_min,
+                   builder.last_data_encoder_ticks, builder.last_data_t_us, builder.column_min,
                    builder.column_max, part.max_z_mm});
       free_builder(index);
       return;
@@ -213,8 +213,6 @@ void ScanLoop::start_parts(std::int64_t profile_index, const Profile& profile) {
     builder.first_encoder_ticks = profile.encoder_ticks;
     builder.first_t_us = profile.t_us;
     builder.truncated = false;
-    builder.last_encoder_ticks = profile.encoder_ticks;
-    builder.last_t_us = profile.t_us;
     open_builders_.push_back(index);
   }
 }
@@ -254,8 +252,6 @@ bool ScanLoop::add_row_to(int index, const Profile& profile) {
   for (int c = row.column_begin; c < row.column_end; ++c)
     row.tracker_label[row.at(c)] = labels[static_cast<std::size_t>(last_column - c)];
   builder.last_profile = static_cast<std::int64_t>(profile.seq);
-  builder.last_encoder_ticks = profile.encoder_ticks;
-  builder.last_t_us = profile.t_us;
   return true;
 }
 

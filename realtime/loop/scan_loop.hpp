@@ -74,13 +74,12 @@ struct PartBuilder {
   // of the last row added, up to tracking.link_gap_rows of empty belt later.
   std::int64_t last_data_profile = 0;
   std::int64_t last_profile = 0;
-  // The encoder counts and exposure times (data time) of its first row and of its last row:
-  // while it is built the last row added, once completed its last row with data, where its
-  // pose holds.
+  // The encoder counts and exposure times (data time) of its first row and, once the tracker
+  // completed it, of its last row with data, where its pose holds.
   std::int64_t first_encoder_ticks = 0;
-  std::int64_t last_encoder_ticks = 0;
+  std::int64_t last_data_encoder_ticks = 0;
   std::int64_t first_t_us = 0;
-  std::int64_t last_t_us = 0;
+  std::int64_t last_data_t_us = 0;
   int column_min = 0;  // the tracked part's extent, loop-frame columns
   int column_max = 0;
   float max_z_mm = 0;  // the tracked part's highest sample
