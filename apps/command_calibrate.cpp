@@ -41,6 +41,7 @@ struct CalibrateOptions {
   std::string report = "calibration-report";
   std::string input;   // images, views, belt or scan directory
   std::string block;   // belt: the ramp block's frames
+  std::string block_turned;  // belt: the same block turned round (the sheet's pitch)
   std::string target;  // belt: ramp.yaml; cell: spheres.yaml
   CalibrationBoard board;
 };
@@ -132,17 +133,21 @@ void run_belt(const CalibrateOptions& options) {
   const CellConfig config = load_cell_config(options.config);
   const RampBlock block = read_ramp_target(options.target);
   const BeltCalibrationResult result =
-      calibrate_belt(read_frame_list(options.input), read_frame_list(options.block), block,
-                     config.scanner, hardware.calibration, hardware.stripe);
+      calibrate_belt(read_frame_list(options.input), read_frame_list(options.block),
+                     options.block_turned.empty() ? std::vector<StripeFrame>{}
+                                                  : read_frame_list(options.block_turned),
+                     block, config.scanner, hardware.calibration, hardware.stripe);
   refuse_unless(result.ok, options.block, result.reason);
   const ProfileSampling sampling =
       profile_sampling_for(config.scanner, config.conditioning, result.encoder_mm_per_tick);
   ConditioningParameters conditioning = sampling.conditioning;
   conditioning.belt_height_mm = result.belt_height_mm;
   conditioning.belt_slope_x = result.belt_slope_x;
+  conditioning.sheet_pitch_deg = result.sheet_pitch_deg;
   CalibrationReport report(options.report);
   report.line("cosmos calibrate belt: empty belt " + options.input + ", ramp block " +
-              options.block);
+              options.block +
+              (options.block_turned.empty() ? "" : ", turned round " + options.block_turned));
   report.line(text("roll %.4f deg, camera %.4f mm above the belt", result.roll_deg,
                    result.camera_height_mm));
   report.line(text("belt plane in the new frame: z = %.4f mm + %.6f x, RMS %.4f mm",
@@ -151,12 +156,21 @@ void run_belt(const CalibrateOptions& options) {
       text("encoder %.6f mm per tick (ramp line RMS %.4f mm over %.0f frames); grid %.6f mm",
            result.encoder_mm_per_tick, result.ramp_rms_mm,
            static_cast<double>(result.ramp_ticks_height.size()), conditioning.grid_mm));
+  report.line(result.pitch_measured
+                  ? text("laser sheet pitch %.4f deg (turned ramp line RMS %.4f mm over %.0f "
+                         "frames)",
+                         result.sheet_pitch_deg, result.ramp_turned_rms_mm,
+                         static_cast<double>(result.ramp_turned_ticks_height.size()))
+                  : std::string("laser sheet pitch not measured (no --block-turned scan): "
+                                "taken as 0"));
   std::vector<Eigen::Vector2d> belt_xz;
   for (const Eigen::Vector3d& p : result.belt_points_scanner) belt_xz.emplace_back(p.x(), p.z());
   report.picture("belt-profile",
                  plot_picture("empty belt in the calibrated frame", "x mm", "z mm", {{belt_xz}}));
-  report.picture("belt-ramp", plot_picture("ramp block height per frame", "encoder ticks",
-                                           "height mm", {{result.ramp_ticks_height}}));
+  report.picture("belt-ramp",
+                 plot_picture("ramp block height per frame (both ways round)", "encoder ticks",
+                              "height mm",
+                              {{result.ramp_ticks_height}, {result.ramp_turned_ticks_height}}));
   update_yaml_file(options.hardware, {{"calibration.mount", yaml_of(result.mount)}});
   update_yaml_file(options.config,
                    {{"scanner.encoder_mm_per_tick", YAML::Node(result.encoder_mm_per_tick)},
@@ -175,7 +189,8 @@ void run_cell(const CalibrateOptions& options) {
   const CellFrameResult result =
       calibrate_cell_frame(read_frame_list(options.input), plate,
                            calibrated_triangulation_geometry(config.scanner, hardware.calibration),
-                           config.scanner.encoder_mm_per_tick, hardware.stripe);
+                           config.scanner.encoder_mm_per_tick,
+                           config.conditioning.sheet_pitch_deg, hardware.stripe);
   refuse_unless(result.ok, options.target, result.reason);
   CalibrationReport report(options.report);
   report.line("cosmos calibrate cell: " + std::to_string(plate.centres_cell_mm.size()) +
@@ -235,6 +250,8 @@ void install(CLI::App& root) {
   CLI::App* belt = calibrate->add_subcommand("belt", "Scanner frame and encoder from the belt");
   belt->add_option("--belt", options->input, "frame directory of the empty belt")->required();
   belt->add_option("--block", options->block, "frame directory of the ramp block")->required();
+  belt->add_option("--block-turned", options->block_turned,
+                   "frame directory of the ramp block turned round (measures the sheet's pitch)");
   belt->add_option("--target", options->target, "the ramp block's target file")->required();
   belt->add_option("--config", options->config, "cell config to update")->capture_default_str();
   common(belt);

@@ -1,9 +1,9 @@
 // `cosmos calibrate simulate --config CELL --out DIR`: the calibration targets of the
 // simulated cell, rendered through its true geometry (the config's sim_source.truth:), as the
 // files a real cell's procedure records: DIR/camera/ (board images), DIR/laser/ (board and
-// stripe image pairs), DIR/belt/ and DIR/block/ (frame directories of the empty belt and the
-// ramp block) with DIR/ramp.yaml, DIR/spheres/ with DIR/spheres.yaml, and DIR/truth.txt, the
-// values a perfect calibration would find.
+// stripe image pairs), DIR/belt/, DIR/block/ and DIR/block-turned/ (frame directories of the
+// empty belt and the ramp block, either way round) with DIR/ramp.yaml, DIR/spheres/ with
+// DIR/spheres.yaml, and DIR/truth.txt, the values a perfect calibration would find.
 //
 // `cosmos calibrate truth --config CELL --hardware HW`: writes that perfect calibration into
 // HW's calibration: section and CELL's encoder, grid and T_cell_scanner, the reference of the
@@ -57,10 +57,11 @@ void write_truth(const fs::path& file, const CalibrationTruth& truth) {
                 "laser (camera frame): normal (%.6f, %.6f, %.6f) offset %.4f mm\n"
                 "belt: roll %.4f deg, camera %.4f mm above the belt\n"
                 "encoder: %.6f mm per tick\n"
+                "laser sheet pitch: %.4f deg\n"
                 "T_cell_scanner translation (%.3f, %.3f, %.3f) mm\n",
                 c.fx_px, c.fy_px, c.cx_px, c.cy_px, c.k1, p.normal_x, p.normal_y, p.normal_z,
                 p.offset_mm, truth.roll_deg, truth.camera_height_mm, truth.encoder_mm_per_tick,
-                t.x(), t.y(), t.z());
+                truth.sheet_pitch_deg, t.x(), t.y(), t.z());
   out << text;
   if (!out) throw InputError(file.string() + ": cannot write");
 }
@@ -83,6 +84,8 @@ void run_simulate(const SimulateOptions& options) {
   const RampBlock block;
   write_frame_list(out / "belt", simulator.empty_belt_frames(4));
   write_frame_list(out / "block", simulator.ramp_frames(block, 20));
+  write_frame_list(out / "block-turned",
+                   simulator.ramp_frames(block, 20, RampPlacement::kHighEndUpstream));
   write_ramp_target(out / "ramp.yaml", block);
   const SpherePlateScan plate = simulator.sphere_plate_scan(16);
   write_frame_list(out / "spheres", plate.frames);
@@ -101,8 +104,9 @@ void run_truth(const SimulateOptions& options) {
   calibration.camera = truth.camera;
   calibration.laser = truth.laser;
   calibration.mount = {true, truth.T_scanner_camera};
-  const ProfileSampling sampling =
+  ProfileSampling sampling =
       profile_sampling_for(config.scanner, config.conditioning, truth.encoder_mm_per_tick);
+  sampling.conditioning.sheet_pitch_deg = truth.sheet_pitch_deg;
   update_yaml_file(options.hardware, {{"calibration", yaml_of(calibration)}});
   update_yaml_file(options.config,
                    {{"scanner.encoder_mm_per_tick", YAML::Node(truth.encoder_mm_per_tick)},

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
 
 #include "calibration/stripe_points.hpp"
 
@@ -62,10 +63,58 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
+struct RampScan {
+  std::string reason;  // empty when the scan is usable
+  double slope_mm_per_tick = 0.0;
+  double rms_mm = 0.0;
+  std::vector<Eigen::Vector2d> ticks_height;
+};
+
+// The ramp's top height in each frame (the median of the points above the belt) over the
+// middle 70 % of its rise, and the straight line of height against encoder count.
+RampScan fit_ramp_scan(const std::vector<StripeFrame>& frames, const RampBlock& block,
+                       const TriangulationGeometry& geometry,
+                       const StripeExtractionParameters& extraction) {
+  RampScan scan;
+  char reason[200];
+  const double rise = block.high_height_mm - block.low_height_mm;
+  const double low = block.low_height_mm + 0.15 * rise;
+  const double high = block.high_height_mm - 0.15 * rise;
+  for (const StripeFrame& frame : frames) {
+    std::vector<double> heights;
+    for (const Eigen::Vector3d& p :
+         stripe_scanner_points(frame.image, frame.roi_top_px, geometry, extraction))
+      if (p.z() > 0.5 * block.low_height_mm) heights.push_back(p.z());
+    if (heights.size() < 20) continue;
+    const double height = median(std::move(heights));
+    if (height > low && height < high)
+      scan.ticks_height.emplace_back(static_cast<double>(frame.encoder_ticks), height);
+  }
+  if (scan.ticks_height.size() < 5) {
+    std::snprintf(reason, sizeof reason,
+                  "%zu frames see its slope (heights %.1f to %.1f mm), at least 5 needed: is it "
+                  "the block of the target file?",
+                  scan.ticks_height.size(), low, high);
+    scan.reason = reason;
+    return scan;
+  }
+  scan.slope_mm_per_tick = fit_straight_line(scan.ticks_height, &scan.rms_mm)(1);
+  if (scan.rms_mm > 0.5) {
+    std::snprintf(reason, sizeof reason,
+                  "its heights leave a straight line by %.2f mm RMS: not a ramp of the target "
+                  "file's shape",
+                  scan.rms_mm);
+    scan.reason = reason;
+  }
+  return scan;
+}
+
 }  // namespace
 
 BeltCalibrationResult calibrate_belt(const std::vector<StripeFrame>& empty_belt,
-                                     const std::vector<StripeFrame>& ramp, const RampBlock& block,
+                                     const std::vector<StripeFrame>& ramp,
+                                     const std::vector<StripeFrame>& ramp_turned,
+                                     const RampBlock& block,
                                      const ScannerParameters& nominal,
                                      const ScannerCalibration& calibration,
                                      const StripeExtractionParameters& extraction) {
@@ -126,38 +175,46 @@ BeltCalibrationResult calibrate_belt(const std::vector<StripeFrame>& empty_belt,
   ScannerCalibration mounted = calibration;
   mounted.mount = result.mount;
   const TriangulationGeometry geometry = calibrated_triangulation_geometry(nominal, mounted);
-  const double rise = block.high_height_mm - block.low_height_mm;
-  const double low = block.low_height_mm + 0.15 * rise;
-  const double high = block.high_height_mm - 0.15 * rise;
-  for (const StripeFrame& frame : ramp) {
-    std::vector<double> heights;
-    for (const Eigen::Vector3d& p :
-         stripe_scanner_points(frame.image, frame.roi_top_px, geometry, extraction))
-      if (p.z() > 0.5 * block.low_height_mm) heights.push_back(p.z());
-    if (heights.size() < 20) continue;
-    const double height = median(std::move(heights));
-    if (height > low && height < high)
-      result.ramp_ticks_height.emplace_back(static_cast<double>(frame.encoder_ticks), height);
-  }
-  if (result.ramp_ticks_height.size() < 5) {
-    std::snprintf(reason, sizeof reason,
-                  "ramp block: %zu frames see its slope (heights %.1f to %.1f mm), at least 5 "
-                  "needed: is it the block of the target file?",
-                  result.ramp_ticks_height.size(), low, high);
-    result.reason = reason;
+  RampScan scan = fit_ramp_scan(ramp, block, geometry, extraction);
+  if (!scan.reason.empty()) {
+    result.reason = "ramp block: " + scan.reason;
     return result;
   }
-  const Eigen::Vector2d ramp_line =
-      fit_straight_line(result.ramp_ticks_height, &result.ramp_rms_mm);
-  result.encoder_mm_per_tick = std::abs(ramp_line(1)) / block.rise_per_mm();
-  if (result.ramp_rms_mm > 0.5) {
-    std::snprintf(reason, sizeof reason,
-                  "ramp block: its heights leave a straight line by %.2f mm RMS: not a ramp of "
-                  "the target file's shape",
-                  result.ramp_rms_mm);
-    result.reason = reason;
+  result.ramp_ticks_height = std::move(scan.ticks_height);
+  result.ramp_rms_mm = scan.rms_mm;
+  const double rise = block.rise_per_mm();
+  if (ramp_turned.empty()) {
+    result.encoder_mm_per_tick = std::abs(scan.slope_mm_per_tick) / rise;
+    result.ok = true;
     return result;
   }
+  RampScan turned = fit_ramp_scan(ramp_turned, block, geometry, extraction);
+  if (!turned.reason.empty()) {
+    result.reason = "turned ramp block: " + turned.reason;
+    return result;
+  }
+  result.ramp_turned_ticks_height = std::move(turned.ticks_height);
+  result.ramp_turned_rms_mm = turned.rms_mm;
+  // The top z = a + b·y (b = ±rise) met by the sheet from its foot at y = −m·ticks: its
+  // in-sheet height s solves s·cos p = a + b·(y + s·sin p), so ds/dticks = −b·m / (cos p −
+  // b·sin p). The block as drawn (high end downstream, b = +rise) falls with the ticks, turned
+  // round it rises; with k the two slopes, 1/k_up − 1/k_down = 2·cos p / (rise·m) and
+  // 1/k_up + 1/k_down = 2·sin p / m.
+  const bool drawn_first = scan.slope_mm_per_tick < 0.0;
+  const double k_down = drawn_first ? scan.slope_mm_per_tick : turned.slope_mm_per_tick;
+  const double k_up = drawn_first ? turned.slope_mm_per_tick : scan.slope_mm_per_tick;
+  if (!(k_down < 0.0 && k_up > 0.0)) {
+    result.reason =
+        "ramp block: both scans' heights change the same way with the encoder: turn the block "
+        "round for the second scan";
+    return result;
+  }
+  const double difference = 1.0 / k_up - 1.0 / k_down;
+  const double sum = 1.0 / k_up + 1.0 / k_down;
+  const double pitch = std::atan2(sum, difference * rise);
+  result.sheet_pitch_deg = pitch * kDegPerRad;
+  result.pitch_measured = true;
+  result.encoder_mm_per_tick = 2.0 * std::cos(pitch) / (rise * difference);
   result.ok = true;
   return result;
 }

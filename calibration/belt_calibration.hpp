@@ -6,13 +6,16 @@
 // design defines it (scanner/scanner_model.hpp): y the laser plane's normal (away from the
 // camera: the direction of travel), x along the belt's line (the sensor's columns' way),
 // z = x × y up from the belt, the origin on the belt's line below where the optical axis meets
-// the sheet. The sheet is taken as square to the belt: its tilt along the travel is not
-// observable from a line of the belt.
+// the sheet. z runs up the sheet: a line of the belt cannot show the sheet's tilt along the
+// travel (its pitch), the ramp below does.
 //
-// Encoder: the ramp block (calibration_targets.hpp) carried through the sheet; its top's
-// height in each frame (the median of the points above the belt) rises by
-// rise_per_mm · mm_per_tick per tick, so a straight-line fit of height against encoder count
-// over the ramp's middle gives mm_per_tick.
+// Encoder and pitch: the ramp block (calibration_targets.hpp) carried through the sheet; its
+// top's height in each frame (the median of the points above the belt) changes linearly with
+// the encoder count. With an upright sheet it changes by rise_per_mm · mm_per_tick per tick.
+// A pitched sheet meets the slope higher or lower up as it leans with or against it, which
+// scales that slope by a factor the scale of the encoder cannot be told from in one scan: the
+// block scanned a second time turned round (its slope the other way) separates the two, and
+// gives mm_per_tick and the pitch in closed form. With one scan the sheet is taken as upright.
 //
 // Reported against the belt: the camera's roll about the travel direction, its height above
 // the belt, and the residual belt plane in the new frame (written to conditioning:).
@@ -38,13 +41,20 @@ struct BeltCalibrationResult {
   double belt_slope_x = 0.0;
   double belt_rms_mm = 0.0;                          // belt points about that plane
   double ramp_rms_mm = 0.0;                          // ramp heights about their line
+  double ramp_turned_rms_mm = 0.0;                   // the same, the block turned round
+  bool pitch_measured = false;                       // the turned block was scanned
+  double sheet_pitch_deg = 0.0;  // the sheet leans downstream with height (sheet_pitch.hpp)
   std::vector<Eigen::Vector3d> belt_points_scanner;  // for the report
   std::vector<Eigen::Vector2d> ramp_ticks_height;    // (ticks, height) of each used frame
+  std::vector<Eigen::Vector2d> ramp_turned_ticks_height;
 };
 
 // `camera` and `laser` calibrated; `nominal` supplies the designed camera where uncalibrated.
+// `ramp_turned`: the block scanned again turned round on the belt, or empty (no pitch).
 BeltCalibrationResult calibrate_belt(const std::vector<StripeFrame>& empty_belt,
-                                     const std::vector<StripeFrame>& ramp, const RampBlock& block,
+                                     const std::vector<StripeFrame>& ramp,
+                                     const std::vector<StripeFrame>& ramp_turned,
+                                     const RampBlock& block,
                                      const ScannerParameters& nominal,
                                      const ScannerCalibration& calibration,
                                      const StripeExtractionParameters& extraction);

@@ -37,17 +37,21 @@ std::vector<Cluster> group_spheres(const std::vector<Eigen::Vector3d>& points, d
 CellFrameResult calibrate_cell_frame(const std::vector<StripeFrame>& frames,
                                      const SpherePlate& plate,
                                      const TriangulationGeometry& geometry, double mm_per_tick,
+                                     double sheet_pitch_deg,
                                      const StripeExtractionParameters& extraction,
                                      const CellFrameSettings& settings) {
   CellFrameResult result;
   char reason[240];
   // Only the caps: the sphere's flanks near the plate are seen at grazing angles.
   const double cap_floor_mm = plate.plate_height_mm + 2.0;
+  const SheetPitch pitch(sheet_pitch_deg);
   for (const StripeFrame& frame : frames) {
-    const double y_belt = -static_cast<double>(frame.encoder_ticks) * mm_per_tick;
+    const double foot_y = -static_cast<double>(frame.encoder_ticks) * mm_per_tick;
     for (const Eigen::Vector3d& p :
-         stripe_scanner_points(frame.image, frame.roi_top_px, geometry, extraction))
-      if (p.z() > cap_floor_mm) result.points_belt.emplace_back(p.x(), y_belt, p.z());
+         stripe_scanner_points(frame.image, frame.roi_top_px, geometry, extraction)) {
+      const Eigen::Vector3d belt = pitch.belt_point(p.x(), foot_y, p.z());
+      if (belt.z() > cap_floor_mm) result.points_belt.push_back(belt);
+    }
   }
   std::vector<Cluster> clusters = group_spheres(result.points_belt, plate.radius_mm);
   std::erase_if(clusters, [&](const Cluster& c) {

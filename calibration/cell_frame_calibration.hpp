@@ -1,7 +1,8 @@
 #pragma once
 // T_cell_scanner from a scan of the sphere plate (calibration_targets.hpp): the frames are
 // triangulated through the calibrated scanner, laid out along the belt by their encoder
-// counts (belt frame: y = −ticks · mm_per_tick at the sheet), the points above the plate
+// counts (belt frame: y = −ticks · mm_per_tick at the sheet's foot, each point up the
+// pitched sheet from there, scanner/sheet_pitch.hpp), the points above the plate
 // grouped into spheres, each sphere's centre fitted with the known radius, carried to the
 // belt position of the target file's encoder count, and matched to the file's cell-frame
 // centres by the rigid fit of least residual over every pairing.
@@ -12,6 +13,7 @@
 #include "calibration/stripe_frame.hpp"
 #include "core/rigid_transform.hpp"
 #include "firmware_bridge/laser_stripe_extraction.hpp"
+#include "scanner/sheet_pitch.hpp"
 #include "scanner/triangulation_geometry.hpp"
 
 namespace cosmos {
@@ -36,6 +38,7 @@ struct CellFrameResult {
 CellFrameResult calibrate_cell_frame(const std::vector<StripeFrame>& frames,
                                      const SpherePlate& plate,
                                      const TriangulationGeometry& geometry, double mm_per_tick,
+                                     double sheet_pitch_deg,
                                      const StripeExtractionParameters& extraction,
                                      const CellFrameSettings& settings = {});
 

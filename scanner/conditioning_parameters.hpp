@@ -19,6 +19,9 @@ struct ConditioningParameters {
   // Above the belt: part; below: background. The one belt threshold of live scans and of the
   // model views (the model-base build scans them with it).
   double height_threshold_mm = 0.5;
+  // A pitched laser sheet (scanner/sheet_pitch.hpp): rows are de-sheared by height · tan.
+  double sheet_pitch_deg = 0.0;
+  double max_height_mm = 200.0;
   // The depth jump across which samples are never interpolated is not a parameter of the
   // conditioning: it is the COSMOS fit's (cosmos.fit.depth_jump_mm, recorded in the model
   // base), given to the ProfileConditioner beside these.
@@ -35,6 +38,12 @@ struct ConditioningParameters {
     v("belt_slope_x", belt_slope_x, "belt plane slope across the belt", Range{-10, 10});
     v("height_threshold_mm", height_threshold_mm,
       "less above the belt is background, mm (live scans and model views)", Range{0, 1e4});
+    v("sheet_pitch_deg", sheet_pitch_deg,
+      "laser sheet's tilt along the travel from the belt normal, deg (positive: leaning "
+      "downstream with height); rows are de-sheared by height · tan",
+      Range{-10, 10});
+    v("max_height_mm", max_height_mm, "the tallest surface the de-shear reaches, mm",
+      Range::above(0, 1e4));
     v.retired("depth_jump_mm",
               "cosmos.fit.depth_jump_mm, which the cell takes from its model base");
   }

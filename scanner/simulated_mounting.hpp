@@ -5,7 +5,8 @@
 // with another, as a real uncalibrated cell does. All defaults: the design itself.
 //
 // The belt frame stays the designed scanner frame (belt z = 0, laser sheet y = 0, the sheet
-// across the belt): the errors move the camera against it.
+// across the belt): the errors move the camera against it, except the pitch, which tilts the
+// whole scanner head (camera and laser together) against the belt.
 //   laser_plane_tilt_deg  the camera turned about the sheet's x axis through the origin:
 //                         the laser plane in the camera frame is off by this angle
 //   roll_deg              the camera turned about the belt's travel (y) through the origin:
@@ -16,6 +17,11 @@
 //   field_of_view_mm      the field the camera was designed for (0: the told one), which the
 //                         design's focal length follows: a calibrated cell resamples its
 //                         profiles to its own grid (scanner.field_of_view_mm), the lens stays
+//   sheet_pitch_deg       the scanner head turned about the belt's x axis through the origin:
+//                         the laser sheet leans downstream with height by this angle, so a
+//                         point the sheet lights at in-sheet height s lies s · sin(pitch)
+//                         downstream of the sheet's foot and s · cos(pitch) above the belt
+//                         (the cell de-shears its rows by it, conditioning.sheet_pitch_deg)
 //   T_cell_scanner        where the scanner really is in the robot's frame
 // The absolute values keep the simulated cell the same physical cell while `cosmos calibrate`
 // rewrites the scanner: keys it was told.
@@ -36,6 +42,7 @@ struct SimulatedMounting {
   double k1 = 0.0;
   double encoder_mm_per_tick = 0.0;
   double field_of_view_mm = 0.0;
+  double sheet_pitch_deg = 0.0;
   RigidTransform T_cell_scanner;
 
   template <class Visitor>
@@ -56,6 +63,10 @@ struct SimulatedMounting {
       "true belt travel per encoder tick, mm (0: scanner.encoder_mm_per_tick)", Range{0, 100});
     v("field_of_view_mm", field_of_view_mm,
       "field the true camera was designed for, mm (0: scanner.field_of_view_mm)", Range{0, 5000});
+    v("sheet_pitch_deg", sheet_pitch_deg,
+      "true tilt of the scanner head about the belt's x axis: the laser sheet leans downstream "
+      "with height, deg",
+      Range{-10, 10});
     v("T_cell_scanner", T_cell_scanner,
       "true scanner frame in the cell frame: rotation_deg [rx, ry, rz], translation_mm");
   }

@@ -34,7 +34,7 @@ done
 "$cosmos" calibrate laser --views "$work/frames/laser" --hardware "$work/hw-b.yaml" \
   --report "$work/report/laser" > /dev/null
 "$cosmos" calibrate belt --belt "$work/frames/belt" --block "$work/frames/block" \
-  --target "$work/frames/ramp.yaml" --hardware "$work/hw-b.yaml" --config "$work/cell-b.yaml" \
+  --block-turned "$work/frames/block-turned" --target "$work/frames/ramp.yaml" --hardware "$work/hw-b.yaml" --config "$work/cell-b.yaml" \
   --report "$work/report/belt" > /dev/null
 "$cosmos" calibrate cell --scan "$work/frames/spheres" --target "$work/frames/spheres.yaml" \
   --hardware "$work/hw-b.yaml" --config "$work/cell-b.yaml" --report "$work/report/cell" > /dev/null

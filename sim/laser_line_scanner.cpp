@@ -24,9 +24,10 @@ constexpr double kBeltToleranceMm = 1e-4;
 }  // namespace
 
 LaserLineScanner::LaserLineScanner(const ConveyorScene& scene, const ScannerParameters& parameters,
-                                   int samples)
+                                   int samples, double sheet_pitch_deg)
     : scene_(scene),
       parameters_(parameters),
+      pitch_(sheet_pitch_deg),
       geometry_(scanner_triangulation_geometry(parameters)),
       samples_(samples) {
   if (samples <= 0) throw std::invalid_argument("LaserLineScanner: samples must be > 0");
@@ -41,11 +42,14 @@ LaserLineScanner::LaserLineScanner(const ConveyorScene& scene, const ScannerPara
     const double x_mm =
         parameters.first_sample_x_mm(samples) + i * parameters.sample_spacing_mm(samples);
     const double cos_incidence =
-        parameters.laser_model == LaserModel::kFan
-            ? parameters.laser_height_mm / std::hypot(x_mm, parameters.laser_height_mm)
-            : 1.0;
-    belt_samples_[static_cast<std::size_t>(i)] = classify_lit_point(
-        Eigen::Vector3d(x_mm, 0.0, 0.0), Eigen::Vector3d::UnitZ(), cos_incidence);
+        (parameters.laser_model == LaserModel::kFan
+             ? parameters.laser_height_mm / std::hypot(x_mm, parameters.laser_height_mm)
+             : 1.0) *
+        pitch_.cos();
+    belt_samples_[static_cast<std::size_t>(i)] =
+        classify_lit_point(Eigen::Vector3d(x_mm, 0.0, 0.0),
+                           pitch_.R_belt_sheet().transpose() * Eigen::Vector3d::UnitZ(),
+                           cos_incidence);
   }
   normal_x_.resize(static_cast<std::size_t>(samples));
   normal_y_.resize(static_cast<std::size_t>(samples));
@@ -83,7 +87,7 @@ void LaserLineScanner::trace(double laser_y_belt_mm, LaserLine& line) {
   for (const PlacedPart& part : scene_.parts()) {
     double part_low = 0.0;
     double part_high = 0.0;
-    if (!part.height_bounds.x_extent(laser_y_belt_mm, part_low, part_high)) continue;
+    if (!sheet_x_extent(part, laser_y_belt_mm, part_low, part_high)) continue;
     x_low = std::min(x_low, part_low);
     x_high = std::max(x_high, part_high);
     top_z_mm = std::max(top_z_mm, part.bounds_mm.max().z() + 1.0);
@@ -99,12 +103,37 @@ void LaserLineScanner::trace(double laser_y_belt_mm, LaserLine& line) {
   trace_camera_occlusion(laser_y_belt_mm, line);
 }
 
+bool LaserLineScanner::sheet_x_extent(const PlacedPart& part, double y_mm, double& low_mm,
+                                      double& high_mm) const {
+  if (!pitch_.pitched()) return part.height_bounds.x_extent(y_mm, low_mm, high_mm);
+  // A pitched sheet crosses the belt over a span of y up to the part's top: the part's box
+  // is a safe bound wherever that span meets it.
+  const double lean_mm = (part.bounds_mm.max().z() + 1.0) * pitch_.sin() / pitch_.cos();
+  const double y_low = std::min(y_mm, y_mm + lean_mm);
+  const double y_high = std::max(y_mm, y_mm + lean_mm);
+  if (y_high < part.bounds_mm.min().y() || y_low > part.bounds_mm.max().y()) return false;
+  low_mm = part.bounds_mm.min().x();
+  high_mm = part.bounds_mm.max().x();
+  return true;
+}
+
+Eigen::Vector3d LaserLineScanner::camera_belt_mm(double y_mm) const {
+  // The camera rides with the scanner: in the belt frame it is where the sheet frame puts it,
+  // from the sheet's foot.
+  return pitch_.R_belt_sheet() * geometry_.t_scanner_camera_mm + Eigen::Vector3d(0.0, y_mm, 0.0);
+}
+
 void LaserLineScanner::probe_top_surface(double y_mm, int first, int end, double top_z_mm,
                                          LaserLine& line) {
   const EmbreeScene& embree = scene_.embree();
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  // Down the sheet from its point at in-sheet height top_s_mm: the ray's length is the
+  // in-sheet height it descends.
+  const double top_s_mm = top_z_mm / pitch_.cos();
+  const Eigen::Vector3d top = pitch_.belt_point(0.0, y_mm, top_s_mm);
+  const Eigen::Vector3d up = pitch_.up_belt();
   for (int base = first; base < end; base += kPacket) {
     alignas(32) int valid[kPacket];
     RTCRayHit8 packet;
@@ -112,13 +141,15 @@ void LaserLineScanner::probe_top_surface(double y_mm, int first, int end, double
       const int i = base + k;
       valid[k] = i < end ? -1 : 0;
       packet.ray.org_x[k] = static_cast<float>(line.x_mm(i));
-      packet.ray.org_y[k] = static_cast<float>(y_mm);
-      packet.ray.org_z[k] = static_cast<float>(top_z_mm);
+      packet.ray.org_y[k] = static_cast<float>(top.y());
+      packet.ray.org_z[k] = static_cast<float>(top.z());
       packet.ray.dir_x[k] = 0.0f;
-      packet.ray.dir_y[k] = 0.0f;
-      packet.ray.dir_z[k] = -1.0f;
+      // 0 − u rather than −u: an unpitched sheet's ray keeps +0 across, not −0, so its
+      // traversal (Embree takes 1/dir) is the vertical probe's to the bit.
+      packet.ray.dir_y[k] = static_cast<float>(0.0 - up.y());
+      packet.ray.dir_z[k] = static_cast<float>(0.0 - up.z());
       packet.ray.tnear[k] = 0.0f;
-      packet.ray.tfar[k] = static_cast<float>(top_z_mm - kBeltToleranceMm);
+      packet.ray.tfar[k] = static_cast<float>(top_s_mm - kBeltToleranceMm);
       packet.ray.time[k] = 0.0f;
       packet.ray.mask[k] = 0xFFFFFFFFu;
       packet.ray.id[k] = static_cast<unsigned>(k);
@@ -130,13 +161,14 @@ void LaserLineScanner::probe_top_surface(double y_mm, int first, int end, double
     for (int k = 0; k < kPacket && base + k < end; ++k) {
       if (packet.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) continue;
       const auto i = static_cast<std::size_t>(base + k);
-      const float z = static_cast<float>(top_z_mm - static_cast<double>(packet.ray.tfar[k]));
+      const float z = static_cast<float>(top_s_mm - static_cast<double>(packet.ray.tfar[k]));
       line.z_mm[i] = z;
       Eigen::Vector3d normal = embree.world_normal(
           EmbreeScene::hit_instance(packet.hit.geomID[k], packet.hit.instID[0][k]),
           packet.hit.Ng_x[k], packet.hit.Ng_y[k], packet.hit.Ng_z[k]);
-      // The probe comes from above, so the surface it met faces up, whatever the winding.
-      if (normal.z() < 0.0) normal = -normal;
+      // The probe comes from above, so the surface it met faces up the sheet, whatever the
+      // winding.
+      if (normal.dot(up) < 0.0) normal = -normal;
       normal_x_[i] = static_cast<float>(normal.x());
       normal_y_[i] = static_cast<float>(normal.y());
       normal_z_[i] = static_cast<float>(normal.z());
@@ -200,10 +232,9 @@ LaserLineScanner::LitPoint LaserLineScanner::classify_lit_point(
 
 void LaserLineScanner::classify(double y_mm, LaserLine& line) {
   occlusion_candidates_.clear();
-  const Eigen::Vector3d source_mm(0.0, y_mm, parameters_.laser_height_mm);
-  // The camera rides with the scanner: in the belt frame it is as far upstream of the sheet
-  // as in the scanner frame (the sheet is y_scanner = 0, here y_belt = y_mm).
-  const Eigen::Vector3d camera_mm = geometry_.t_scanner_camera_mm + Eigen::Vector3d(0.0, y_mm, 0.0);
+  const Eigen::Vector3d source_mm = pitch_.belt_point(0.0, y_mm, parameters_.laser_height_mm);
+  const Eigen::Vector3d camera_mm = camera_belt_mm(y_mm);
+  const Eigen::Matrix3d R_sheet_belt = pitch_.R_belt_sheet().transpose();
   const auto& parts = scene_.parts();
   belt_sights_.clear();
   std::fill(belt_sight_marks_.begin(), belt_sight_marks_.end(), 0);
@@ -226,12 +257,12 @@ void LaserLineScanner::classify(double y_mm, LaserLine& line) {
     LitPoint lit = belt_samples_[s];
     if (!on_belt) {
       const Eigen::Vector3d normal(normal_x_[s], normal_y_[s], normal_z_[s]);
-      const Eigen::Vector3d point_mm(line.x_mm(i), y_mm, line.z_mm[s]);
+      const Eigen::Vector3d point_mm = pitch_.belt_point(line.x_mm(i), y_mm, line.z_mm[s]);
       const double cos_incidence = parameters_.laser_model == LaserModel::kFan
                                        ? -normal.dot((point_mm - source_mm).normalized())
-                                       : normal.z();
-      lit = classify_lit_point(Eigen::Vector3d(point_mm.x(), 0.0, point_mm.z()), normal,
-                               cos_incidence);
+                                       : normal.dot(pitch_.up_belt());
+      lit = classify_lit_point(Eigen::Vector3d(line.x_mm(i), 0.0, line.z_mm[s]),
+                               R_sheet_belt * normal, cos_incidence);
     }
     line.state[s] = lit.state;
     line.intensity[s] = lit.intensity;
@@ -255,7 +286,7 @@ void LaserLineScanner::classify(double y_mm, LaserLine& line) {
 }
 
 void LaserLineScanner::trace_camera_occlusion(double y_mm, LaserLine& line) {
-  const Eigen::Vector3d camera_mm = geometry_.t_scanner_camera_mm + Eigen::Vector3d(0.0, y_mm, 0.0);
+  const Eigen::Vector3d camera_mm = camera_belt_mm(y_mm);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
@@ -270,7 +301,7 @@ void LaserLineScanner::trace_camera_occlusion(double y_mm, LaserLine& line) {
           used ? occlusion_candidates_[static_cast<std::size_t>(base + k)] : 0);
       const Eigen::Vector3d normal(normal_x_[s], normal_y_[s], normal_z_[s]);
       const Eigen::Vector3d origin =
-          Eigen::Vector3d(line.x_mm(static_cast<int>(s)), y_mm, line.z_mm[s]) +
+          pitch_.belt_point(line.x_mm(static_cast<int>(s)), y_mm, line.z_mm[s]) +
           kSurfaceOffsetMm * normal;
       const Eigen::Vector3d direction = camera_mm - origin;
       packet.org_x[k] = static_cast<float>(origin.x());

@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "scanner/scanner_model.hpp"
+#include "scanner/sheet_pitch.hpp"
 #include "scanner/triangulation_geometry.hpp"
 #include "sim/conveyor_scene.hpp"
 
@@ -48,7 +49,7 @@ enum class LaserSampleState : std::uint8_t {
 struct LaserLine {
   double x0_mm = 0.0;
   double dx_mm = 1.0;
-  std::vector<float> z_mm;       // top surface height (0 on the belt)
+  std::vector<float> z_mm;       // top surface height along the sheet (0 on the belt)
   std::vector<float> intensity;  // reflectivity · cos(incidence); 0 where unlit
   std::vector<float> u_px;       // camera image of the point, full-sensor pixels
   std::vector<float> v_px;
@@ -61,23 +62,29 @@ struct LaserLine {
 class LaserLineScanner {
  public:
   // `samples` points across the field of view. The scene must outlive the scanner and be
-  // committed before tracing.
-  LaserLineScanner(const ConveyorScene& scene, const ScannerParameters& parameters, int samples);
+  // committed before tracing. `sheet_pitch_deg` tilts the scanner head about the belt's x axis
+  // (scanner/sheet_pitch.hpp): the sheet, the source and the camera turn together, and the
+  // line's z_mm are in-sheet heights, as the scanner's own triangulation measures them.
+  LaserLineScanner(const ConveyorScene& scene, const ScannerParameters& parameters, int samples,
+                   double sheet_pitch_deg = 0.0);
 
   // Sizes `line` for this scanner once, so that trace() never allocates.
   void reserve(LaserLine& line) const;
   // The laser line when the sheet lies at y = laser_y_belt_mm in the belt frame
   // (laser_y_belt_mm(parameters, k) for profile k).
+  // With a pitched sheet, laser_y_belt_mm is the sheet's foot on the belt.
   void trace(double laser_y_belt_mm, LaserLine& line);
 
   const ScannerParameters& parameters() const { return parameters_; }
   const TriangulationGeometry& geometry() const { return geometry_; }
 
  private:
-  // Rays straight down from z = top_z_mm onto samples [first, end).
+  // Rays down the sheet from the height top_z_mm onto samples [first, end).
   void probe_top_surface(double y_mm, int first, int end, double top_z_mm, LaserLine& line);
+  // The x span of `part` the sheet can meet when its foot is at y_mm: false if none.
+  bool sheet_x_extent(const PlacedPart& part, double y_mm, double& low_mm, double& high_mm) const;
   void sweep_laser_horizon(LaserLine& line) const;
-  // What steps 3-6 make of a lit top point (scanner frame: the sheet is y = 0), camera
+  // What steps 3-6 make of a lit top point (sheet frame: the sheet is y = 0), camera
   // occlusion by the parts aside.
   struct LitPoint {
     LaserSampleState state = LaserSampleState::kMeasured;
@@ -90,8 +97,12 @@ class LaserLineScanner {
   void classify(double y_mm, LaserLine& line);
   void trace_camera_occlusion(double y_mm, LaserLine& line);
 
+  // The camera's centre in the belt frame when the sheet's foot is at y_mm.
+  Eigen::Vector3d camera_belt_mm(double y_mm) const;
+
   const ConveyorScene& scene_;
   ScannerParameters parameters_;
+  SheetPitch pitch_;
   TriangulationGeometry geometry_;
   int samples_ = 0;
   double cos_max_incidence_ = 0.0;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "sim/calibration_targets/board_image_renderer.hpp"
+#include "scanner/sheet_pitch.hpp"
 #include "sim/calibration_targets/target_stripe_renderer.hpp"
 #include "sim/seeded_random.hpp"
 
@@ -25,6 +26,55 @@ SurfacePoint belt_point() {
   point.reflectance = kBeltReflectance;
   return point;
 }
+
+// The surface a pitched sheet lights at one x: the laser comes down the sheet, so of the
+// surfaces the sheet's line meets, the one highest along it. Offered in any order; the belt
+// (in-sheet height 0) where none is met.
+class SheetHit {
+ public:
+  SheetHit(const SheetPitch& pitch, double x_mm, double foot_y_mm)
+      : pitch_(pitch), x_mm_(x_mm), foot_y_mm_(foot_y_mm), point_(belt_point()) {}
+
+  // A top z = a + b (y − y0) over y in [y_low, y_high].
+  void sloped_top(double a_mm, double b, double y0_mm, double y_low_mm, double y_high_mm,
+                  const Eigen::Vector3d& normal, double reflectance) {
+    const double s = (a_mm + b * (foot_y_mm_ - y0_mm)) / (pitch_.cos() - b * pitch_.sin());
+    const double y = foot_y_mm_ + s * pitch_.sin();
+    if (s >= 0.0 && y >= y_low_mm && y <= y_high_mm) offer(s, normal, reflectance);
+  }
+  // A vertical end face y = y_face from the belt up to height_mm, facing ±y (outward_y).
+  // An unpitched sheet never lights one: it is parallel to the face.
+  void end_face(double y_face_mm, double height_mm, double outward_y, double reflectance) {
+    if (!pitch_.pitched()) return;
+    const double s = (y_face_mm - foot_y_mm_) / pitch_.sin();
+    if (s >= 0.0 && s * pitch_.cos() <= height_mm)
+      offer(s, Eigen::Vector3d(0.0, outward_y, 0.0), reflectance);
+  }
+  void sphere(const Eigen::Vector3d& centre, double radius_mm, double reflectance) {
+    const Eigen::Vector3d up = pitch_.up_belt();
+    const Eigen::Vector3d d = centre - Eigen::Vector3d(x_mm_, foot_y_mm_, 0.0);
+    const double along = up.dot(d);
+    const double off_line2 = (d - along * up).squaredNorm();
+    if (off_line2 >= radius_mm * radius_mm) return;
+    const double s = along + std::sqrt(radius_mm * radius_mm - off_line2);
+    offer(s, (pitch_.belt_point(x_mm_, foot_y_mm_, s) - centre) / radius_mm, reflectance);
+  }
+
+  const SurfacePoint& point() const { return point_; }
+
+ private:
+  void offer(double s_mm, const Eigen::Vector3d& normal, double reflectance) {
+    if (s_mm <= point_.s_mm) return;
+    point_.s_mm = s_mm;
+    point_.normal = normal;
+    point_.reflectance = reflectance;
+  }
+
+  SheetPitch pitch_;
+  double x_mm_;
+  double foot_y_mm_;
+  SurfacePoint point_;
+};
 
 }  // namespace
 
@@ -50,6 +100,7 @@ CalibrationTruth CalibrationTargetSimulator::truth() const {
   truth.encoder_mm_per_tick = true_scanner_parameters(nominal_, mounting_).encoder_mm_per_tick;
   truth.T_cell_scanner = mounting_.T_cell_scanner;
   truth.roll_deg = mounting_.roll_deg;
+  truth.sheet_pitch_deg = mounting_.sheet_pitch_deg;
   truth.camera_height_mm = geometry_.t_scanner_camera_mm.z();
   return truth;
 }
@@ -151,7 +202,7 @@ std::vector<LaserImagePair> CalibrationTargetSimulator::laser_views(const Calibr
         point = belt_point();
         return true;
       }
-      point.z_mm = z;
+      point.s_mm = z;
       point.normal = normal.z() > 0 ? Eigen::Vector3d(normal) : Eigen::Vector3d(-normal);
       point.reflectance = reflectance / BoardImageRenderer::kWhiteLevel;
       return true;
@@ -180,26 +231,33 @@ std::vector<StripeFrame> CalibrationTargetSimulator::empty_belt_frames(int count
 }
 
 std::vector<StripeFrame> CalibrationTargetSimulator::ramp_frames(const RampBlock& block,
-                                                                 int ticks_between_frames) {
+                                                                 int ticks_between_frames,
+                                                                 RampPlacement placement) {
   const TriangulationGeometry designed = scanner_triangulation_geometry(nominal_);
   TargetStripeRenderer renderer(nominal_, geometry_, designed.roi_row_offset_px,
-                                designed.roi_height_px);
+                                designed.roi_height_px, mounting_.sheet_pitch_deg);
+  const SheetPitch pitch(mounting_.sheet_pitch_deg);
   const double mm_per_tick = true_scanner_parameters(nominal_, mounting_).encoder_mm_per_tick;
-  const double y_end = -kLeadMm;  // the block's downstream (high) end, belt frame
+  const double y_end = -kLeadMm;  // the block's downstream end, belt frame
   const double y_start = y_end - block.length_mm;
-  const double slope = block.rise_per_mm();
+  // Rising downstream, or turned round on the belt: rising upstream.
+  const bool reversed = placement == RampPlacement::kHighEndUpstream;
+  const double slope = reversed ? -block.rise_per_mm() : block.rise_per_mm();
+  const double start_height = reversed ? block.high_height_mm : block.low_height_mm;
+  const double end_height = start_height + slope * block.length_mm;
   const Eigen::Vector3d ramp_normal = Eigen::Vector3d(0.0, -slope, 1.0).normalized();
   std::vector<StripeFrame> frames;
   const auto last_tick = static_cast<std::int64_t>((2.0 * kLeadMm + block.length_mm) / mm_per_tick);
   for (std::int64_t tick = 0; tick <= last_tick; tick += ticks_between_frames) {
-    const double y_belt = -static_cast<double>(tick) * mm_per_tick;
+    const double foot_y = -static_cast<double>(tick) * mm_per_tick;
     const SheetProfile ramp = [&](double x, SurfacePoint& point) {
-      point = belt_point();
-      if (std::abs(x) < 0.5 * block.width_mm && y_belt >= y_start && y_belt <= y_end) {
-        point.z_mm = block.low_height_mm + slope * (y_belt - y_start);
-        point.normal = ramp_normal;
-        point.reflectance = 1.0;
+      SheetHit hit(pitch, x, foot_y);
+      if (std::abs(x) < 0.5 * block.width_mm) {
+        hit.sloped_top(start_height, slope, y_start, y_start, y_end, ramp_normal, 1.0);
+        hit.end_face(y_start, start_height, -1.0, 1.0);
+        hit.end_face(y_end, end_height, 1.0, 1.0);
       }
+      point = hit.point();
       return true;
     };
     frames.push_back({renderer.render(ramp, mix_seed(seed_, 0x4A3 + draws_++)),
@@ -211,34 +269,29 @@ std::vector<StripeFrame> CalibrationTargetSimulator::ramp_frames(const RampBlock
 SpherePlateScan CalibrationTargetSimulator::sphere_plate_scan(int ticks_between_frames) {
   const TriangulationGeometry designed = scanner_triangulation_geometry(nominal_);
   TargetStripeRenderer renderer(nominal_, geometry_, designed.roi_row_offset_px,
-                                designed.roi_height_px);
+                                designed.roi_height_px, mounting_.sheet_pitch_deg);
+  const SheetPitch pitch(mounting_.sheet_pitch_deg);
   const double mm_per_tick = true_scanner_parameters(nominal_, mounting_).encoder_mm_per_tick;
   SpherePlateScan scan;
   SpherePlate& plate = scan.plate;
   const double y_start = -kLeadMm - kPlateLengthMm;
+  const double y_end = y_start + kPlateLengthMm;
   std::vector<Eigen::Vector3d> centres_belt;
   for (const auto& [x, y] : kSpheresOnPlate)
     centres_belt.emplace_back(x, y_start + y, plate.plate_height_mm + plate.radius_mm);
-  const double r = plate.radius_mm;
   const auto last_tick = static_cast<std::int64_t>((2.0 * kLeadMm + kPlateLengthMm) / mm_per_tick);
   for (std::int64_t tick = 0; tick <= last_tick; tick += ticks_between_frames) {
-    const double y_belt = -static_cast<double>(tick) * mm_per_tick;
+    const double foot_y = -static_cast<double>(tick) * mm_per_tick;
     const SheetProfile plate_profile = [&](double x, SurfacePoint& point) {
-      point = belt_point();
-      if (std::abs(x) > 0.5 * kPlateWidthMm || y_belt < y_start ||
-          y_belt > y_start + kPlateLengthMm)
-        return true;
-      point.z_mm = plate.plate_height_mm;
-      point.reflectance = 0.8;
-      for (const Eigen::Vector3d& c : centres_belt) {
-        const double d2 = (x - c.x()) * (x - c.x()) + (y_belt - c.y()) * (y_belt - c.y());
-        if (d2 >= r * r) continue;
-        const double z = c.z() + std::sqrt(r * r - d2);
-        if (z <= point.z_mm) continue;
-        point.z_mm = z;
-        point.normal = (Eigen::Vector3d(x, y_belt, z) - c) / r;
-        point.reflectance = 1.0;
+      SheetHit hit(pitch, x, foot_y);
+      if (std::abs(x) <= 0.5 * kPlateWidthMm) {
+        hit.sloped_top(plate.plate_height_mm, 0.0, y_start, y_start, y_end,
+                       Eigen::Vector3d::UnitZ(), 0.8);
+        hit.end_face(y_start, plate.plate_height_mm, -1.0, 0.8);
+        hit.end_face(y_end, plate.plate_height_mm, 1.0, 0.8);
+        for (const Eigen::Vector3d& c : centres_belt) hit.sphere(c, plate.radius_mm, 1.0);
       }
+      point = hit.point();
       return true;
     };
     scan.frames.push_back({renderer.render(plate_profile, mix_seed(seed_, 0x5F3 + draws_++)),

@@ -7,6 +7,7 @@
 //   laser:  board image + stripe image pairs, the board held at several heights and tilts
 //           across the laser sheet
 //   belt:   stripe frames of the empty belt, and of the ramp block carried through the sheet
+//           (either way round)
 //   cell:   stripe frames of the sphere plate carried through the sheet, and the plate's
 //           target description with the centres the robot would touch (true T_cell_scanner)
 // Belt and cell frames are the designed ROI's rows, as the cell's camera delivers them;
@@ -51,8 +52,13 @@ struct CalibrationTruth {
   double encoder_mm_per_tick = 0.0;
   RigidTransform T_cell_scanner;
   double roll_deg = 0.0;
+  double sheet_pitch_deg = 0.0;
   double camera_height_mm = 0.0;
 };
+
+// How the ramp block lies on the belt: as its target file draws it, or turned round (the
+// belt calibration scans both to tell the sheet's pitch from the encoder's scale).
+enum class RampPlacement : std::uint8_t { kHighEndDownstream, kHighEndUpstream };
 
 class CalibrationTargetSimulator {
  public:
@@ -67,7 +73,9 @@ class CalibrationTargetSimulator {
   std::vector<BoardImage> board_images(const CalibrationBoard& board, int count);
   std::vector<LaserImagePair> laser_views(const CalibrationBoard& board, int count);
   std::vector<StripeFrame> empty_belt_frames(int count);
-  std::vector<StripeFrame> ramp_frames(const RampBlock& block, int ticks_between_frames);
+  std::vector<StripeFrame> ramp_frames(
+      const RampBlock& block, int ticks_between_frames,
+      RampPlacement placement = RampPlacement::kHighEndDownstream);
   SpherePlateScan sphere_plate_scan(int ticks_between_frames);
 
   // The sphere plate's designed layout: plate width and length (mm), and sphere positions

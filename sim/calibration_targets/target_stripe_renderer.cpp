@@ -6,8 +6,8 @@ namespace cosmos {
 
 TargetStripeRenderer::TargetStripeRenderer(const ScannerParameters& scanner,
                                            const TriangulationGeometry& true_geometry,
-                                           int roi_top_px, int rows_px)
-    : scanner_(scanner), geometry_(true_geometry) {
+                                           int roi_top_px, int rows_px, double sheet_pitch_deg)
+    : scanner_(scanner), geometry_(true_geometry), pitch_(sheet_pitch_deg) {
   TriangulationGeometry drawing = geometry_;
   drawing.roi_row_offset_px = roi_top_px;
   drawing.roi_height_px = rows_px;
@@ -34,12 +34,13 @@ cv::Mat TargetStripeRenderer::render(const SheetProfile& profile, std::uint64_t 
     line_.state[s] = LaserSampleState::kOutOfRange;
     SurfacePoint point;
     if (!profile(line_.x_mm(i), point)) continue;
-    const Eigen::Vector3d p(line_.x_mm(i), 0.0, point.z_mm);
+    const Eigen::Vector3d p(line_.x_mm(i), 0.0, point.s_mm);
+    const Eigen::Vector3d normal_sheet = pitch_.R_belt_sheet().transpose() * point.normal;
     Eigen::Vector2d uv;
-    if (point.normal.dot(camera_centre - p) <= 0.0 || !geometry_.project_to_image(p, uv)) continue;
-    // The laser comes down the sheet: Lambertian in the vertical incidence.
-    const double intensity = point.reflectance * std::abs(point.normal.z());
-    line_.z_mm[s] = static_cast<float>(point.z_mm);
+    if (normal_sheet.dot(camera_centre - p) <= 0.0 || !geometry_.project_to_image(p, uv)) continue;
+    // The laser comes down the sheet: Lambertian in the incidence along it.
+    const double intensity = point.reflectance * std::abs(normal_sheet.z());
+    line_.z_mm[s] = static_cast<float>(point.s_mm);
     line_.u_px[s] = static_cast<float>(uv.x());
     line_.v_px[s] = static_cast<float>(uv.y());
     line_.intensity[s] = static_cast<float>(intensity);

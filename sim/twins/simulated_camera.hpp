@@ -39,10 +39,11 @@
 // (follow_laser_enable): with it inactive a frame shows the belt under ambient light and no
 // stripe, as a calibration's board image does.
 // True geometry (scanner/simulated_mounting.hpp): a mounting that moves the camera re-projects
-// each lit belt-frame point through the true camera before drawing, so the frames are what
-// a mis-mounted scanner sees while the cell triangulates with the geometry it is told. Which
+// each lit point through the true camera before drawing, so the frames are what a
+// mis-mounted scanner sees while the cell triangulates with the geometry it is told. Which
 // points are lit and seen stays the designed camera's call: the true one is a fraction of a
-// degree away.
+// degree away. A pitched scanner head (sheet_pitch_deg) tilts the traced sheet itself, with
+// the camera and source riding on it.
 #include <cstdint>
 #include <memory>
 #include <opencv2/core/mat.hpp>

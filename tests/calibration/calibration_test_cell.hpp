@@ -19,6 +19,7 @@ inline SimulatedMounting mis_mounted_cell() {
   truth.principal_shift_v_px = -4.0;
   truth.k1 = -0.2;
   truth.encoder_mm_per_tick = 0.102;
+  truth.sheet_pitch_deg = 0.5;
   truth.T_cell_scanner.rotation = rotation_from_xyz_angles_deg(0.8, -0.6, 91.0);
   truth.T_cell_scanner.translation_mm = Eigen::Vector3d(850.0, -420.0, 310.0);
   return truth;
