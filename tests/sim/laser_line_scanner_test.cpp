@@ -263,5 +263,35 @@ TEST(LaserLineScanner, APartsLineDoesNotDependOnTheOtherPartsOnTheBelt) {
   EXPECT_GT(lit, 1000);  // the ball was scanned
 }
 
+// A pitched scanner head (the sheet leaning downstream by p): the sheet meets a box's top at
+// in-sheet height h / cos p, h · tan p upstream of where an upright sheet first meets it; past
+// the box's downstream edge the leaning sheet's lower part still lights the +y face, at the
+// in-sheet height where the sheet crosses it.
+TEST(LaserLineScanner, APitchedSheetMeetsABoxWhereItsLeanPutsIt) {
+  const double height_mm = 10.0;
+  const double pitch_deg = 3.0;
+  const double lean_mm = height_mm * std::tan(pitch_deg * kDegree);
+  const auto scene =
+      single_part_scene(make_box(40.0, 40.0, height_mm), Eigen::Matrix3d::Identity());
+  const ScannerParameters parameters;
+  LaserLineScanner scanner(*scene, parameters, parameters.points_per_profile, pitch_deg);
+  LaserLine line;
+  scanner.reserve(line);
+  const std::size_t centre = static_cast<std::size_t>(std::lround(-line.x0_mm / line.dx_mm));
+  const auto height_at_centre = [&](double foot_y_mm) {
+    scanner.trace(foot_y_mm, line);
+    return static_cast<double>(line.z_mm[centre]);
+  };
+  const double top_s_mm = height_mm / std::cos(pitch_deg * kDegree);
+  EXPECT_EQ(height_at_centre(-20.0 - lean_mm - 0.2), 0.0);
+  EXPECT_NEAR(height_at_centre(-20.0 - lean_mm + 0.2), top_s_mm, 1e-3);
+  EXPECT_NEAR(height_at_centre(0.0 - lean_mm), top_s_mm, 1e-3);
+  EXPECT_NEAR(height_at_centre(20.0 - lean_mm - 0.2), top_s_mm, 1e-3);
+  // Past the edge: the sheet crosses the face y = 20 at s = (20 − foot) / sin p.
+  const double foot_mm = 20.0 - lean_mm + 0.2;
+  EXPECT_NEAR(height_at_centre(foot_mm), (20.0 - foot_mm) / std::sin(pitch_deg * kDegree), 1e-2);
+  EXPECT_EQ(height_at_centre(20.0 + 0.2), 0.0);
+}
+
 }  // namespace
 }  // namespace cosmos
