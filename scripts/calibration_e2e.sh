@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The calibration end to end (docs/calibration.md): the deliberately mis-mounted simulated
-# cell of config/cell-miscalibrated.yaml (laser plane 1° off, scanner rolled 0.5°, encoder
-# 2 % off, T_cell_scanner unknown) runs `cosmos calibrate check` (the cell on the hardware
+# cell of config/cell-miscalibrated.yaml (laser plane 1° off, scanner rolled 0.5° and pitched
+# 0.5°, encoder 2 % off, T_cell_scanner unknown) runs `cosmos calibrate check` (the cell on the hardware
 # twins, poses against the ground truth in the cell frame) three times:
 #   (a) told the design, as an uncalibrated cell is;
 #   (b) after `cosmos calibrate simulate` and the four `cosmos calibrate` steps on its frames;
