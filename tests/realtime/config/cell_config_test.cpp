@@ -58,6 +58,9 @@ TEST_F(CellConfigFile, ShippedConfigHoldsTheDocumentedDefaults) {
   EXPECT_EQ(c.belt_height_mm, defaults.conditioning.belt_height_mm);
   EXPECT_EQ(c.belt_slope_x, defaults.conditioning.belt_slope_x);
   EXPECT_EQ(c.height_threshold_mm, defaults.conditioning.height_threshold_mm);
+  EXPECT_EQ(c.sheet_pitch_deg, 0.0);  // an upright sheet: no de-shear
+  EXPECT_EQ(c.sheet_pitch_deg, defaults.conditioning.sheet_pitch_deg);
+  EXPECT_EQ(c.max_height_mm, defaults.conditioning.max_height_mm);
 
   const TrackingSettings& t = config.tracking;
   EXPECT_EQ(t.tracker.max_open_parts, 8);
