@@ -19,12 +19,18 @@ struct ConditioningParameters {
   // Above the belt: part; below: background. The one belt threshold of live scans and of the
   // model views (the model-base build scans them with it).
   double height_threshold_mm = 0.5;
-  // A pitched laser sheet (scanner/sheet_pitch.hpp): rows are de-sheared by height · tan.
-  double sheet_pitch_deg = 0.0;
-  double max_height_mm = 200.0;
   // The depth jump across which samples are never interpolated is not a parameter of the
   // conditioning: it is the COSMOS fit's (cosmos.fit.depth_jump_mm, recorded in the model
   // base), given to the ProfileConditioner beside these.
+
+  // The live scanner's laser sheet, tilted about x by this angle from the belt normal: a
+  // sample at in-sheet height s lies s·sin p along the belt from the sheet's foot, so the
+  // rows are de-sheared (realtime/loop/sheet_deshear.hpp). It describes the live scanner only:
+  // the model views are rendered with an upright sheet, and the model base does not record it.
+  double sheet_pitch_deg = 0.0;
+  // The tallest surface the de-shear reaches: its window, and so the rows it delays the loop
+  // by, grows with it. Higher samples are dropped (no data) and counted.
+  double max_height_mm = 200.0;
 
   template <class Visitor>
   void visit(Visitor& v) {
@@ -40,9 +46,12 @@ struct ConditioningParameters {
       "less above the belt is background, mm (live scans and model views)", Range{0, 1e4});
     v("sheet_pitch_deg", sheet_pitch_deg,
       "laser sheet's tilt along the travel from the belt normal, deg (positive: leaning "
-      "downstream with height); rows are de-sheared by height · tan",
+      "downstream with height); rows are de-sheared by height * tan, 0: off",
       Range{-10, 10});
-    v("max_height_mm", max_height_mm, "the tallest surface the de-shear reaches, mm",
+    v("max_height_mm", max_height_mm,
+      "tallest surface the de-shear reaches; it delays the rows by ceil(max_height_mm * "
+      "|tan(sheet_pitch_deg)| / grid_mm + 1/2), higher samples are dropped (no data) and "
+      "counted, mm",
       Range::above(0, 1e4));
     v.retired("depth_jump_mm",
               "cosmos.fit.depth_jump_mm, which the cell takes from its model base");

@@ -7,6 +7,7 @@
 
 #include "core/io/yaml_input_errors.hpp"
 #include "core/io/yaml_parameter_reader.hpp"
+#include "realtime/loop/sheet_deshear.hpp"
 #include "scanner/scanner_config.hpp"
 
 namespace cosmos {
@@ -46,6 +47,11 @@ void read_section(YamlSectionReader& section, const fs::path&, ConditioningParam
   }
   if ((p.x_max_mm - p.x_min_mm) / p.grid_mm > kMaxGridColumns) {
     section.fail("grid_mm", "gives more than 65536 columns across [x_min_mm, x_max_mm)");
+  }
+  if (SheetDeshear::window_rows(p) > SheetDeshear::kMaxWindowRows) {
+    section.fail(section.has("max_height_mm") ? "max_height_mm" : "sheet_pitch_deg",
+                 "gives a de-shear window of more than 4096 rows (max_height_mm * "
+                 "|tan(sheet_pitch_deg)| / grid_mm)");
   }
 }
 

@@ -44,6 +44,7 @@ PartTrackerParameters tracking_with_shadows(const ScanLoopSettings& settings) {
 ScanLoop::ScanLoop(const ScanLoopSettings& settings)
     : settings_(settings),
       conditioner_(settings.conditioning, settings.cosmos.fit),
+      deshear_(settings.conditioning, settings.cosmos.fit.depth_jump_mm, conditioner_.width()),
       tracker_(tracking_with_shadows(settings), conditioner_.width()),
       row_pool_(std::max(settings.parts.row_blocks, 1),
                 static_cast<std::size_t>(std::max(settings.parts.row_block_rows, 1)) *
@@ -51,7 +52,8 @@ ScanLoop::ScanLoop(const ScanLoopSettings& settings)
       completed_(static_cast<std::size_t>(std::max(settings.parts.part_queue_slots, 1))),
       returned_(static_cast<std::size_t>(std::max(settings.parts.builders, 1))),
       lost_(static_cast<std::size_t>(PartQueueSettings::kLostPartSlots)),
-      row_stamps_(static_cast<std::size_t>(std::max(settings.tracking.link_gap_rows, 0) + 3)),
+      row_stamps_(static_cast<std::size_t>(std::max(settings.tracking.link_gap_rows, 0) + 3 +
+                                           deshear_.delay())),
       row_belt_(static_cast<std::size_t>(conditioner_.width())),
       row_loop_(static_cast<std::size_t>(conditioner_.width())),
       belt_seen_(static_cast<std::size_t>(conditioner_.width()), 0) {
@@ -189,7 +191,7 @@ void ScanLoop::complete(const TrackedPart& part) {
   }
 }
 
-void ScanLoop::start_parts(std::int64_t profile_index, const Profile& profile) {
+void ScanLoop::start_parts(const RowStamp& stamp) {
   for (const TrackedPart& part : tracker_.open_parts()) {
     if (part.first_row != row_index_ || builder_of(part.id) >= 0) continue;
     const int index = acquire_builder();
@@ -197,27 +199,27 @@ void ScanLoop::start_parts(std::int64_t profile_index, const Profile& profile) {
       // Reported when the tracker completes it (complete()); the tracker never holds more
       // open parts than unbuilt_ has room for.
       if (unbuilt_.size() < unbuilt_.capacity())
-        unbuilt_.push_back({part.id, {profile_index, profile.encoder_ticks, profile.t_us}});
+        unbuilt_.push_back({part.id, stamp});
       else
         counters_.parts_dropped.fetch_add(1, std::memory_order_relaxed);
       continue;
     }
     PartBuilder& builder = *builders_[static_cast<std::size_t>(index)];
     builder.cosmos.begin_part(x0_loop_mm(),
-                              static_cast<double>(profile_index) * settings_.conditioning.grid_mm);
+                              static_cast<double>(stamp.profile) * settings_.conditioning.grid_mm);
     builder.part_id = part.id;
     builder.merged_count = 0;
-    builder.first_profile = profile_index;
-    builder.last_data_profile = profile_index;
-    builder.last_profile = profile_index;
-    builder.first_encoder_ticks = profile.encoder_ticks;
-    builder.first_t_us = profile.t_us;
+    builder.first_profile = stamp.profile;
+    builder.last_data_profile = stamp.profile;
+    builder.last_profile = stamp.profile;
+    builder.first_encoder_ticks = stamp.encoder_ticks;
+    builder.first_t_us = stamp.t_us;
     builder.truncated = false;
     open_builders_.push_back(index);
   }
 }
 
-bool ScanLoop::add_row_to(int index, const Profile& profile) {
+bool ScanLoop::add_row_to(int index, const RowStamp& stamp) {
   PartBuilder& builder = *builders_[static_cast<std::size_t>(index)];
   AddRowResult added = builder.cosmos.add_row(row_loop_.data());
   // Unpaced, the blocks of the parts at the recognizer are waited for (as builders are): what
@@ -251,12 +253,21 @@ bool ScanLoop::add_row_to(int index, const Profile& profile) {
   const int last_column = width() - 1;
   for (int c = row.column_begin; c < row.column_end; ++c)
     row.tracker_label[row.at(c)] = labels[static_cast<std::size_t>(last_column - c)];
-  builder.last_profile = static_cast<std::int64_t>(profile.seq);
+  builder.last_profile = stamp.profile;
   return true;
 }
 
+void ScanLoop::add_row(const float* z_mm, const std::uint8_t* belt, const RowStamp& stamp) {
+  std::reverse_copy(z_mm, z_mm + width(), row_loop_.begin());
+  for (const TrackedPart& part : tracker_.add_row(z_mm, row_index_, belt)) complete(part);
+  counters_.runs_dropped.store(tracker_.dropped_runs(), std::memory_order_relaxed);
+  start_parts(stamp);
+  for (std::size_t k = 0; k < open_builders_.size();)
+    k += add_row_to(open_builders_[k], stamp) ? 1 : 0;
+  ++row_index_;
+}
+
 void ScanLoop::process(const Profile& profile) {
-  const auto profile_index = static_cast<std::int64_t>(profile.seq);
   // Builders the recognizer is done with give their row blocks back before this row needs
   // any.
   reclaim_returned();
@@ -264,30 +275,40 @@ void ScanLoop::process(const Profile& profile) {
   // (a part's length and encoder range stay right); the refusal is counted for the operator.
   if (!conditioner_.condition(profile, row_belt_.data(), belt_seen_.data()))
     counters_.profiles_refused.fetch_add(1, std::memory_order_relaxed);
-  std::reverse_copy(row_belt_.begin(), row_belt_.end(), row_loop_.begin());
-  stamp_of_row(row_index_) = {profile_index, profile.encoder_ticks, profile.t_us};
-  for (const TrackedPart& part : tracker_.add_row(row_belt_.data(), row_index_, belt_seen_.data()))
-    complete(part);
-  counters_.runs_dropped.store(tracker_.dropped_runs(), std::memory_order_relaxed);
-  start_parts(profile_index, profile);
-  for (std::size_t k = 0; k < open_builders_.size();)
-    k += add_row_to(open_builders_[k], profile) ? 1 : 0;
-  ++row_index_;
+  stamp_of_row(input_index_++) = {static_cast<std::int64_t>(profile.seq), profile.encoder_ticks,
+                                  profile.t_us};
+  if (!deshear_.active()) {
+    add_row(row_belt_.data(), belt_seen_.data(), stamp_of_row(row_index_));
+  } else {
+    // Out comes the row of the profile the window's rows before this one, under its own
+    // stamp (none while the first window fills).
+    if (deshear_.push(row_belt_.data(), belt_seen_.data()))
+      add_row(deshear_.row(), deshear_.belt(), stamp_of_row(row_index_));
+    counters_.samples_too_high.store(deshear_.samples_too_high(), std::memory_order_relaxed);
+  }
   counters_.row_blocks_peak.store(row_pool_.peak_blocks_in_use(), std::memory_order_relaxed);
   counters_.profiles.fetch_add(1, std::memory_order_relaxed);
 }
 
 void ScanLoop::flush() {
+  // The rows the de-shear still holds, fed on with empty input rows under the last profile's
+  // stamp: a part right at the stream's end must not lose its last rows.
+  const RowStamp last = input_index_ > 0 ? stamp_of_row(input_index_ - 1) : RowStamp{};
+  for (int k = deshear_.pending(); k > 0; --k) {
+    stamp_of_row(input_index_++) = last;
+    if (deshear_.push_empty()) add_row(deshear_.row(), deshear_.belt(), stamp_of_row(row_index_));
+  }
+  deshear_.clear();
   // Empty rows until every open part has been idle long enough to complete: a stream that
   // ends right behind a part must not lose it. Their stamps are the last profile's.
   std::fill(row_belt_.begin(), row_belt_.end(), Profile::kNoData);
-  const RowStamp last = row_index_ > 0 ? stamp_of_row(row_index_ - 1) : RowStamp{};
   for (int k = 0; k <= settings_.tracking.link_gap_rows + 1 && !tracker_.open_parts().empty();
        ++k) {
     stamp_of_row(row_index_) = last;
     for (const TrackedPart& part : tracker_.add_row(row_belt_.data(), row_index_)) complete(part);
     ++row_index_;
   }
+  input_index_ = row_index_;
 }
 
 }  // namespace cosmos

@@ -1,8 +1,9 @@
 #pragma once
 // The acquisition thread's per-profile work, bounded and non-blocking so that every profile
-// is done before the next one is exposed: condition the profile onto the COSMOS grid, track
-// the parts on the belt, and advance the incremental COSMOS (thesis ch. 3, Fig. 3.22) of
-// every open part by one row. When the tracker completes
+// is done before the next one is exposed: condition the profile onto the COSMOS grid,
+// de-shear the rows of a pitched laser sheet (which delays them by the de-shear's window),
+// track the parts on the belt, and advance the incremental COSMOS (thesis ch. 3, Fig. 3.22)
+// of every open part by one row. When the tracker completes
 // a part, its builder is finished and handed to the recognizer through a bounded
 // single-producer/single-consumer ring; the recognizer gives builders back through another.
 // Nothing here blocks, allocates or throws once constructed.
@@ -31,6 +32,7 @@
 #include "realtime/loop/part_tracker.hpp"
 #include "realtime/loop/profile_conditioner.hpp"
 #include "realtime/loop/row_block_pool.hpp"
+#include "realtime/loop/sheet_deshear.hpp"
 #include "realtime/rt/spsc_ring.hpp"
 
 namespace cosmos {
@@ -162,16 +164,22 @@ struct ScanLoopCounters {
   std::atomic<std::int64_t> noise_components{0};
   std::atomic<std::int64_t> profiles_refused{0};  // the conditioner refused its grid
   std::atomic<std::int64_t> runs_dropped{0};      // the tracker's, beyond its limits
+  // Samples above conditioning.max_height_mm, which the de-shear of a pitched sheet drops.
+  std::atomic<std::int64_t> samples_too_high{0};
 };
 
 class ScanLoop {
  public:
   explicit ScanLoop(const ScanLoopSettings& settings);
 
-  // Acquisition thread. `profile_index` counts the source's profiles (seq).
+  // Acquisition thread. `profile_index` counts the source's profiles (seq). With a pitched
+  // sheet the row that reaches the tracker and the builders is the one of the profile
+  // sheet_delay_rows() before this one, with that profile's stamp.
   void process(const Profile& profile);
-  // End of stream: completes every open part.
+  // End of stream: feeds the rows the de-shear still holds, then completes every open part.
   void flush();
+  // Rows the de-shear of a pitched sheet delays the loop by (0: an upright sheet).
+  int sheet_delay_rows() const { return deshear_.delay(); }
 
   // The recognizer's side: completed builders in completion order (their COSMOS still to
   // be finished: extract_part_view does it on the recognizer's thread), and their return.
@@ -188,25 +196,30 @@ class ScanLoop {
   double x0_loop_mm() const;
 
  private:
-  void reclaim_returned();
-  // Builders handed to the recognizer and not yet returned.
-  std::size_t builders_at_recognizer() const;
-  int acquire_builder();
-  void free_builder(int index);
-  // Adds the profile's row to an open part's builder; false when the part is lost (no row
-  // block: it becomes an unbuilt part, reported when the tracker completes it).
-  bool add_row_to(int index, const Profile& profile);
-  void start_parts(std::int64_t profile_index, const Profile& profile);
-  void complete(const TrackedPart& part);
-  int builder_of(std::int64_t id) const;
-  void report_lost(const LostPart& lost);
   // The source's profile, encoder count and exposure time of a recent row (within the
-  // tracker's link_gap_rows + 2: a part completes that many rows after its last).
+  // tracker's link_gap_rows + 2: a part completes that many rows after its last; the
+  // de-shear's rows still pending besides).
   struct RowStamp {
     std::int64_t profile = 0;
     std::int64_t encoder_ticks = 0;
     std::int64_t t_us = 0;
   };
+
+  void reclaim_returned();
+  // Builders handed to the recognizer and not yet returned.
+  std::size_t builders_at_recognizer() const;
+  int acquire_builder();
+  void free_builder(int index);
+  // The conditioned (and de-sheared) row row_index_, stamped `stamp`, to the tracker and the
+  // open parts' builders.
+  void add_row(const float* z_mm, const std::uint8_t* belt, const RowStamp& stamp);
+  // Adds row_loop_ to an open part's builder; false when the part is lost (no row block: it
+  // becomes an unbuilt part, reported when the tracker completes it).
+  bool add_row_to(int index, const RowStamp& stamp);
+  void start_parts(const RowStamp& stamp);
+  void complete(const TrackedPart& part);
+  int builder_of(std::int64_t id) const;
+  void report_lost(const LostPart& lost);
   RowStamp& stamp_of_row(std::int64_t row);
   // Parts that started without a builder, until the tracker completes them.
   struct UnbuiltPart {
@@ -217,6 +230,7 @@ class ScanLoop {
 
   ScanLoopSettings settings_;
   ProfileConditioner conditioner_;
+  SheetDeshear deshear_;
   PartTracker tracker_;
   RowBlockPool row_pool_;  // before the builders, which give their blocks back to it
   std::vector<std::unique_ptr<PartBuilder>> builders_;
@@ -226,11 +240,12 @@ class ScanLoop {
   SpscRing<int> returned_;
   SpscRing<LostPart> lost_;
   std::vector<UnbuiltPart> unbuilt_;     // capacity: the tracker's max_open_parts
-  std::vector<RowStamp> row_stamps_;     // ring over the last rows
+  std::vector<RowStamp> row_stamps_;     // ring over the last rows, by input row
   std::vector<float> row_belt_;          // conditioned, belt column order
   std::vector<float> row_loop_;          // mirrored into the loop frame
   std::vector<std::uint8_t> belt_seen_;  // conditioned, belt column order: belt measured
-  std::int64_t row_index_ = 0;
+  std::int64_t input_index_ = 0;         // the next profile's row
+  std::int64_t row_index_ = 0;           // the next row to the tracker and the builders
   ScanLoopCounters counters_;
 };
 

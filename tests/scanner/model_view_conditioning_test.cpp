@@ -1,9 +1,12 @@
 // The conditioning a model base's views were taken with (scanner/model_view_conditioning.hpp),
 // read back from its parameters text and compared with a cell's on both grid pitches and the
-// belt threshold, naming the first key that differs.
+// belt threshold, naming the first key that differs. The laser sheet's pitch is the live
+// scanner's alone (the views are rendered with an upright sheet): it never makes a base differ.
 #include "scanner/model_view_conditioning.hpp"
 
 #include <gtest/gtest.h>
+
+#include <string>
 
 namespace cosmos {
 namespace {
@@ -51,6 +54,21 @@ TEST(ModelViewConditioning, ACellsConditioningMustMatchTheViewsOnBothPitchesAndT
   const auto threshold = conditioning_difference(views, higher);
   ASSERT_TRUE(threshold);
   EXPECT_EQ(threshold->key, "conditioning.height_threshold_mm");
+}
+
+TEST(ModelViewConditioning, ThePitchOfTheLiveSheetDoesNotMakeABaseDiffer) {
+  ParameterText text;
+  text.set_parameters("conditioning",
+                      model_view_conditioning(ScannerParameters{}, ConditioningParameters{}));
+  EXPECT_EQ(text.text().find("sheet_pitch_deg"), std::string::npos);
+  EXPECT_EQ(text.text().find("max_height_mm"), std::string::npos);
+  ModelBase base;
+  base.parameters_text = text.text();
+  ConditioningParameters pitched;
+  pitched.sheet_pitch_deg = -4.5;
+  pitched.max_height_mm = 80;
+  EXPECT_EQ(conditioning_difference(model_base_view_conditioning(base, "base.cmb"), pitched),
+            std::nullopt);
 }
 
 }  // namespace

@@ -58,6 +58,9 @@ TEST_F(CellConfigFile, ShippedConfigHoldsTheDocumentedDefaults) {
   EXPECT_EQ(c.belt_height_mm, defaults.conditioning.belt_height_mm);
   EXPECT_EQ(c.belt_slope_x, defaults.conditioning.belt_slope_x);
   EXPECT_EQ(c.height_threshold_mm, defaults.conditioning.height_threshold_mm);
+  EXPECT_EQ(c.sheet_pitch_deg, 0.0);  // an upright sheet: no de-shear
+  EXPECT_EQ(c.sheet_pitch_deg, defaults.conditioning.sheet_pitch_deg);
+  EXPECT_EQ(c.max_height_mm, defaults.conditioning.max_height_mm);
 
   const TrackingSettings& t = config.tracking;
   EXPECT_EQ(t.tracker.max_open_parts, 8);
@@ -205,6 +208,10 @@ TEST_F(CellConfigFile, EveryBadValueNamesItsLineAndKey) {
        "x_max_mm must exceed x_min_mm"},
       {"conditioning:\n  x_min_mm: 200\n", 2, "conditioning.x_min_mm",
        "x_max_mm must exceed x_min_mm"},
+      {"conditioning:\n  sheet_pitch_deg: 10\n  max_height_mm: 10000\n", 3,
+       "conditioning.max_height_mm", "gives a de-shear window of more than 4096 rows"},
+      {"conditioning:\n  sheet_pitch_deg: 10.5\n", 2, "conditioning.sheet_pitch_deg",
+       "must be in [-10, 10], got 10.5"},
       {"lcm:\n  status_period_s: .nan\n", 2, "lcm.status_period_s", "must be in (0, 3600]"},
       {"lcm:\n  url: ''\n", 2, "lcm.url", "expected a non-empty string, got ''"},
       {"tracking: 5\n", 1, "tracking", "expected a map, got '5'"},

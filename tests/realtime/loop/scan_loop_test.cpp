@@ -1,6 +1,8 @@
 // The scan loop's builders and their shared row pool: a part that finds the pool used up is
 // reported (an ERROR pose with its reason) and counted, its rows go back to the pool, and
-// taking and giving back blocks allocates nothing.
+// taking and giving back blocks allocates nothing. A pitched laser sheet's part, de-sheared,
+// comes out with its own profiles' stamps and length, also when the stream ends right behind
+// it.
 #include "realtime/loop/scan_loop.hpp"
 
 #include <gtest/gtest.h>
@@ -10,6 +12,7 @@
 
 #include "realtime/cell/blob_recognition.hpp"
 #include "tests/common/allocation_counter.hpp"
+#include "tests/realtime/loop/pitched_sheet.hpp"
 
 namespace cosmos {
 namespace {
@@ -30,6 +33,23 @@ void make_profile(Profile& profile, std::uint64_t seq, bool part, double width_m
     const double x = profile.x_mm(static_cast<std::size_t>(i)) / (0.5 * width_mm);
     profile.z_mm[static_cast<std::size_t>(i)] =
         part && std::abs(x) < 1 ? static_cast<float>(2 + 8 * (1 - x * x)) : 0.0f;
+  }
+}
+
+// The dome of make_profile drawn along the belt as a prism over the rows [first, first + rows)
+// (its ends 0.4 rows before the first and 0.4 after the last row's centre), measured by a
+// sheet pitched by `pitch_deg`: the upright sheet's profiles are make_profile's.
+void make_pitched_profile(Profile& profile, std::uint64_t seq, double pitch_deg, int first,
+                          int rows, double width_mm) {
+  make_profile(profile, seq, false, width_mm);
+  const double y_begin = (first - 0.4) * 0.4, y_end = (first + rows - 0.6) * 0.4;
+  for (int i = 0; i < kSamples; ++i) {
+    const double x = profile.x_mm(static_cast<std::size_t>(i)) / (0.5 * width_mm);
+    if (std::abs(x) >= 1) continue;
+    const double dome = 2 + 8 * (1 - x * x);
+    const auto height = [&](double y) { return y >= y_begin && y <= y_end ? dome : 0.0; };
+    profile.z_mm[static_cast<std::size_t>(i)] = static_cast<float>(
+        testing::pitched_sheet_hit(height, static_cast<double>(seq) * 0.4, pitch_deg, 10.0));
   }
 }
 
@@ -133,6 +153,92 @@ TEST(ScanLoop, TakingAndGivingBackRowBlocksAllocatesNothing) {
   EXPECT_EQ(loop.counters().parts_seen, 2);
   EXPECT_EQ(loop.counters().parts_out_of_rows, 1);
   EXPECT_EQ(allocations, 0u);
+}
+
+// A pitched sheet's scan of a 60-row part starting at profile 20 through a loop de-shearing it,
+// with `belt_after` profiles of belt behind it, then the end of the stream; the part's builder.
+struct PitchedScan {
+  std::int64_t first_profile = 0, last_data_profile = 0, first_encoder_ticks = 0,
+               last_data_encoder_ticks = 0, tracked_rows = 0;
+  int delay = 0;
+};
+
+PitchedScan pitched_scan(double pitch_deg, int belt_after) {
+  constexpr int kFirst = 20, kRows = 60;
+  ScanLoopSettings settings;
+  settings.parts.builders = 2;
+  settings.conditioning.sheet_pitch_deg = pitch_deg;
+  ScanLoop loop(settings);
+  Profile profile;
+  for (int k = 0; k < kFirst + kRows + belt_after; ++k) {
+    make_pitched_profile(profile, static_cast<std::uint64_t>(k), pitch_deg, kFirst, kRows, 40.0);
+    loop.process(profile);
+  }
+  loop.flush();
+  EXPECT_EQ(loop.counters().profiles, kFirst + kRows + belt_after);
+  EXPECT_EQ(loop.counters().parts_seen, 1);
+  EXPECT_EQ(loop.counters().samples_too_high, 0);
+  int index = -1;
+  EXPECT_TRUE(loop.completed().try_pop(index));
+  if (index < 0) return {};
+  const PartBuilder& builder = loop.builder(index);
+  return {builder.first_profile,           builder.last_data_profile, builder.first_encoder_ticks,
+          builder.last_data_encoder_ticks, builder.tracked_rows,      loop.sheet_delay_rows()};
+}
+
+TEST(ScanLoop, APitchedSheetsPartComesOutWithItsOwnProfilesStampsAndLength) {
+  const PitchedScan upright = pitched_scan(0, 100);
+  EXPECT_EQ(upright.delay, 0);
+  EXPECT_EQ(upright.first_profile, 20);
+  EXPECT_EQ(upright.last_data_profile, 79);
+  EXPECT_EQ(upright.tracked_rows, 60);
+  for (const double pitch : {-5.0, -1.0, 1.0, 5.0}) {
+    const PitchedScan scan = pitched_scan(pitch, 100);
+    // 200 mm (max_height_mm) at 5°: 45 rows; at 1°: 10.
+    EXPECT_EQ(scan.delay, std::abs(pitch) == 5 ? 45 : 10) << pitch;
+    // Stamped by the profiles that measured its first and last rows, not by the newest ones,
+    // the window's rows later.
+    EXPECT_EQ(scan.first_profile, 20) << pitch;
+    EXPECT_EQ(scan.first_encoder_ticks, 80) << pitch;
+    EXPECT_EQ(scan.last_data_profile, 79) << pitch;
+    EXPECT_EQ(scan.last_data_encoder_ticks, 316) << pitch;
+    EXPECT_NEAR(scan.tracked_rows, upright.tracked_rows, 1) << pitch;
+  }
+}
+
+TEST(ScanLoop, FlushFeedsTheRowsTheDeshearStillHolds) {
+  // The stream ends with the part's last profile: its last 45 rows are still in the window.
+  const PitchedScan upright = pitched_scan(0, 0);
+  EXPECT_EQ(upright.last_data_profile, 79);
+  for (const double pitch : {-5.0, 5.0}) {
+    const PitchedScan scan = pitched_scan(pitch, 0);
+    EXPECT_EQ(scan.first_profile, 20) << pitch;
+    EXPECT_EQ(scan.last_data_profile, 79) << pitch;
+    EXPECT_NEAR(scan.tracked_rows, upright.tracked_rows, 1) << pitch;
+  }
+}
+
+TEST(ScanLoop, DeshearingAPitchedSheetAllocatesNothing) {
+  ScanLoopSettings settings;
+  settings.parts.builders = 2;
+  settings.conditioning.sheet_pitch_deg = 5;
+  ScanLoop loop(settings);
+  Profile profile;
+  profile.reserve(kSamples);
+  std::uint64_t seq = 0;
+  const auto pass = [&] {
+    const int first = static_cast<int>(seq) + 20;
+    for (int k = 0; k < 180; ++k, ++seq)
+      make_pitched_profile(profile, seq, 5.0, first, 30, 40.0), loop.process(profile);
+    int index = -1;
+    ASSERT_TRUE(loop.completed().try_pop(index));
+    loop.returned().try_push(index);
+  };
+  pass();  // warm-up: every buffer has seen a part
+  const std::uint64_t before = test::allocations_on_this_thread();
+  pass();
+  EXPECT_EQ(test::allocations_on_this_thread() - before, 0u);
+  EXPECT_EQ(loop.counters().parts_seen, 2);
 }
 
 }  // namespace
