@@ -101,6 +101,7 @@ CellStatus status_message(ScanLoop& loop, const SharedStatus& shared,
   status.profiles_lost = shared.profiles_lost;
   status.profiles_dropped = shared.profiles_dropped + status.profiles_lost;
   status.profiles_refused = counters.profiles_refused;
+  status.samples_too_high = counters.samples_too_high;
   status.deadline_overruns = shared.overruns;
   status.camera_timeouts = shared.camera_timeouts;
   status.encoder_errors = shared.encoder_errors;

@@ -23,6 +23,7 @@ struct CellStatus {
   std::int64_t profiles_dropped = 0;
   std::int64_t profiles_lost = 0;
   std::int64_t profiles_refused = 0;
+  std::int64_t samples_too_high = 0;
   std::int64_t deadline_overruns = 0;
   std::int64_t camera_timeouts = 0;
   std::int64_t encoder_errors = 0;
@@ -60,6 +61,8 @@ struct CellStatus {
       "the source's share: camera frame gaps, skipped replays");
     v("profiles_refused", self.profiles_refused,
       "profiles whose grid (x0_mm, dx_mm) no scanner has: processed as empty rows");
+    v("samples_too_high", self.samples_too_high,
+      "samples above conditioning.max_height_mm, which a pitched sheet's de-shear drops");
     v("deadline_overruns", self.deadline_overruns, "paced profiles started after their deadline");
     v("camera_timeouts", self.camera_timeouts, "waits for a frame that hit the watchdog");
     v("encoder_errors", self.encoder_errors, "quadrature states skipped: a missed encoder edge");

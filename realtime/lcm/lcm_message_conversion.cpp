@@ -79,6 +79,7 @@ void to_message(const CellStatus& status, cosmos_lcm::cell_status_t& message) {
   message.publish_queue_depth = status.publish_queue_depth;
   message.profiles_lost = status.profiles_lost;
   message.profiles_refused = status.profiles_refused;
+  message.samples_too_high = status.samples_too_high;
   message.camera_timeouts = status.camera_timeouts;
   message.encoder_errors = status.encoder_errors;
   message.encoder_reversals = status.encoder_reversals;
@@ -110,6 +111,7 @@ void from_message(const cosmos_lcm::cell_status_t& message, CellStatus& status) 
   status.publish_queue_depth = message.publish_queue_depth;
   status.profiles_lost = message.profiles_lost;
   status.profiles_refused = message.profiles_refused;
+  status.samples_too_high = message.samples_too_high;
   status.camera_timeouts = message.camera_timeouts;
   status.encoder_errors = message.encoder_errors;
   status.encoder_reversals = message.encoder_reversals;

@@ -56,6 +56,7 @@ class StallingSource final : public ScannerSource {
     out.x0_mm = -160.0;
     out.dx_mm = emitted_ == 5 ? 0.0 : 0.5;  // one profile no scanner could have sent
     out.resize(kWidth);
+    if (emitted_ == 7) out.z_mm[kWidth / 2] = 50.0f;  // above a pitched loop's reach
     ++emitted_;
     return SourceStatus::kOk;
   }
@@ -83,7 +84,10 @@ class StallingSource final : public ScannerSource {
 TEST(CellStatusLive, SourceFaultsAreCountedLiveAndTheStallIsAFaultThatEnds) {
   WatchingPublisher publisher;
   StallingSource source(publisher.saw_fault, 40, 20);
-  ScanLoop loop(ScanLoopSettings{});
+  ScanLoopSettings pitched;
+  pitched.conditioning.sheet_pitch_deg = 1.0;
+  pitched.conditioning.max_height_mm = 20.0;
+  ScanLoop loop(pitched);
   CellRunSettings settings;
   settings.paced = false;
   settings.publishing.status_period_s = 0.001;
@@ -107,6 +111,7 @@ TEST(CellStatusLive, SourceFaultsAreCountedLiveAndTheStallIsAFaultThatEnds) {
   EXPECT_EQ(last.state, CellState::kIdle);
   EXPECT_EQ(last.profiles_acquired, 40);
   EXPECT_EQ(last.profiles_refused, 1);
+  EXPECT_EQ(last.samples_too_high, 2);  // the 0.5 mm sample is nearest to two 0.4 mm cells
   EXPECT_EQ(last.profiles_lost, 3);
   EXPECT_EQ(last.profiles_dropped, 3);
   EXPECT_EQ(last.camera_timeouts, source.waited_ms_);
