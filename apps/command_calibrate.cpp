@@ -39,10 +39,10 @@ struct CalibrateOptions {
   std::string hardware = "config/hardware-sim.yaml";
   std::string config = "config/cell.yaml";
   std::string report = "calibration-report";
-  std::string input;   // images, views, belt or scan directory
-  std::string block;   // belt: the ramp block's frames
+  std::string input;         // images, views, belt or scan directory
+  std::string block;         // belt: the ramp block's frames
   std::string block_turned;  // belt: the same block turned round (the sheet's pitch)
-  std::string target;  // belt: ramp.yaml; cell: spheres.yaml
+  std::string target;        // belt: ramp.yaml; cell: spheres.yaml
   CalibrationBoard board;
 };
 
@@ -167,10 +167,10 @@ void run_belt(const CalibrateOptions& options) {
   for (const Eigen::Vector3d& p : result.belt_points_scanner) belt_xz.emplace_back(p.x(), p.z());
   report.picture("belt-profile",
                  plot_picture("empty belt in the calibrated frame", "x mm", "z mm", {{belt_xz}}));
-  report.picture("belt-ramp",
-                 plot_picture("ramp block height per frame (both ways round)", "encoder ticks",
-                              "height mm",
-                              {{result.ramp_ticks_height}, {result.ramp_turned_ticks_height}}));
+  report.picture(
+      "belt-ramp",
+      plot_picture("ramp block height per frame (both ways round)", "encoder ticks", "height mm",
+                   {{result.ramp_ticks_height}, {result.ramp_turned_ticks_height}}));
   update_yaml_file(options.hardware, {{"calibration.mount", yaml_of(result.mount)}});
   update_yaml_file(options.config,
                    {{"scanner.encoder_mm_per_tick", YAML::Node(result.encoder_mm_per_tick)},
@@ -186,11 +186,10 @@ void run_cell(const CalibrateOptions& options) {
                 "calibration.mount is not calibrated: run `cosmos calibrate belt` first");
   const CellConfig config = load_cell_config(options.config);
   const SpherePlate plate = read_sphere_target(options.target);
-  const CellFrameResult result =
-      calibrate_cell_frame(read_frame_list(options.input), plate,
-                           calibrated_triangulation_geometry(config.scanner, hardware.calibration),
-                           config.scanner.encoder_mm_per_tick,
-                           config.conditioning.sheet_pitch_deg, hardware.stripe);
+  const CellFrameResult result = calibrate_cell_frame(
+      read_frame_list(options.input), plate,
+      calibrated_triangulation_geometry(config.scanner, hardware.calibration),
+      config.scanner.encoder_mm_per_tick, config.conditioning.sheet_pitch_deg, hardware.stripe);
   refuse_unless(result.ok, options.target, result.reason);
   CalibrationReport report(options.report);
   report.line("cosmos calibrate cell: " + std::to_string(plate.centres_cell_mm.size()) +

@@ -114,8 +114,7 @@ RampScan fit_ramp_scan(const std::vector<StripeFrame>& frames, const RampBlock& 
 BeltCalibrationResult calibrate_belt(const std::vector<StripeFrame>& empty_belt,
                                      const std::vector<StripeFrame>& ramp,
                                      const std::vector<StripeFrame>& ramp_turned,
-                                     const RampBlock& block,
-                                     const ScannerParameters& nominal,
+                                     const RampBlock& block, const ScannerParameters& nominal,
                                      const ScannerCalibration& calibration,
                                      const StripeExtractionParameters& extraction) {
   BeltCalibrationResult result;

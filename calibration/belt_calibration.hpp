@@ -39,11 +39,11 @@ struct BeltCalibrationResult {
   double camera_height_mm = 0.0;  // camera centre above the belt
   double belt_height_mm = 0.0;    // residual belt plane z = height + slope_x x, new frame
   double belt_slope_x = 0.0;
-  double belt_rms_mm = 0.0;                          // belt points about that plane
-  double ramp_rms_mm = 0.0;                          // ramp heights about their line
-  double ramp_turned_rms_mm = 0.0;                   // the same, the block turned round
-  bool pitch_measured = false;                       // the turned block was scanned
-  double sheet_pitch_deg = 0.0;  // the sheet leans downstream with height (sheet_pitch.hpp)
+  double belt_rms_mm = 0.0;         // belt points about that plane
+  double ramp_rms_mm = 0.0;         // ramp heights about their line
+  double ramp_turned_rms_mm = 0.0;  // the same, the block turned round
+  bool pitch_measured = false;      // the turned block was scanned
+  double sheet_pitch_deg = 0.0;     // the sheet leans downstream with height (sheet_pitch.hpp)
   std::vector<Eigen::Vector3d> belt_points_scanner;  // for the report
   std::vector<Eigen::Vector2d> ramp_ticks_height;    // (ticks, height) of each used frame
   std::vector<Eigen::Vector2d> ramp_turned_ticks_height;
@@ -54,8 +54,7 @@ struct BeltCalibrationResult {
 BeltCalibrationResult calibrate_belt(const std::vector<StripeFrame>& empty_belt,
                                      const std::vector<StripeFrame>& ramp,
                                      const std::vector<StripeFrame>& ramp_turned,
-                                     const RampBlock& block,
-                                     const ScannerParameters& nominal,
+                                     const RampBlock& block, const ScannerParameters& nominal,
                                      const ScannerCalibration& calibration,
                                      const StripeExtractionParameters& extraction);
 

@@ -46,10 +46,9 @@ LaserLineScanner::LaserLineScanner(const ConveyorScene& scene, const ScannerPara
              ? parameters.laser_height_mm / std::hypot(x_mm, parameters.laser_height_mm)
              : 1.0) *
         pitch_.cos();
-    belt_samples_[static_cast<std::size_t>(i)] =
-        classify_lit_point(Eigen::Vector3d(x_mm, 0.0, 0.0),
-                           pitch_.R_belt_sheet().transpose() * Eigen::Vector3d::UnitZ(),
-                           cos_incidence);
+    belt_samples_[static_cast<std::size_t>(i)] = classify_lit_point(
+        Eigen::Vector3d(x_mm, 0.0, 0.0),
+        pitch_.R_belt_sheet().transpose() * Eigen::Vector3d::UnitZ(), cos_incidence);
   }
   normal_x_.resize(static_cast<std::size_t>(samples));
   normal_y_.resize(static_cast<std::size_t>(samples));

@@ -6,8 +6,8 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "sim/calibration_targets/board_image_renderer.hpp"
 #include "scanner/sheet_pitch.hpp"
+#include "sim/calibration_targets/board_image_renderer.hpp"
 #include "sim/calibration_targets/target_stripe_renderer.hpp"
 #include "sim/seeded_random.hpp"
 

@@ -73,9 +73,8 @@ class CalibrationTargetSimulator {
   std::vector<BoardImage> board_images(const CalibrationBoard& board, int count);
   std::vector<LaserImagePair> laser_views(const CalibrationBoard& board, int count);
   std::vector<StripeFrame> empty_belt_frames(int count);
-  std::vector<StripeFrame> ramp_frames(
-      const RampBlock& block, int ticks_between_frames,
-      RampPlacement placement = RampPlacement::kHighEndDownstream);
+  std::vector<StripeFrame> ramp_frames(const RampBlock& block, int ticks_between_frames,
+                                       RampPlacement placement = RampPlacement::kHighEndDownstream);
   SpherePlateScan sphere_plate_scan(int ticks_between_frames);
 
   // The sphere plate's designed layout: plate width and length (mm), and sphere positions

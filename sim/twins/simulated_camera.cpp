@@ -72,9 +72,8 @@ CameraStatus SimulatedCamera::start() noexcept {
     geometry.roi_row_offset_px = config_.roi_top_px;
     geometry.roi_height_px = config_.height_px;
     if (!laser_) {
-      laser_ =
-          std::make_unique<LaserLineScanner>(conveyor_.scene(), drawing, drawing.sensor_width_px,
-                                             truth_.sheet_pitch_deg);
+      laser_ = std::make_unique<LaserLineScanner>(conveyor_.scene(), drawing,
+                                                  drawing.sensor_width_px, truth_.sheet_pitch_deg);
       laser_->reserve(line_);
     }
     renderer_ = std::make_unique<CameraFrameRenderer>(drawing, geometry);

@@ -23,10 +23,10 @@ TEST(BeltCalibration, RecoversRollHeightPitchAndMillimetresPerTick) {
   CalibrationTargetSimulator simulator(nominal, test::mis_mounted_cell(), 7);
   const CalibrationTruth truth = simulator.truth();
   const RampBlock block;
-  const BeltCalibrationResult result = calibrate_belt(
-      simulator.empty_belt_frames(4), simulator.ramp_frames(block, 40),
-      simulator.ramp_frames(block, 40, RampPlacement::kHighEndUpstream), block, nominal,
-      calibrated_lens_and_laser(truth), simulator.extraction_parameters());
+  const BeltCalibrationResult result =
+      calibrate_belt(simulator.empty_belt_frames(4), simulator.ramp_frames(block, 40),
+                     simulator.ramp_frames(block, 40, RampPlacement::kHighEndUpstream), block,
+                     nominal, calibrated_lens_and_laser(truth), simulator.extraction_parameters());
   ASSERT_TRUE(result.ok) << result.reason;
   EXPECT_NEAR(result.roll_deg, truth.roll_deg, 0.05);
   EXPECT_NEAR(result.camera_height_mm, truth.camera_height_mm, 0.05);
@@ -97,9 +97,9 @@ TEST(BeltCalibration, RefusesARampItCannotSeeWithTheReason) {
   RampBlock told;  // the file says a taller block than the one scanned
   told.low_height_mm = 60.0;
   told.high_height_mm = 90.0;
-  const BeltCalibrationResult result =
-      calibrate_belt(simulator.empty_belt_frames(2), simulator.ramp_frames(RampBlock{}, 80), {},
-                     told, nominal, calibrated_lens_and_laser(truth), simulator.extraction_parameters());
+  const BeltCalibrationResult result = calibrate_belt(
+      simulator.empty_belt_frames(2), simulator.ramp_frames(RampBlock{}, 80), {}, told, nominal,
+      calibrated_lens_and_laser(truth), simulator.extraction_parameters());
   EXPECT_FALSE(result.ok);
   EXPECT_EQ(result.reason,
             "ramp block: 0 frames see its slope (heights 64.5 to 85.5 mm), at least 5 needed: is "

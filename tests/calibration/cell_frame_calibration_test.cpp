@@ -24,10 +24,9 @@ CellScan scan_sphere_plate(std::uint64_t seed) {
 
 TEST(CellFrameCalibration, RecoversTCellScannerFromFourSpheres) {
   const CellScan cell = scan_sphere_plate(9);
-  const CellFrameResult result =
-      calibrate_cell_frame(cell.scan.frames, cell.scan.plate, cell.geometry,
-                           cell.truth.encoder_mm_per_tick, cell.truth.sheet_pitch_deg,
-                           cell.extraction);
+  const CellFrameResult result = calibrate_cell_frame(cell.scan.frames, cell.scan.plate,
+                                                      cell.geometry, cell.truth.encoder_mm_per_tick,
+                                                      cell.truth.sheet_pitch_deg, cell.extraction);
   ASSERT_TRUE(result.ok) << result.reason;
   EXPECT_LT(rotation_angle_between_rad(result.T_cell_scanner.rotation,
                                        cell.truth.T_cell_scanner.rotation) *
@@ -43,10 +42,9 @@ TEST(CellFrameCalibration, RecoversTCellScannerFromFourSpheres) {
 TEST(CellFrameCalibration, RefusesATargetFileWithAnotherSphereCount) {
   CellScan cell = scan_sphere_plate(10);
   cell.scan.plate.centres_cell_mm.pop_back();
-  const CellFrameResult result =
-      calibrate_cell_frame(cell.scan.frames, cell.scan.plate, cell.geometry,
-                           cell.truth.encoder_mm_per_tick, cell.truth.sheet_pitch_deg,
-                           cell.extraction);
+  const CellFrameResult result = calibrate_cell_frame(cell.scan.frames, cell.scan.plate,
+                                                      cell.geometry, cell.truth.encoder_mm_per_tick,
+                                                      cell.truth.sheet_pitch_deg, cell.extraction);
   EXPECT_FALSE(result.ok);
   EXPECT_EQ(result.reason,
             "the scan shows 4 spheres, the target file lists 3: the file does not match the scan");
@@ -55,10 +53,9 @@ TEST(CellFrameCalibration, RefusesATargetFileWithAnotherSphereCount) {
 TEST(CellFrameCalibration, RefusesATargetFileWhoseCentresDoNotFitTheScan) {
   CellScan cell = scan_sphere_plate(11);
   cell.scan.plate.centres_cell_mm[2] += Eigen::Vector3d(15.0, 0.0, 0.0);
-  const CellFrameResult result =
-      calibrate_cell_frame(cell.scan.frames, cell.scan.plate, cell.geometry,
-                           cell.truth.encoder_mm_per_tick, cell.truth.sheet_pitch_deg,
-                           cell.extraction);
+  const CellFrameResult result = calibrate_cell_frame(cell.scan.frames, cell.scan.plate,
+                                                      cell.geometry, cell.truth.encoder_mm_per_tick,
+                                                      cell.truth.sheet_pitch_deg, cell.extraction);
   EXPECT_FALSE(result.ok);
   EXPECT_NE(result.reason.find("the target file does not match the scan"), std::string::npos)
       << result.reason;
