@@ -81,9 +81,19 @@ void MeshText::fail_in_file(const std::string& reason) const {
 }
 
 std::string quoted(std::string_view token) {
-  std::string text;
-  text.reserve(token.size() + 2);
-  return text.append("'").append(token).append("'");
+  constexpr std::size_t kShown = 40;
+  std::string text = "'";
+  for (std::size_t k = 0; k < token.size() && k < kShown; ++k) {
+    const auto byte = static_cast<unsigned char>(token[k]);
+    if (byte >= 0x20 && byte < 0x7f) {
+      text.push_back(static_cast<char>(byte));
+    } else {
+      constexpr const char* kHex = "0123456789abcdef";
+      text.append("\\x").push_back(kHex[byte >> 4]);
+      text.push_back(kHex[byte & 0xf]);
+    }
+  }
+  return text.append(token.size() > kShown ? "...'" : "'");
 }
 
 std::optional<double> parse_number(std::string_view token) { return parse_whole<double>(token); }

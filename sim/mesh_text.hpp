@@ -53,7 +53,9 @@ class MeshText {
   std::size_t line_ = 1;
 };
 
-// The token in single quotes, as a message shows it.
+// The token in single quotes, as a message shows it: bytes outside printable ASCII as \xHH (a
+// binary file read as text holds NULs and control bytes a terminal would act on), and past 40
+// characters cut with "...", since a token of binary data can be the whole file.
 std::string quoted(std::string_view token);
 
 // A whole token as a number (std::from_chars: no locale; "inf" and "nan" are numbers, a

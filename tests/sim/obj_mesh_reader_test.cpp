@@ -89,6 +89,11 @@ TEST_F(ObjMeshReader, EachRefusalNamesTheLineAndTheReason) {
        "faces are read"},
       {"vertex 0 0 0\n", ":1: 'vertex' is not an OBJ statement this reader knows"},
       {"solid s\n", ":1: 'solid' is not an OBJ statement this reader knows"},
+      // UTF-16: bytes no terminal should get, and a token longer than a message shows.
+      {std::string("\xfe\xff\0v\0 \x01", 7) + std::string(60, 'x') + "\n",
+       ":1: '\\xfe\\xff\\x00v\\x00' is not an OBJ statement this reader knows"},
+      {"v 0 0 0 " + std::string(60, '9') + "x\n",
+       ":1: vertex 1 has '9999999999999999999999999999999999999999...', not a number"},
   };
   for (const Case& c : cases) EXPECT_EQ(read_error(c.text), c.reason) << c.text;
 }
