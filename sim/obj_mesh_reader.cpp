@@ -33,7 +33,11 @@ class ObjReader {
   PolygonMesh read() {
     while (text_.next_data_line(kHashComments)) {
       std::string_view keyword = text_.token_on_line(kHashComments);
-      if (text_.line() == 1 && keyword.starts_with("\xEF\xBB\xBF")) keyword.remove_prefix(3);
+      // Some editors begin a UTF-8 file with a byte order mark, before a blank or a comment too.
+      if (text_.offset() == keyword.size() && keyword.starts_with("\xEF\xBB\xBF")) {
+        keyword.remove_prefix(3);
+        if (keyword.empty()) keyword = text_.token_on_line(kHashComments);
+      }
       if (keyword == "v") {
         read_vertex();
       } else if (keyword == "f") {
@@ -41,7 +45,7 @@ class ObjReader {
       } else if (free_form_statement(keyword)) {
         text_.fail("free-form geometry (" + quoted(keyword) +
                    ") is not supported: only polygon faces are read");
-      } else if (skipped_statement(keyword)) {
+      } else if (skipped_statement(keyword) || keyword.empty()) {  // empty: a lone mark
         skip_statement();
       } else {
         text_.fail(quoted(keyword) + " is not an OBJ statement this reader knows");

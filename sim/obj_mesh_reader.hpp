@@ -10,7 +10,8 @@
 // mtllib, l (lines), p (points) and the display attributes. Free-form geometry (cstype, curv,
 // curv2, surf) is refused as such rather than dropped, since its surface would be missing from
 // the part; so is a line continuation ('\' at a line's end) and any other statement. '#'
-// starts a comment; a line ends at "\n", "\r\n" or a lone "\r".
+// starts a comment; a line ends at "\n", "\r\n" or a lone "\r"; a UTF-8 byte order mark
+// at the start is skipped.
 //
 // A face may only index vertices read before it, so every index is checked where it stands;
 // the mesh grows with the lines read, so it is bounded by the file's size. Each refusal is one

@@ -51,6 +51,12 @@ TEST_F(ObjMeshReader, CoordinatesAndLargePolygonsAreKept) {
   EXPECT_EQ(mesh.face_corners, std::vector<int>{6});
   EXPECT_EQ(mesh.corners, (std::vector<int>{0, 1, 2, 3, 4, 5}));
   EXPECT_EQ(triangulate(mesh).triangles.size(), 4u);
+  // A byte order mark before a comment, or before a blank and the first statement.
+  EXPECT_EQ(read_obj_mesh(write("bom.obj", "\xEF\xBB\xBF# pyramid\n" + std::string(kPyramid)))
+                .vertices.size(),
+            5u);
+  expect_square_pyramid(
+      read_obj_mesh(write("bom_blank.obj", "\xEF\xBB\xBF " + std::string(kPyramid))));
 }
 
 TEST_F(ObjMeshReader, EachRefusalNamesTheLineAndTheReason) {
