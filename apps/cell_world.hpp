@@ -7,7 +7,7 @@
 //                             config/hardware-sim.yaml), replays; the model base the config
 //                             names, or one built and cached on first run
 //   cell_world_hardware.cpp   a build without the simulator (-DCOSMOS_SIMULATOR=OFF, which
-//                             links no Embree, assimp or Qhull): real hardware and replays;
+//                             links no Embree or Qhull): real hardware and replays;
 //                             the model base the config names
 // Errors throw InputError (one line).
 #include <cstdint>

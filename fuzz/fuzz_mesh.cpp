@@ -1,5 +1,5 @@
-// A mesh file of one format (sim/mesh.hpp, through assimp): built once per format, the
-// extension given by COSMOS_FUZZ_MESH_EXTENSION.
+// A mesh file of one format, read by the project's readers (sim/mesh.hpp): built once per
+// format, the extension given by COSMOS_FUZZ_MESH_EXTENSION.
 #include <cstddef>
 #include <cstdint>
 

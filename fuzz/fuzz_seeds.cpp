@@ -108,6 +108,12 @@ void mesh_seeds(const fs::path& corpus) {
   write_seed(corpus, "mesh_obj", "box.obj",
              "v 0 0 0\nv 2 0 0\nv 2 3 0\nv 0 3 0\nv 0 0 4\nv 2 0 4\nv 2 3 4\nv 0 3 4\n"
              "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
+  // Every corner form, relative indices and the statements the reader skips.
+  write_seed(corpus, "mesh_obj", "pyramid.obj",
+             "# pyramid\nmtllib p.mtl\no p\ng base\ns 1\nusemtl m\nv 0 0 0\nv 2 0 0 1\n"
+             "v 2 2 0 0.5 0.5 0.5\nv 0 2 0\nvt 0 0\nvt 1 0\nvn 0 0 -1\n"
+             "f -4/1/1 -1/2/1 -2/1/1 -3/2/1\nv 1 1 3\nl 1 5\np 5\n"
+             "f 1/1 2/2 5/1\nf 2//1 3//1 5//1\nf -3 -2 -1\nf 4 1 -1\n");
 }
 
 void yaml_seeds(const fs::path& corpus, const fs::path& source) {

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds `cosmos` without the simulator (COSMOS_SIMULATOR=OFF, what a cell's embedded machine
-# runs) and checks that it links no simulator library (Embree, assimp, Qhull) and runs the
+# runs) and checks that it links no simulator library (Embree, Qhull) and runs the
 # hardware cell up to its devices: on a machine without a camera it must stop at once with
 # one line naming the device and the config key.
 set -euo pipefail
@@ -15,7 +15,7 @@ cmake --build "$build_dir" --parallel "$(nproc)" --target cosmos > "$build_dir/b
 cosmos="$build_dir/apps/cosmos"
 fail() { echo "check_hardware_only: $*" >&2; exit 1; }
 
-if simulator_libraries=$(ldd "$cosmos" | grep -Ei 'embree|assimp|qhull'); then
+if simulator_libraries=$(ldd "$cosmos" | grep -Ei 'embree|qhull'); then
   fail "the hardware-only cosmos links a simulator library: $simulator_libraries"
 fi
 if "$cosmos" cell --source sim > /dev/null 2> "$build_dir/sim.err"; then
@@ -32,4 +32,4 @@ if [[ ! -e /dev/video0 ]]; then
     fail "no one-line device error: $(cat "$build_dir/hardware.err")"
 fi
 echo "check_hardware_only: $(readelf -d "$cosmos" | grep -c NEEDED) libraries needed, none of" \
-  "Embree, assimp, Qhull; the hardware cell stops at its missing camera in one line"
+  "Embree, Qhull; the hardware cell stops at its missing camera in one line"

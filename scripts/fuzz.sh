@@ -43,8 +43,6 @@ fuzz_one() {  # HARNESS
   echo "$rc" > "$log.status"
 }
 
-export LSAN_OPTIONS=suppressions=$root/fuzz/lsan_suppressions.txt:print_suppressions=0
-
 # The harnesses run side by side, one per core (each is one single-threaded process).
 parallel=${COSMOS_FUZZ_JOBS:-$(nproc)}
 for harness in "${harnesses[@]}"; do

@@ -15,7 +15,7 @@ packages=(
   ccache
   libeigen3-dev libopencv-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libassimp-dev libembree-dev libqhull-dev
+  libembree-dev libqhull-dev
   libgpiod-dev
   liblcm-dev liblcm-bin libglib2.0-dev iproute2
   libflatbuffers-dev flatbuffers-compiler

@@ -11,9 +11,10 @@
 #include <utility>
 
 #include "core/input_error.hpp"
-#include "sim/assimp_mesh_reader.hpp"
+#include "sim/obj_mesh_reader.hpp"
 #include "sim/off_mesh_reader.hpp"
 #include "sim/ply_mesh_reader.hpp"
+#include "sim/stl_mesh_reader.hpp"
 
 namespace cosmos {
 namespace {
@@ -107,7 +108,8 @@ TriangleMesh read_mesh_file(const std::filesystem::path& path) {
   const std::string extension = lowercase_extension(path);
   TriangleMesh mesh = extension == ".off"   ? triangulate(read_off_mesh(path))
                       : extension == ".ply" ? triangulate(read_ply_mesh(path))
-                                            : read_assimp_mesh(path);
+                      : extension == ".obj" ? triangulate(read_obj_mesh(path))
+                                            : read_stl_mesh(path);
   compact_vertices(mesh);
   validate(path, mesh);
   return mesh;

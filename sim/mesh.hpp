@@ -1,15 +1,15 @@
 #pragma once
-// Triangle meshes of catalog parts, read from CAD/scan files: OFF and PLY by the project's
-// own readers (sim/off_mesh_reader.hpp, sim/ply_mesh_reader.hpp), STL and OBJ through assimp
-// (sim/assimp_mesh_reader.hpp). A part is simulated at its physical size, so a loaded mesh is
+// Triangle meshes of catalog parts, read from CAD/scan files by the project's own readers
+// (sim/off_mesh_reader.hpp, sim/ply_mesh_reader.hpp, sim/stl_mesh_reader.hpp,
+// sim/obj_mesh_reader.hpp). A part is simulated at its physical size, so a loaded mesh is
 // centred (bounding-box centre at the origin) and uniformly scaled so its largest bounding-box
 // extent is the catalog's size_mm: the files' own units (often unit boxes or arbitrary) never
 // matter.
 //
 // Every defect of the file (missing, unknown extension, malformed, no triangles, NaN/inf
-// coordinates, all vertices at one point, a PLY/OFF header claiming more elements than the
-// file holds, a face indexing a missing vertex) throws cosmos::InputError with one line
-// naming the file (and, for OFF and PLY text, the line) and the reason.
+// coordinates, all vertices at one point, a header or a binary STL count claiming more than the
+// file holds, a face indexing a missing vertex) throws cosmos::InputError with one line naming
+// the file (and the line of a text file or the byte of a binary body) and the reason.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <filesystem>
@@ -24,9 +24,9 @@ struct TriangleMesh {
   std::vector<Eigen::Vector3i> triangles;  // indices into vertices, winding kept from the file
 };
 
-// Reads every triangle of the file (for OBJ and STL, of every mesh in its scene, node
-// transforms applied), in the file's own units. Polygons are triangulated, vertices at the
-// same position joined and vertices no triangle uses dropped; points and lines are dropped.
+// Reads every triangle of the file (of every solid of an STL file, of every object and group
+// of an OBJ file), in the file's own units. Polygons are triangulated, vertices at the same
+// position joined and vertices no triangle uses dropped; points and lines are dropped.
 // Throws InputError on any defect listed above.
 TriangleMesh read_mesh_file(const std::filesystem::path& path);
 

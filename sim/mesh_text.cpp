@@ -1,6 +1,7 @@
 #include "sim/mesh_text.hpp"
 
 #include <charconv>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <system_error>
@@ -79,10 +80,42 @@ void MeshText::fail_in_file(const std::string& reason) const {
   throw InputError(path_.string() + ": " + reason);
 }
 
+std::string quoted(std::string_view token) {
+  constexpr std::size_t kShown = 40;
+  std::string text = "'";
+  for (std::size_t k = 0; k < token.size() && k < kShown; ++k) {
+    const auto byte = static_cast<unsigned char>(token[k]);
+    if (byte >= 0x20 && byte < 0x7f) {
+      text.push_back(static_cast<char>(byte));
+    } else {
+      constexpr const char* kHex = "0123456789abcdef";
+      text.append("\\x").push_back(kHex[byte >> 4]);
+      text.push_back(kHex[byte & 0xf]);
+    }
+  }
+  return text.append(token.size() > kShown ? "...'" : "'");
+}
+
 std::optional<double> parse_number(std::string_view token) { return parse_whole<double>(token); }
 
 std::optional<long long> parse_integer(std::string_view token) {
   return parse_whole<long long>(token);
+}
+
+std::uint64_t unsigned_at(std::string_view bytes, std::size_t at, std::size_t size,
+                          bool big_endian) {
+  std::uint64_t bits = 0;
+  for (std::size_t k = 0; k < size; ++k) {
+    const auto byte = static_cast<unsigned char>(bytes[at + k]);
+    bits |= static_cast<std::uint64_t>(byte) << (8 * (big_endian ? size - 1 - k : k));
+  }
+  return bits;
+}
+
+float float_of_bits(std::uint32_t bits) {
+  float value;
+  std::memcpy(&value, &bits, sizeof value);
+  return value;
 }
 
 }  // namespace cosmos

@@ -1,10 +1,12 @@
 #pragma once
 // A mesh file's bytes read as text, token by token, with the line each token is on: the one
-// tokenizer of the OFF reader and of the PLY reader's header and ASCII body
-// (sim/off_mesh_reader.hpp, sim/ply_mesh_reader.hpp). A line ends at "\n", "\r\n" or a lone
-// "\r" (old Mac files), the same for every caller, so a line count in an error is the line an
-// editor shows. Every refusal is one InputError line "FILE:LINE: reason".
+// tokenizer of the OFF, OBJ and ASCII STL readers and of the PLY reader's header and ASCII body
+// (sim/off_mesh_reader.hpp, sim/obj_mesh_reader.hpp, sim/stl_mesh_reader.hpp,
+// sim/ply_mesh_reader.hpp), and the decoding of their binary bodies. A line ends at "\n",
+// "\r\n" or a lone "\r" (old Mac files), the same for every caller, so a line count in an error
+// is the line an editor shows. Every refusal is one InputError line "FILE:LINE: reason".
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -51,10 +53,23 @@ class MeshText {
   std::size_t line_ = 1;
 };
 
+// The token in single quotes, as a message shows it: bytes outside printable ASCII as \xHH (a
+// binary file read as text holds NULs and control bytes a terminal would act on), and past 40
+// characters cut with "...", since a token of binary data can be the whole file.
+std::string quoted(std::string_view token);
+
 // A whole token as a number (std::from_chars: no locale; "inf" and "nan" are numbers, a
 // leading '+' is accepted), or nothing.
 std::optional<double> parse_number(std::string_view token);
 // A whole token as an integer, or nothing.
 std::optional<long long> parse_integer(std::string_view token);
+
+// The `size` bytes (1 to 8) at `at` as an unsigned integer stored least significant byte
+// first, or most significant first when `big_endian`: a binary body's scalars, decoded the
+// same on any host. The caller checks that the bytes are there.
+std::uint64_t unsigned_at(std::string_view bytes, std::size_t at, std::size_t size,
+                          bool big_endian = false);
+// The IEEE 754 single whose bits these are.
+float float_of_bits(std::uint32_t bits);
 
 }  // namespace cosmos

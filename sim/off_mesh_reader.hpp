@@ -1,5 +1,5 @@
 #pragma once
-// ASCII OFF files (Geomview's Object File Format), read without assimp: the optional keyword
+// ASCII OFF files (Geomview's Object File Format), read by the project: the optional keyword
 // ([ST][C][N]OFF: texture coordinates, colours and normals after a vertex's x y z are
 // skipped), the counts line "vertices faces [edges]", one vertex per line, then one face per
 // line "n i1 ... in" (a face colour after the indices is skipped). '#' starts a comment; a

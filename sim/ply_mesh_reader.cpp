@@ -188,20 +188,11 @@ class PlyBodyReader {
     const std::string& bytes = text_.bytes();
     const auto size = static_cast<std::size_t>(type.bytes);
     if (size > bytes.size() - at_) return std::nullopt;
-    std::uint64_t bits = 0;  // the value's bytes, least significant first
-    for (std::size_t k = 0; k < size; ++k) {
-      const auto byte = static_cast<unsigned char>(bytes[at_ + k]);
-      const std::size_t shift = 8 * (format_ == PlyFormat::kBinaryBigEndian ? size - 1 - k : k);
-      bits |= static_cast<std::uint64_t>(byte) << shift;
-    }
+    const std::uint64_t bits =
+        unsigned_at(bytes, at_, size, format_ == PlyFormat::kBinaryBigEndian);
     at_ += size;
     if (!type.is_integer) {
-      if (size == 4) {
-        const auto low = static_cast<std::uint32_t>(bits);
-        float value;
-        std::memcpy(&value, &low, 4);
-        return value;
-      }
+      if (size == 4) return float_of_bits(static_cast<std::uint32_t>(bits));
       double value;
       std::memcpy(&value, &bits, 8);
       return value;

@@ -1,5 +1,5 @@
 #pragma once
-// PLY files (Stanford polygon format), read without assimp: ASCII, binary little endian and
+// PLY files (Stanford polygon format), read by the project: ASCII, binary little endian and
 // binary big endian; the vertex element's x, y, z (any scalar type) and the face element's
 // vertex_indices (or vertex_index) list of any integer types. Every other property and
 // element is read past and skipped; faces of fewer than 3 corners (points, edges) are

@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/input_error.hpp"
@@ -40,6 +42,16 @@ class MeshFileFixture : public ::testing::Test {
       return error.what();
     }
     return "";
+  }
+
+  // What follows the file's name in the InputError `read` throws for `path`, once checked to
+  // be one line starting with the name: ":LINE: reason" or ": byte N: reason".
+  template <typename Read>
+  static std::string after_file_name(const std::filesystem::path& path, Read&& read) {
+    const std::string message = error_of(std::forward<Read>(read));
+    EXPECT_EQ(message.rfind(path.string() + ":", 0), 0u) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    return message.substr(std::min(message.size(), path.string().size()));
   }
 
   std::filesystem::path dir_;

@@ -131,7 +131,7 @@ TEST_F(MeshFiles, NanVertexIsRefused) {
   const fs::path path =
       write("nan.obj", "v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n");
   expect_one_line_naming(load_error(path), path,
-                         "vertex (0, nan, 0) has a NaN or infinite coordinate");
+                         ":3: vertex 3 (0, nan, 0) has a NaN or infinite coordinate");
 }
 
 TEST_F(MeshFiles, InfiniteVertexIsRefused) {
@@ -154,7 +154,8 @@ TEST_F(MeshFiles, GarbageIsRefusedOnOneLine) {
   const fs::path path = write("garbage.ply", "this is not\na ply file\n");
   expect_one_line_naming(load_error(path), path, "not a PLY file");
   const fs::path stl = write("garbage.stl", "this is not\nan stl file\n");
-  expect_one_line_naming(load_error(stl), stl, "assimp cannot read it");
+  expect_one_line_naming(load_error(stl), stl,
+                         ": byte 0: 24 bytes: neither ASCII STL (it does not start with 'solid')");
 }
 
 // A binary little-endian PLY of the tetrahedron above (float x, y, z; uchar count, int
@@ -182,8 +183,8 @@ TEST_F(MeshFiles, BinaryPlyTetrahedronIsRead) {
   EXPECT_EQ(mesh.triangles.size(), 4u);
 }
 
-// A 200-byte PLY header announcing 2e9 vertices made assimp reserve for them (16 GB and
-// growing): the claim is weighed against the file's size before assimp reads it.
+// A 200-byte PLY header announcing 2e9 vertices made the former importer reserve for them (16
+// GB and growing): the claim is weighed against the file's size before anything is allocated.
 TEST_F(MeshFiles, PlyHeaderClaimingMoreVerticesThanTheFileHoldsIsRefusedAtOnce) {
   const fs::path binary = write("huge.ply", binary_tetra_ply(-1, "2000000000"));
   expect_one_line_naming(load_error(binary), binary,
@@ -221,7 +222,8 @@ TEST_F(MeshFiles, FaceIndexingAMissingVertexIsRefusedInEachIndexedFormat) {
   expect_one_line_naming(load_error(binary_ply), binary_ply,
                          "face 2 indexes vertex 1000, the file has 4 vertices");
   const fs::path obj = write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 8\n");
-  expect_one_line_naming(load_error(obj), obj, "");
+  expect_one_line_naming(load_error(obj), obj,
+                         ":5: face 2 indexes vertex 8, and 3 vertices come before it");
 }
 
 // Found by fuzz_mesh_ply: a face element declared without its index list ("element face
