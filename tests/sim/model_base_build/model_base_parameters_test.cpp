@@ -59,7 +59,7 @@ TEST(ModelBaseParameters, ChangingAnyFieldOfTheBuildChangesTheText) {
           EXPECT_EQ(changed, text) << key;
         }
       });
-  EXPECT_EQ(conditioning_keys, 6);
+  EXPECT_EQ(conditioning_keys, 8);
 }
 
 TEST(ModelBaseParameters, ChangingAnyScannerFieldButTheLineRateAndFramesChangesTheText) {
