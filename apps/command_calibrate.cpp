@@ -154,13 +154,13 @@ void run_belt(const CalibrateOptions& options) {
                    result.belt_height_mm, result.belt_slope_x, result.belt_rms_mm));
   report.line(
       text("encoder %.6f mm per tick (ramp line RMS %.4f mm over %.0f frames); grid %.6f mm",
-           result.encoder_mm_per_tick, result.ramp_rms_mm,
-           static_cast<double>(result.ramp_ticks_height.size()), conditioning.grid_mm));
+           result.encoder_mm_per_tick, result.ramp.rms_mm,
+           static_cast<double>(result.ramp.ticks_height.size()), conditioning.grid_mm));
   report.line(result.pitch_measured
                   ? text("laser sheet pitch %.4f deg (turned ramp line RMS %.4f mm over %.0f "
                          "frames)",
-                         result.sheet_pitch_deg, result.ramp_turned_rms_mm,
-                         static_cast<double>(result.ramp_turned_ticks_height.size()))
+                         result.sheet_pitch_deg, result.ramp_turned.rms_mm,
+                         static_cast<double>(result.ramp_turned.ticks_height.size()))
                   : std::string("laser sheet pitch not measured (no --block-turned scan): "
                                 "taken as 0"));
   std::vector<Eigen::Vector2d> belt_xz;
@@ -170,7 +170,7 @@ void run_belt(const CalibrateOptions& options) {
   report.picture(
       "belt-ramp",
       plot_picture("ramp block height per frame (both ways round)", "encoder ticks", "height mm",
-                   {{result.ramp_ticks_height}, {result.ramp_turned_ticks_height}}));
+                   {{result.ramp.ticks_height}, {result.ramp_turned.ticks_height}}));
   update_yaml_file(options.hardware, {{"calibration.mount", yaml_of(result.mount)}});
   update_yaml_file(options.config,
                    {{"scanner.encoder_mm_per_tick", YAML::Node(result.encoder_mm_per_tick)},

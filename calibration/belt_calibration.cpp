@@ -63,19 +63,13 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
-struct RampScan {
-  std::string reason;  // empty when the scan is usable
-  double slope_mm_per_tick = 0.0;
-  double rms_mm = 0.0;
-  std::vector<Eigen::Vector2d> ticks_height;
-};
-
 // The ramp's top height in each frame (the median of the points above the belt) over the
 // middle 70 % of its rise, and the straight line of height against encoder count.
-RampScan fit_ramp_scan(const std::vector<StripeFrame>& frames, const RampBlock& block,
+// `why` is left empty when the scan is usable.
+RampLine fit_ramp_line(const std::vector<StripeFrame>& frames, const RampBlock& block,
                        const TriangulationGeometry& geometry,
-                       const StripeExtractionParameters& extraction) {
-  RampScan scan;
+                       const StripeExtractionParameters& extraction, std::string& why) {
+  RampLine line;
   char reason[200];
   const double rise = block.high_height_mm - block.low_height_mm;
   const double low = block.low_height_mm + 0.15 * rise;
@@ -88,25 +82,25 @@ RampScan fit_ramp_scan(const std::vector<StripeFrame>& frames, const RampBlock& 
     if (heights.size() < 20) continue;
     const double height = median(std::move(heights));
     if (height > low && height < high)
-      scan.ticks_height.emplace_back(static_cast<double>(frame.encoder_ticks), height);
+      line.ticks_height.emplace_back(static_cast<double>(frame.encoder_ticks), height);
   }
-  if (scan.ticks_height.size() < 5) {
+  if (line.ticks_height.size() < 5) {
     std::snprintf(reason, sizeof reason,
                   "%zu frames see its slope (heights %.1f to %.1f mm), at least 5 needed: is it "
                   "the block of the target file?",
-                  scan.ticks_height.size(), low, high);
-    scan.reason = reason;
-    return scan;
+                  line.ticks_height.size(), low, high);
+    why = reason;
+    return line;
   }
-  scan.slope_mm_per_tick = fit_straight_line(scan.ticks_height, &scan.rms_mm)(1);
-  if (scan.rms_mm > 0.5) {
+  line.slope_mm_per_tick = fit_straight_line(line.ticks_height, &line.rms_mm)(1);
+  if (line.rms_mm > 0.5) {
     std::snprintf(reason, sizeof reason,
                   "its heights leave a straight line by %.2f mm RMS: not a ramp of the target "
                   "file's shape",
-                  scan.rms_mm);
-    scan.reason = reason;
+                  line.rms_mm);
+    why = reason;
   }
-  return scan;
+  return line;
 }
 
 }  // namespace
@@ -174,34 +168,30 @@ BeltCalibrationResult calibrate_belt(const std::vector<StripeFrame>& empty_belt,
   ScannerCalibration mounted = calibration;
   mounted.mount = result.mount;
   const TriangulationGeometry geometry = calibrated_triangulation_geometry(nominal, mounted);
-  RampScan scan = fit_ramp_scan(ramp, block, geometry, extraction);
-  if (!scan.reason.empty()) {
-    result.reason = "ramp block: " + scan.reason;
-    return result;
-  }
-  result.ramp_ticks_height = std::move(scan.ticks_height);
-  result.ramp_rms_mm = scan.rms_mm;
+  // Each scan's line, or the reason it is unusable, named after the scan.
+  const auto fit = [&](const std::vector<StripeFrame>& frames, const char* scan, RampLine& line) {
+    std::string why;
+    line = fit_ramp_line(frames, block, geometry, extraction, why);
+    if (!why.empty()) result.reason = scan + (": " + why);
+    return why.empty();
+  };
+  if (!fit(ramp, "ramp block", result.ramp)) return result;
   const double rise = block.rise_per_mm();
   if (ramp_turned.empty()) {
-    result.encoder_mm_per_tick = std::abs(scan.slope_mm_per_tick) / rise;
+    result.encoder_mm_per_tick = std::abs(result.ramp.slope_mm_per_tick) / rise;
     result.ok = true;
     return result;
   }
-  RampScan turned = fit_ramp_scan(ramp_turned, block, geometry, extraction);
-  if (!turned.reason.empty()) {
-    result.reason = "turned ramp block: " + turned.reason;
-    return result;
-  }
-  result.ramp_turned_ticks_height = std::move(turned.ticks_height);
-  result.ramp_turned_rms_mm = turned.rms_mm;
+  if (!fit(ramp_turned, "turned ramp block", result.ramp_turned)) return result;
   // The top z = a + b·y (b = ±rise) met by the sheet from its foot at y = −m·ticks: its
   // in-sheet height s solves s·cos p = a + b·(y + s·sin p), so ds/dticks = −b·m / (cos p −
   // b·sin p). The block as drawn (high end downstream, b = +rise) falls with the ticks, turned
   // round it rises; with k the two slopes, 1/k_up − 1/k_down = 2·cos p / (rise·m) and
   // 1/k_up + 1/k_down = 2·sin p / m.
-  const bool drawn_first = scan.slope_mm_per_tick < 0.0;
-  const double k_down = drawn_first ? scan.slope_mm_per_tick : turned.slope_mm_per_tick;
-  const double k_up = drawn_first ? turned.slope_mm_per_tick : scan.slope_mm_per_tick;
+  const double k_first = result.ramp.slope_mm_per_tick;
+  const double k_second = result.ramp_turned.slope_mm_per_tick;
+  const double k_down = k_first < 0.0 ? k_first : k_second;
+  const double k_up = k_first < 0.0 ? k_second : k_first;
   if (!(k_down < 0.0 && k_up > 0.0)) {
     result.reason =
         "ramp block: both scans' heights change the same way with the encoder: turn the block "

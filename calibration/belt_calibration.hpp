@@ -30,6 +30,13 @@
 
 namespace cosmos {
 
+// One scan of the ramp block: its top's height per used frame and the line through them.
+struct RampLine {
+  double slope_mm_per_tick = 0.0;
+  double rms_mm = 0.0;                        // heights about the line
+  std::vector<Eigen::Vector2d> ticks_height;  // (ticks, height) of each used frame
+};
+
 struct BeltCalibrationResult {
   bool ok = false;
   std::string reason;
@@ -39,14 +46,12 @@ struct BeltCalibrationResult {
   double camera_height_mm = 0.0;  // camera centre above the belt
   double belt_height_mm = 0.0;    // residual belt plane z = height + slope_x x, new frame
   double belt_slope_x = 0.0;
-  double belt_rms_mm = 0.0;         // belt points about that plane
-  double ramp_rms_mm = 0.0;         // ramp heights about their line
-  double ramp_turned_rms_mm = 0.0;  // the same, the block turned round
-  bool pitch_measured = false;      // the turned block was scanned
-  double sheet_pitch_deg = 0.0;     // the sheet leans downstream with height (sheet_pitch.hpp)
+  double belt_rms_mm = 0.0;  // belt points about that plane
+  RampLine ramp;
+  RampLine ramp_turned;          // empty when the turned block was not scanned
+  bool pitch_measured = false;   // the turned block was scanned
+  double sheet_pitch_deg = 0.0;  // the sheet leans downstream with height (sheet_pitch.hpp)
   std::vector<Eigen::Vector3d> belt_points_scanner;  // for the report
-  std::vector<Eigen::Vector2d> ramp_ticks_height;    // (ticks, height) of each used frame
-  std::vector<Eigen::Vector2d> ramp_turned_ticks_height;
 };
 
 // `camera` and `laser` calibrated; `nominal` supplies the designed camera where uncalibrated.
