@@ -55,7 +55,8 @@ class CellWorld {
   std::string simulated_part_in(std::int64_t first_profile, std::int64_t last_profile) const;
   // The placed part a pose (or a rejection) stands for, found by its position on the belt
   // among the parts its profiles cross (so each of a blob's parts finds its own truth), and
-  // for a pose of that part its ADD-S error; placed_index -1 when none.
+  // for a pose of that part its ADD-S error; placed_index -1 when none. With --repeat, pass p's
+  // parts are indices p x simulated_parts_placed() on.
   struct SimulatedTruth {
     int placed_index = -1;
     std::string name;

@@ -170,11 +170,27 @@ CellWorld::SimulatedTruth CellWorld::simulated_truth_of(const PartRecognition& r
   SimulatedTruth truth;
   if (!state_->conveyor) return truth;
   const PartPose& pose = recognition.pose;
-  const RigidTransform T_belt_part = belt_pose_of(pose, T_cell_scanner, mm_per_tick);
-  const PlacedSimPart* placed = state_->conveyor->placed_part_at(
-      T_belt_part.translation_mm, recognition.first_profile, recognition.last_profile);
+  RigidTransform T_belt_part = belt_pose_of(pose, T_cell_scanner, mm_per_tick);
+  std::int64_t first_profile = recognition.first_profile;
+  std::int64_t last_profile = recognition.last_profile;
+  std::int64_t pass = 0;
+  if (state_->repeat_profiles > 0) {
+    // --repeat: the pass's own profiles, and the belt position its parts had in the first
+    // pass (the encoder counts on, so each pass lies pass_start profiles further along).
+    pass = std::max<std::int64_t>(first_profile, 0) / state_->repeat_profiles;
+    const std::int64_t pass_start = pass * state_->repeat_profiles;
+    first_profile -= pass_start;
+    last_profile -= pass_start;
+    T_belt_part.translation_mm.y() += static_cast<double>(pass_start) *
+                                      state_->config.scanner.encoder_ticks_per_profile *
+                                      mm_per_tick;
+  }
+  const PlacedSimPart* placed =
+      state_->conveyor->placed_part_at(T_belt_part.translation_mm, first_profile, last_profile);
   if (!placed) return truth;
-  truth.placed_index = static_cast<int>(placed - state_->conveyor->placed_parts().data());
+  const std::vector<PlacedSimPart>& all = state_->conveyor->placed_parts();
+  truth.placed_index =
+      static_cast<int>(pass * static_cast<std::int64_t>(all.size()) + (placed - all.data()));
   truth.name = placed->name;
   if (pose.status != PoseStatus::kOk || pose.part_name != placed->name) return truth;
   std::unique_ptr<AddSDistance>& add_s = state_->add_s[placed->name];

@@ -97,7 +97,10 @@ struct GroundTruthTally {
     if (truth.placed_index < 0) {
       ++unpaired;
     } else {
-      ++reported[static_cast<std::size_t>(truth.placed_index)];
+      // --repeat: each pass's parts are placed again, after the first pass's.
+      const auto index = static_cast<std::size_t>(truth.placed_index);
+      if (index >= reported.size()) reported.resize(index + 1, 0);
+      ++reported[index];
     }
     if (pose.status != PoseStatus::kOk) {
       ++rejected;

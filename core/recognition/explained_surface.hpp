@@ -21,6 +21,19 @@ namespace cosmos {
 std::vector<std::uint8_t> explained_pixels(const RangeImage& scene, const PartDistanceField& part,
                                            const RigidTransform& T_scene_part, double distance_mm);
 
+// 1 per pixel of `pixels` (a mask of the scene's size) over or under the part placed at
+// T_scene_part: the line through its point along the scene's z axis (the belt's normal)
+// passes within distance_mm of the part's surface, within reach_mm of the part's origin (the
+// part's diameter covers it). That is the part's footprint on the belt, all of it, not only
+// what the scan saw: what a recognized part leaves unexplained inside its footprint is its
+// own unmodelled or mis-registered surface; what lies outside every footprint is another
+// object. The line is traced through the distance field in steps of the distance itself.
+std::vector<std::uint8_t> footprint_pixels(const RangeImage& scene,
+                                           const std::vector<std::uint8_t>& pixels,
+                                           const PartDistanceField& part,
+                                           const RigidTransform& T_scene_part, double reach_mm,
+                                           double distance_mm);
+
 // Pixels of `mask` whose 8 neighbours are in it too: what is left of a region once its
 // one-pixel fringe (mixed pixels at the explained part's border, noise) is taken away.
 std::int64_t interior_pixels(const std::vector<std::uint8_t>& mask, int width, int height);

@@ -3,48 +3,17 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "core/recognition/explained_surface.hpp"
+#include "realtime/cell/blob_regions.hpp"
 
 namespace cosmos {
 namespace {
 
 RigidTransform T_belt_loop() {
   return {Eigen::Vector3d(-1, -1, 1).asDiagonal().toDenseMatrix(), Eigen::Vector3d::Zero()};
-}
-
-// The pixels of `view` that still hold data, their centroid (loop frame) and row range.
-struct Remaining {
-  std::vector<std::uint8_t> mask;
-  std::int64_t pixels = 0;
-  double interior_mm2 = 0;
-  Eigen::Vector3d centroid_mm = Eigen::Vector3d::Zero();
-  int first_row = 0;
-  int last_row = -1;
-};
-
-Remaining remaining_of(const RangeImage& image) {
-  Remaining out;
-  const int width = image.width();
-  const int height = image.height();
-  out.mask.assign(static_cast<std::size_t>(width) * height, 0);
-  out.first_row = height;
-  for (int row = 0; row < height; ++row) {
-    for (int column = 0; column < width; ++column) {
-      const float z = image.z_mm(column, row);
-      if (std::isnan(z)) continue;
-      out.mask[static_cast<std::size_t>(row) * width + column] = 1;
-      ++out.pixels;
-      out.centroid_mm += Eigen::Vector3d(image.x_mm(column), image.y_mm(row), z);
-      out.first_row = std::min(out.first_row, row);
-      out.last_row = std::max(out.last_row, row);
-    }
-  }
-  if (out.pixels > 0) out.centroid_mm /= static_cast<double>(out.pixels);
-  out.interior_mm2 = static_cast<double>(interior_pixels(out.mask, width, height)) *
-                     image.pixel_size_x_mm * image.pixel_size_y_mm;
-  return out;
 }
 
 // Rows of `explained` that hold a pixel, as the recognition's profile range.
@@ -85,44 +54,6 @@ int estimated_parts(double area_mm2, const ModelBase& base) {
   return std::max(1, static_cast<int>(std::ceil(area_mm2 / std::max(largest_mm2, 1.0) - 0.25)));
 }
 
-// Where the blob narrows to a neck along one axis (rows: along the belt, parts touching end
-// to end; columns: across it, parts side by side): the counts of its pixels per row (or
-// column) at most a fifth of the largest, one cut per neck at its narrowest, away from the
-// blob's ends.
-std::vector<int> necks(const std::vector<int>& count) {
-  constexpr double kNeckFraction = 0.2;
-  constexpr int kEnd = 40;  // 16 mm at 0.4 mm: a part is longer and wider than that
-  const int widest = count.empty() ? 0 : *std::max_element(count.begin(), count.end());
-  int first = -1, last = -1;
-  for (int k = 0; k < static_cast<int>(count.size()); ++k)
-    if (count[static_cast<std::size_t>(k)] > 0) {
-      if (first < 0) first = k;
-      last = k;
-    }
-  const auto narrow = [&](int k) {
-    return count[static_cast<std::size_t>(k)] <= kNeckFraction * widest;
-  };
-  std::vector<int> cuts;
-  for (int k = first + kEnd; k < last - kEnd; ++k) {
-    if (!narrow(k)) continue;
-    int narrowest = k;
-    for (; k < last - kEnd && narrow(k); ++k)
-      if (count[static_cast<std::size_t>(k)] < count[static_cast<std::size_t>(narrowest)])
-        narrowest = k;
-    if (cuts.empty() || narrowest - cuts.back() >= kEnd) cuts.push_back(narrowest);
-  }
-  return cuts;
-}
-
-std::vector<int> pixels_per(const RangeImage& image, bool rows) {
-  std::vector<int> count(static_cast<std::size_t>(rows ? image.height() : image.width()), 0);
-  for (int row = 0; row < image.height(); ++row)
-    for (int column = 0; column < image.width(); ++column)
-      if (!std::isnan(image.z_mm(column, row)))
-        ++count[static_cast<std::size_t>(rows ? row : column)];
-  return count;
-}
-
 // Whether `recognition` is a part already recognized in the blob, at the same place: the
 // same base part within a tenth of its diameter (the identification criterion of ADD-S).
 bool repeats_a_part(const PartRecognition& recognition, const std::vector<PartRecognition>& parts,
@@ -146,149 +77,258 @@ double typical_view_area_mm2(const ModelBase& base) {
   return areas[areas.size() / 2];
 }
 
-BlobRecognition recognize_blob(PartBuilder& builder, const PartRecognitionContext& context,
-                               std::int64_t part_seq) {
-  const BlobRecognitionParameters& parameters = context.blob;
-  const auto start = std::chrono::steady_clock::now();
-  const auto since = [](std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+namespace {
+
+// A recognition that failed on what remained of a region of the blob, with what remained.
+struct Unrecognized {
+  PartRecognition recognition;
+  Remaining remaining;
+  RangeImage image;  // what remained, its pixels only
+};
+
+// The scene loop over one blob: parts recognized and their surface taken away until what
+// remains is explained, too small or not recognized; what is not recognized is taken apart at
+// its necks, or reported.
+class SceneRecognition {
+ public:
+  SceneRecognition(PartBuilder& builder, const PartRecognitionContext& context,
+                   std::int64_t part_seq)
+      : builder_(builder),
+        context_(context),
+        parameters_(context.blob),
+        part_seq_(part_seq),
+        start_(std::chrono::steady_clock::now()) {
+    PartView view = extract_part_view(builder, context);
+    width_ = view.image.width();
+    height_ = view.image.height();
+    const double typical_area_mm2 = typical_view_area_mm2(*context.model_base);
+    min_stretch_mm2_ = parameters_.min_stretch_fraction * typical_area_mm2;
+    min_unexplained_mm2_ = parameters_.min_unexplained_fraction * typical_area_mm2;
+    blob_.points_loop_mm = sampled_points(view.image);
+    blob_.image = std::move(view.image);
+    explained_.assign(pixel_count(), 0);
+  }
+
+  BlobRecognition run() {
+    std::optional<Unrecognized> rest = recognize_region(nothing_outside(), 0);
+    if (rest && !take_apart_at_necks(*rest)) report(*rest, any_recognized());
+    if (builder_.truncated && builder_.tracked_rows > builder_.cosmos.rows())
+      report_unscanned_rest();
+    blob_.merged = blob_.parts.size() > 1;
+    return std::move(blob_);
+  }
+
+ private:
+  struct Footprint {
+    const PartDistanceField* field;
+    RigidTransform T_loop_part;
+    double reach_mm;
   };
-  PartView view = extract_part_view(builder, context);
-  const int width = view.image.width();
-  const double min_remaining_mm2 =
-      parameters.min_remaining_fraction * typical_view_area_mm2(*context.model_base);
-  BlobRecognition blob;
-  for (int row = 0; row < view.image.height(); row += 2)
-    for (int column = 0; column < width; column += 2)
-      if (const float z = view.image.z_mm(column, row); !std::isnan(z))
-        blob.points_loop_mm.emplace_back(view.image.x_mm(column), view.image.y_mm(row), z);
-  blob.image = view.image;
-  // The scene loop over one region of the blob (pixels outside it excluded from the start).
-  const auto recognize_region = [&](std::vector<std::uint8_t> excluded, bool skip_small) {
-    PartView view = extract_part_view(builder, context, &excluded);
+
+  std::size_t pixel_count() const { return static_cast<std::size_t>(width_) * height_; }
+  std::vector<std::uint8_t> nothing_outside() const {
+    return std::vector<std::uint8_t>(pixel_count(), 0);
+  }
+  bool any_recognized() const {
+    return std::any_of(blob_.parts.begin(), blob_.parts.end(), [](const PartRecognition& part) {
+      return part.pose.status == PoseStatus::kOk;
+    });
+  }
+  std::int64_t next_seq() const {
+    return part_seq_ + static_cast<std::int64_t>(blob_.parts.size());
+  }
+
+  // The interior area of what remains outside the footprints of the parts recognized so far.
+  double unexplained_mm2(const RangeImage& image, const Remaining& remaining) const {
+    std::vector<std::uint8_t> outside = remaining.mask;
+    for (const Footprint& footprint : footprints_) {
+      const std::vector<std::uint8_t> under =
+          footprint_pixels(image, outside, *footprint.field, footprint.T_loop_part,
+                           footprint.reach_mm, parameters_.explained_distance_mm);
+      for (std::size_t i = 0; i < outside.size(); ++i) outside[i] &= under[i] ? 0 : 1;
+    }
+    return static_cast<double>(interior_pixels(outside, image.width(), image.height())) *
+           image.pixel_size_x_mm * image.pixel_size_y_mm;
+  }
+
+  // The loop over one region (pixels of `excluded` left out from the start, and whatever the
+  // parts recognized so far explain). Nothing is done when what the region holds outside
+  // their footprints is under min_start_mm2. Returns the failed recognition that ended it,
+  // if one did, unreported.
+  std::optional<Unrecognized> recognize_region(std::vector<std::uint8_t> excluded,
+                                               double min_start_mm2) {
+    for (std::size_t i = 0; i < excluded.size(); ++i) excluded[i] |= explained_[i];
+    PartView view = extract_part_view(builder_, context_, &excluded);
     Remaining remaining = remaining_of(view.image);
-    if (skip_small && remaining.interior_mm2 < min_remaining_mm2) return;
-    double features_ms = since(start);
+    if (min_start_mm2 > 0 && unexplained_mm2(view.image, remaining) < min_start_mm2) return {};
+    double features_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_)
+            .count();
     for (;;) {
-      const std::int64_t seq = part_seq + static_cast<std::int64_t>(blob.parts.size());
-      PartRecognition recognition = recognize_part_view(view, builder, context, seq, features_ms);
-      if (recognition.result.status != RecognitionStatus::kOk) {
-        const int count = estimated_parts(remaining.interior_mm2, *context.model_base);
-        const std::string why = recognition.pose.reason;
-        if (count > 1)
-          recognition.pose.reason =
-              "unresolved cluster of " + std::to_string(count) + " parts: " + why;
-        else if (!blob.parts.empty())
-          recognition.pose.reason = "merged with a neighbour, not recognized: " + why;
-        place_rejection(remaining, builder, context, recognition);
-        blob.parts.push_back(std::move(recognition));
-        for (int k = 1; k < count; ++k) {
-          PartRecognition more = blob.parts.back();
-          more.pose.part_seq = part_seq + static_cast<std::int64_t>(blob.parts.size());
-          blob.parts.push_back(std::move(more));
-        }
-        break;
-      }
-      const PartSearchModel& model = context.recognizer->part_search_model(recognition.result.part);
+      PartRecognition recognition =
+          recognize_part_view(view, builder_, context_, next_seq(), features_ms);
+      if (recognition.result.status != RecognitionStatus::kOk)
+        return Unrecognized{std::move(recognition), std::move(remaining), std::move(view.image)};
+      const auto cut = std::chrono::steady_clock::now();
+      const PartSearchModel& model =
+          context_.recognizer->part_search_model(recognition.result.part);
       const std::vector<std::uint8_t> explained =
-          explained_pixels(view.image, model.field, recognition.result.T_scanner_part,
-                           parameters.explained_distance_mm);
-      set_profiles_of(explained, width, builder, recognition);
+          explained_pixels(blob_.image, model.field, recognition.result.T_scanner_part,
+                           parameters_.explained_distance_mm);
+      set_profiles_of(explained, width_, builder_, recognition);
       std::size_t newly_excluded = 0;
       for (std::size_t i = 0; i < excluded.size(); ++i) {
         newly_excluded += explained[i] && !excluded[i] ? 1 : 0;
         excluded[i] |= explained[i];
+        explained_[i] |= explained[i];
       }
+      footprints_.push_back(
+          {&model.field, recognition.result.T_scanner_part,
+           context_.model_base->parts[static_cast<std::size_t>(recognition.result.part)]
+               .diameter_mm});
       // What is left of a part its explained surface missed can be recognized as that part
       // again: one pose per part, the rest of its surface taken away too.
-      const bool seen_again = repeats_a_part(recognition, blob.parts, *context.model_base);
-      if (!seen_again) blob.parts.push_back(std::move(recognition));
-      if (seen_again && newly_excluded == 0) break;
-      const auto cut = std::chrono::steady_clock::now();
-      view = extract_part_view(builder, context, &excluded);
+      const bool seen_again = repeats_a_part(recognition, blob_.parts, *context_.model_base);
+      if (!seen_again) blob_.parts.push_back(std::move(recognition));
+      if (seen_again && newly_excluded == 0) return {};
+      view = extract_part_view(builder_, context_, &excluded);
       remaining = remaining_of(view.image);
-      if (remaining.interior_mm2 < min_remaining_mm2) break;
-      if (static_cast<int>(blob.parts.size()) >= parameters.max_parts_per_blob) {
+      if (unexplained_mm2(view.image, remaining) < min_unexplained_mm2_) return {};
+      if (static_cast<int>(blob_.parts.size()) >= parameters_.max_parts_per_blob) {
         // What remains is reported, not recognized: the blob has used its recognitions.
-        PartRecognition rest = blob.parts.back();
+        PartRecognition rest = blob_.parts.back();
         rest.result = RecognitionResult{};
         rest.pose.status = PoseStatus::kRejected;
         rest.pose.part_name.clear();
         rest.pose.part_index = rest.pose.view_index = -1;
         rest.pose.score = rest.pose.registration_rms_mm = 0;
-        rest.pose.part_seq = part_seq + static_cast<std::int64_t>(blob.parts.size());
+        rest.pose.part_seq = next_seq();
         rest.pose.reason =
             "unresolved cluster of " +
-            std::to_string(estimated_parts(remaining.interior_mm2, *context.model_base)) +
+            std::to_string(estimated_parts(remaining.interior_mm2, *context_.model_base)) +
             " parts: more than max_parts_per_blob in one blob";
-        place_rejection(remaining, builder, context, rest);
-        blob.parts.push_back(std::move(rest));
-        break;
+        place_rejection(remaining, builder_, context_, rest);
+        blob_.remnants.push_back({blob_.parts.size(), 1, sampled_points(view.image)});
+        blob_.parts.push_back(std::move(rest));
+        return {};
       }
-      features_ms = since(cut);
-    }
-  };
-  recognize_region(
-      std::vector<std::uint8_t>(static_cast<std::size_t>(width) * view.image.height(), 0), false);
-  // Nothing recognized in a blob with necks (touching parts meet in a few pixels): each
-  // stretch between necks is recognized on its own, along the belt first, then across it.
-  const int height = view.image.height();
-  const auto none_recognized = [&blob] {
-    return std::none_of(blob.parts.begin(), blob.parts.end(), [](const PartRecognition& part) {
-      return part.pose.status == PoseStatus::kOk;
-    });
-  };
-  for (const bool along_rows : {true, false}) {
-    const std::vector<int> cuts = necks(pixels_per(view.image, along_rows));
-    if (cuts.empty() || !none_recognized()) continue;
-    blob.parts.clear();
-    int begin = 0;
-    for (std::size_t k = 0; k <= cuts.size(); ++k) {
-      const int end = k < cuts.size() ? cuts[k] : (along_rows ? height : width);
-      std::vector<std::uint8_t> outside(static_cast<std::size_t>(width) * height, 1);
-      for (int row = 0; row < height; ++row)
-        for (int column = 0; column < width; ++column) {
-          const int at = along_rows ? row : column;
-          if (at >= begin && at < end) outside[static_cast<std::size_t>(row) * width + column] = 0;
-        }
-      recognize_region(std::move(outside), true);
-      begin = end;
+      features_ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cut).count();
     }
   }
-  // Stretches all too small to be parts: the blob as a whole is what gets reported.
-  if (blob.parts.empty())
-    recognize_region(std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height, 0), false);
-  if (builder.truncated && builder.tracked_rows > builder.cosmos.rows()) {
-    // The rows beyond the builders' held more of the blob: one ERROR for that rest.
-    PartRecognition rest = blob.parts.back();
+
+  // A rejection for what was not recognized: one per part it is estimated to hold.
+  void report(Unrecognized& unrecognized, bool beside_others) {
+    PartRecognition& recognition = unrecognized.recognition;
+    const int count = estimated_parts(unrecognized.remaining.interior_mm2, *context_.model_base);
+    const std::string why = recognition.pose.reason;
+    if (count > 1)
+      recognition.pose.reason = "unresolved cluster of " + std::to_string(count) + " parts: " + why;
+    else if (beside_others)
+      recognition.pose.reason = "merged with a neighbour, not recognized: " + why;
+    recognition.pose.part_seq = next_seq();
+    place_rejection(unrecognized.remaining, builder_, context_, recognition);
+    blob_.remnants.push_back({blob_.parts.size(), count, sampled_points(unrecognized.image)});
+    blob_.parts.push_back(std::move(recognition));
+    for (int k = 1; k < count; ++k) {
+      PartRecognition more = blob_.parts.back();
+      more.pose.part_seq = next_seq();
+      blob_.parts.push_back(std::move(more));
+    }
+  }
+
+  // Pixels outside rows (or columns) [begin, end).
+  std::vector<std::uint8_t> outside_stretch(int begin, int end, bool along_rows) const {
+    std::vector<std::uint8_t> outside(pixel_count(), 1);
+    for (int row = 0; row < height_; ++row)
+      for (int column = 0; column < width_; ++column) {
+        const int at = along_rows ? row : column;
+        if (at >= begin && at < end) outside[static_cast<std::size_t>(row) * width_ + column] = 0;
+      }
+    return outside;
+  }
+
+  // What was not recognized, where it narrows to necks (touching parts meet in a few pixels):
+  // each stretch between necks recognized on its own, along the belt first, then across it.
+  // Parts recognized in the stretches leave the rest as one region again (a part the cuts
+  // split is whole in it), recognized or reported once; none recognized either way, the
+  // failures of the last way tried are reported, one per stretch. False when no stretch was
+  // big enough to try.
+  bool take_apart_at_necks(const Unrecognized& unrecognized) {
+    std::vector<Unrecognized> unresolved;
+    for (const bool along_rows : {true, false}) {
+      const std::vector<int> cuts = necks(pixels_per(unrecognized.image, along_rows));
+      if (cuts.empty()) continue;
+      const std::size_t parts_before = blob_.parts.size();
+      std::vector<Unrecognized> failures;
+      int begin = 0;
+      for (std::size_t k = 0; k <= cuts.size(); ++k) {
+        const int end = k < cuts.size() ? cuts[k] : (along_rows ? height_ : width_);
+        std::optional<Unrecognized> failure =
+            recognize_region(outside_stretch(begin, end, along_rows), min_stretch_mm2_);
+        if (failure) failures.push_back(std::move(*failure));
+        begin = end;
+      }
+      if (blob_.parts.size() > parts_before) {
+        std::optional<Unrecognized> rest =
+            recognize_region(nothing_outside(), min_unexplained_mm2_);
+        if (rest) report(*rest, true);
+        return true;
+      }
+      if (!failures.empty()) unresolved = std::move(failures);
+    }
+    const bool several = unresolved.size() > 1 || any_recognized();
+    for (Unrecognized& failure : unresolved) report(failure, several);
+    return !unresolved.empty();
+  }
+
+  // The rows beyond the builder's held more of the blob: one ERROR for that rest.
+  void report_unscanned_rest() {
+    PartRecognition rest = blob_.parts.back();
     rest.result = RecognitionResult{};
     rest.pose.status = PoseStatus::kError;
     rest.pose.part_name.clear();
     rest.pose.part_index = rest.pose.view_index = -1;
     rest.pose.score = rest.pose.registration_rms_mm = 0;
-    rest.pose.part_seq = part_seq + static_cast<std::int64_t>(blob.parts.size());
+    rest.pose.part_seq = next_seq();
     const double unscanned_mm =
-        static_cast<double>(builder.tracked_rows - builder.cosmos.rows()) * context.grid_mm;
+        static_cast<double>(builder_.tracked_rows - builder_.cosmos.rows()) * context_.grid_mm;
     rest.pose.reason = "blob longer than tracking.max_part_length_mm: its last " +
                        std::to_string(static_cast<long long>(std::lround(unscanned_mm))) +
                        " mm were not scanned";
     // Reported where the unscanned stretch lies on the belt (its middle, on the belt's
     // surface across the blob's middle), not where the last recognized part is.
     Remaining unscanned;
-    unscanned.first_row = static_cast<int>(builder.cosmos.rows());
-    unscanned.last_row = static_cast<int>(builder.tracked_rows - 1);
+    unscanned.first_row = static_cast<int>(builder_.cosmos.rows());
+    unscanned.last_row = static_cast<int>(builder_.tracked_rows - 1);
     double x_sum_mm = 0;
-    for (const Eigen::Vector3d& point : blob.points_loop_mm) x_sum_mm += point.x();
+    for (const Eigen::Vector3d& point : blob_.points_loop_mm) x_sum_mm += point.x();
     const double middle_row = 0.5 * (unscanned.first_row + unscanned.last_row);
-    unscanned.centroid_mm = {blob.points_loop_mm.empty()
-                                 ? 0.0
-                                 : x_sum_mm / static_cast<double>(blob.points_loop_mm.size()),
-                             view.image.origin_y_mm + middle_row * view.image.pixel_size_y_mm, 0.0};
-    place_rejection(unscanned, builder, context, rest);
-    blob.parts.push_back(std::move(rest));
+    unscanned.centroid_mm = {
+        blob_.points_loop_mm.empty() ? 0.0
+                                     : x_sum_mm / static_cast<double>(blob_.points_loop_mm.size()),
+        blob_.image.origin_y_mm + middle_row * blob_.image.pixel_size_y_mm, 0.0};
+    place_rejection(unscanned, builder_, context_, rest);
+    blob_.parts.push_back(std::move(rest));
   }
-  blob.merged = blob.parts.size() > 1;
-  return blob;
+
+  PartBuilder& builder_;
+  const PartRecognitionContext& context_;
+  const BlobRecognitionParameters& parameters_;
+  std::int64_t part_seq_;
+  std::chrono::steady_clock::time_point start_;
+  int width_ = 0, height_ = 0;
+  double min_stretch_mm2_ = 0, min_unexplained_mm2_ = 0;
+  BlobRecognition blob_;
+  std::vector<std::uint8_t> explained_;  // what the recognized parts explain, blob-wide
+  std::vector<Footprint> footprints_;    // the recognized parts'
+};
+
+}  // namespace
+
+BlobRecognition recognize_blob(PartBuilder& builder, const PartRecognitionContext& context,
+                               std::int64_t part_seq) {
+  return SceneRecognition(builder, context, part_seq).run();
 }
 
 PartRecognition report_lost_part(const LostPart& lost, const PartRecognitionContext& context,

@@ -4,8 +4,9 @@
 // end or side by side), or closer than the tracker can tell apart (part_tracker.hpp), come as
 // one blob. Scene-level recognition takes them apart: recognize the best-explained part in
 // the blob, take away the surface it explains (its patches, §5.3, and what it occludes of
-// its neighbours, §7.2.5: explained_surface.hpp), recognize what remains, until that is too
-// small to be a part, or is not recognized: then it is reported as REJECTED, "unresolved
+// its neighbours, §7.2.5: explained_surface.hpp), recognize what remains, until what lies
+// outside the recognized parts' footprints is too small to be another part, or is not
+// recognized: then it is taken apart at its necks, or reported as REJECTED, "unresolved
 // cluster of N parts", N estimated from its area.
 //
 // A blob longer than max_part_length_mm lost its end: its unscanned rest is one ERROR pose.
@@ -21,6 +22,16 @@ namespace cosmos {
 struct BlobRecognition {
   std::vector<PartRecognition> parts;  // one per part, in part_seq order
   bool merged = false;                 // it held more than one part
+  // The rejections of surface left unexplained (parts[first], count of them: a cluster's
+  // estimate), with that surface in the loop frame (every other pixel each way). Left over
+  // beside a part recognized in the blob, it may be a piece of a part recognized in another
+  // blob (side by side, the tracker can split a part between two): piece_joiner.hpp.
+  struct Remnant {
+    std::size_t first = 0;
+    int count = 1;
+    std::vector<Eigen::Vector3d> points_loop_mm;
+  };
+  std::vector<Remnant> remnants;
   // Its surface in the loop frame (every other pixel each way), to tell later whether a
   // part recognized nearby explains it (piece_joiner.hpp).
   std::vector<Eigen::Vector3d> points_loop_mm;

@@ -11,6 +11,7 @@
 #include "realtime/cell/cell_state_rule.hpp"
 #include "realtime/cell/piece_joiner.hpp"
 #include "realtime/rt/deadline_pacer.hpp"
+#include "realtime/rt/heap_policy.hpp"
 #include "realtime/rt/latency_histogram.hpp"
 #include "realtime/rt/spsc_ring.hpp"
 #include "realtime/rt/wake_signal.hpp"
@@ -86,6 +87,7 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
     std::vector<JoinedRecognition> ready = joiner.add(std::move(blob), builder);
     loop.returned().try_push(index);  // room for every builder: never full
     for (JoinedRecognition& joined : ready) publish(std::move(joined));
+    return_free_heap_pages();
   }
   for (JoinedRecognition& joined : joiner.finish()) publish(std::move(joined));
   status.recognizer_done.store(true, std::memory_order_release);
@@ -188,6 +190,7 @@ void run_publisher(ScanLoop& loop, Publisher& publisher, SpscRing<CompletedPose>
 CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
                         const PartRecognitionContext& recognition, Publisher& publisher,
                         const CellRunSettings& settings, const PoseObserver& observer) {
+  keep_heap_flat();
   CellRunSummary summary;
   SharedStatus shared;
   SpscRing<CompletedPose> poses(

@@ -29,9 +29,15 @@ struct BlobRecognitionParameters {
   // A blob pixel this close to a recognized part's surface is that part's, mm: a few times
   // the registration's residual and the distance field's half-voxel error.
   double explained_distance_mm = 3.0;
-  // What remains is another part when its interior area is at least this fraction of the
-  // median visible area of the base's views (CosmosView::visible_area_mm2).
-  double min_remaining_fraction = 0.15;
+  // Fractions of the median visible area of the base's views (CosmosView::visible_area_mm2).
+  // A stretch of a blob between two necks is recognized on its own when its interior area is
+  // at least min_stretch_fraction of it: smaller, it is no part alone.
+  double min_stretch_fraction = 0.15;
+  // Once parts are recognized in a blob, what they leave is another object when the interior
+  // area of it outside their footprints (explained_surface.hpp) is at least
+  // min_unexplained_fraction: inside them it is their own unmodelled surface, however large,
+  // and outside them even a part the others mostly hide from the camera shows this much.
+  double min_unexplained_fraction = 0.05;
   int max_parts_per_blob = 6;  // recognitions per blob at most
 };
 

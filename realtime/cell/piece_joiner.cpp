@@ -68,6 +68,11 @@ void PieceJoiner::remember(const Recognized& part) {
 }
 
 void PieceJoiner::release(Piece& piece, std::vector<JoinedRecognition>& out) {
+  // A part recognized since the piece was held (in a blob held itself for a while) explains it.
+  if (!piece.recognized && explained_by_recent(piece)) {
+    piece.rejections.clear();
+    return;
+  }
   for (const Recognized& part : piece.parts) remember(part);
   for (JoinedRecognition& rejection : piece.rejections) out.push_back(std::move(rejection));
   piece.rejections.clear();
@@ -77,7 +82,7 @@ bool PieceJoiner::recognize_together(const Piece& piece, const PartBuilder& buil
                                      std::vector<JoinedRecognition>& out) {
   std::vector<const RangeImage*> images{&piece.image};
   for (const Piece& held : held_)
-    if (!held.recognized && near(held, piece)) images.push_back(&held.image);
+    if (held.shadow && near(held, piece)) images.push_back(&held.image);
   if (images.size() < 2) return false;
   RangeImage joined = union_image(images);
   RecognitionResult result = context_.recognizer->recognize(joined);
@@ -91,7 +96,7 @@ bool PieceJoiner::recognize_together(const Piece& piece, const PartBuilder& buil
   }
   std::int64_t first_profile = piece.first_profile;
   for (auto held = held_.begin(); held != held_.end();) {
-    if (!held->recognized && near(*held, piece)) {
+    if (held->shadow && near(*held, piece)) {
       first_profile = std::min(first_profile, held->first_profile);
       held = held_.erase(held);
     } else {
@@ -129,6 +134,24 @@ bool PieceJoiner::explained_by(const std::vector<Eigen::Vector3d>& points,
   return false;
 }
 
+std::vector<std::uint8_t> PieceJoiner::hold_remnants(BlobRecognition& blob,
+                                                     const PartBuilder& builder) {
+  std::vector<std::uint8_t> held_back(blob.parts.size(), 0);
+  for (BlobRecognition::Remnant& remnant : blob.remnants) {
+    Piece piece;
+    piece.points_loop_mm = std::move(remnant.points_loop_mm);
+    piece.first_profile = blob.parts[remnant.first].first_profile;
+    piece.last_profile = blob.parts[remnant.first].last_profile;
+    const bool explained = explained_by_recent(piece);
+    for (std::size_t k = remnant.first; k < remnant.first + remnant.count; ++k) {
+      held_back[k] = 1;
+      if (!explained) piece.rejections.push_back({std::move(blob.parts[k]), builder.completed_ns});
+    }
+    if (!explained) held_.push_back(std::move(piece));
+  }
+  return held_back;
+}
+
 std::vector<JoinedRecognition> PieceJoiner::add(BlobRecognition blob, const PartBuilder& builder) {
   std::vector<JoinedRecognition> out;
   std::vector<Recognized> parts;
@@ -162,11 +185,10 @@ std::vector<JoinedRecognition> PieceJoiner::add(BlobRecognition blob, const Part
     if (drop) {
       piece = held_.erase(piece);
     } else if (++piece->blobs_waited > kBlobsToWait) {
-      if (!piece->recognized) {
+      if (piece->shadow) {
         // Nearby held pieces none of which was recognized, alone or together: one part.
         for (auto other = std::next(piece); other != held_.end();)
-          other =
-              !other->recognized && near(*piece, *other) ? held_.erase(other) : std::next(other);
+          other = other->shadow && near(*piece, *other) ? held_.erase(other) : std::next(other);
       }
       release(*piece, out);
       piece = held_.erase(piece);
@@ -179,8 +201,10 @@ std::vector<JoinedRecognition> PieceJoiner::add(BlobRecognition blob, const Part
     // A part recognized in an earlier piece explains this one: a duplicate.
     if (explained_by_recent(current)) return out;
     if (builder.has_soft_successor) {
-      for (PartRecognition& part : blob.parts)
-        current.rejections.push_back({std::move(part), builder.completed_ns});
+      const std::vector<std::uint8_t> held_back = hold_remnants(blob, builder);
+      for (std::size_t k = 0; k < blob.parts.size(); ++k)
+        if (!held_back[k])
+          current.rejections.push_back({std::move(blob.parts[k]), builder.completed_ns});
       held_.push_back(std::move(current));
       return out;
     }
@@ -188,6 +212,7 @@ std::vector<JoinedRecognition> PieceJoiner::add(BlobRecognition blob, const Part
   // A softly linked blob with nothing recognized in it may be a piece: of a part already
   // recognized, or of one still to come.
   if (soft_linked && !any_recognized && !blob.parts.empty() && !builder.truncated && !blob.merged) {
+    current.shadow = true;
     current.image = std::move(blob.image);
     if (explained_by_recent(current) || recognize_together(current, builder, out)) return out;
     for (PartRecognition& part : blob.parts)
@@ -195,8 +220,21 @@ std::vector<JoinedRecognition> PieceJoiner::add(BlobRecognition blob, const Part
     held_.push_back(std::move(current));
     return out;
   }
+  // Nothing recognized in a blob the tracker kept apart outright: a piece of a part all the
+  // same when a part recognized nearby explains it (a feature cut off by more than a shadow).
+  if (!any_recognized && !blob.parts.empty() && !builder.truncated && !blob.merged) {
+    if (explained_by_recent(current)) return out;
+    for (PartRecognition& part : blob.parts)
+      current.rejections.push_back({std::move(part), builder.completed_ns});
+    held_.push_back(std::move(current));
+    return out;
+  }
   for (const Recognized& part : parts) remember(part);
-  for (PartRecognition& part : blob.parts) out.push_back({std::move(part), builder.completed_ns});
+  const std::vector<std::uint8_t> held_back = any_recognized
+                                                  ? hold_remnants(blob, builder)
+                                                  : std::vector<std::uint8_t>(blob.parts.size(), 0);
+  for (std::size_t k = 0; k < blob.parts.size(); ++k)
+    if (!held_back[k]) out.push_back({std::move(blob.parts[k]), builder.completed_ns});
   return out;
 }
 
@@ -205,9 +243,9 @@ std::vector<JoinedRecognition> PieceJoiner::finish() {
   while (!held_.empty()) {
     Piece piece = std::move(held_.front());
     held_.pop_front();
-    if (!piece.recognized)
+    if (piece.shadow)
       for (auto other = held_.begin(); other != held_.end();)
-        other = !other->recognized && near(piece, *other) ? held_.erase(other) : std::next(other);
+        other = other->shadow && near(piece, *other) ? held_.erase(other) : std::next(other);
     release(piece, out);
   }
   return out;

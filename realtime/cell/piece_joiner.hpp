@@ -9,9 +9,12 @@
 // share), the piece is that part's and is not reported. Pieces that nothing explains alone
 // are recognized together, as one range image of their surfaces (a part cut by its shadows
 // into pieces none of which is recognizable); what is left is reported: one rejection per
-// group of nearby pieces. A piece recognized on its own while the part it belongs to is
-// recognized too (two poses for one part) is a duplicate: of two softly linked blobs whose
-// parts explain each other, the smaller one's poses are dropped.
+// group of nearby pieces. Surface a blob's recognized parts leave unexplained is held the
+// same way: a piece of a part that another blob holds (side by side, the tracker can split a
+// part between two blobs) is that part's; only what no part explains is reported. A piece
+// recognized on its own while the part it belongs to is recognized too (two poses for one part) is
+// a duplicate: of two softly linked blobs whose parts explain each other, the smaller one's poses
+// are dropped.
 #include <cstdint>
 #include <deque>
 #include <vector>
@@ -50,6 +53,11 @@ class PieceJoiner {
     RangeImage image;
     std::int64_t first_profile = 0, last_profile = 0;
     int blobs_waited = 0;
+    // A softly linked blob with nothing recognized: possibly a part cut by its shadows, which
+    // nearby shadow pieces join (recognized together, or reported once). Other held pieces
+    // (surface a blob's parts left unexplained, a blob the tracker kept apart outright) are
+    // reported as they are unless a part explains them.
+    bool shadow = false;
   };
   bool explained_by(const std::vector<Eigen::Vector3d>& points,
                     const std::vector<Recognized>& parts) const;
@@ -61,6 +69,10 @@ class PieceJoiner {
   bool recognize_together(const Piece& piece, const PartBuilder& builder,
                           std::vector<JoinedRecognition>& out);
   void release(Piece& piece, std::vector<JoinedRecognition>& out);
+  // Surface a blob's recognized parts left unexplained (BlobRecognition::remnants): not
+  // reported when a part recognized earlier explains it, else held for the blobs to come.
+  // Returns which of the blob's parts were taken (held or dropped).
+  std::vector<std::uint8_t> hold_remnants(BlobRecognition& blob, const PartBuilder& builder);
   void remember(const Recognized& part);
 
   const PartRecognitionContext& context_;

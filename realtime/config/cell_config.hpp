@@ -70,7 +70,10 @@ struct TrackingSettings {
   template <class Visitor>
   void visit(Visitor& v) {
     v.fields(tracker);
-    v("max_part_length_mm", max_part_length_mm, "longer parts are cut, mm", Range::above(0, 1e4));
+    v("max_part_length_mm", max_part_length_mm,
+      "longer blobs are cut (their rest reported as ERROR); parts touching end to end are one "
+      "blob, mm",
+      Range::above(0, 1e4));
   }
 };
 

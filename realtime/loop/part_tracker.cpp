@@ -201,8 +201,14 @@ const std::vector<TrackedPart>& PartTracker::add_row(const float* z_mm, std::int
   if (belt)
     for (int c = 0; c < width_; ++c)
       if (belt[c]) belt_row_[static_cast<std::size_t>(c)] = row_index;
-  std::sort(completed_.begin(), completed_.end(),
-            [](const TrackedPart& a, const TrackedPart& b) { return a.id < b.id; });
+  // Parts merged away first, so that the part each joined knows it before it completes in
+  // the same row (a part always merges into an older one, so the newest first resolves chains);
+  // then the completed ones, oldest first.
+  std::sort(completed_.begin(), completed_.end(), [](const TrackedPart& a, const TrackedPart& b) {
+    const bool a_merged = a.merged_into >= 0, b_merged = b.merged_into >= 0;
+    if (a_merged != b_merged) return a_merged;
+    return a_merged ? a.id > b.id : a.id < b.id;
+  });
   std::swap(previous_runs_, runs_);
   return completed_;
 }

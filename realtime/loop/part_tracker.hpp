@@ -96,7 +96,8 @@ class PartTracker {
   PartTracker(const PartTrackerParameters& parameters, int width);
 
   // Labels the row's data pixels (non-NaN) with their part id; returns the parts completed
-  // by this row (valid until the next call).
+  // by this row (valid until the next call): those merged into another first, newest first,
+  // then the others, oldest first.
   // `belt` (optional, one flag per column): where the belt itself was seen. With it, no-data
   // rows are a shadow only where no belt showed: a part never links across belt.
   const std::vector<TrackedPart>& add_row(const float* z_mm, std::int64_t row_index,

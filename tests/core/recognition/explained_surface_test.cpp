@@ -45,6 +45,43 @@ TEST(ExplainedSurface, PixelsOnThePlacedPartAreExplainedAndOthersNot) {
   EXPECT_EQ(std::count(none.begin(), none.end(), 1), 0);
 }
 
+TEST(ExplainedSurface, FootprintHoldsWhatLiesOverOrUnderThePartAndNothingBeside) {
+  // The square stood on its edge (its plane vertical, across x): seen from above it is a
+  // 20 mm line, yet its footprint is the line's pixels at every height, and only those.
+  RangeImage scene(100, 40, 0.5, 0.5);  // x 0 .. 49.5, y 0 .. 19.5
+  std::vector<std::uint8_t> pixels(100 * 40, 0);
+  for (int row = 0; row < 40; ++row)
+    for (int column = 0; column < 100; ++column) {
+      // Every pixel holds a point: 30 mm up where the part's top edge is seen, 2 mm (a
+      // neighbour's low surface) elsewhere.
+      scene.z_mm(column, row) = column == 20 ? 30.0f : 2.0f;
+      pixels[static_cast<std::size_t>(row) * 100 + column] = 1;
+    }
+  // Part frame x along scene y, part y down scene z: the square spans z 0 .. 20 at x = 10.
+  Eigen::Matrix3d R_scene_part;
+  R_scene_part << 0, 0, 1, 1, 0, 0, 0, 1, 0;
+  const RigidTransform T_scene_part{R_scene_part, Eigen::Vector3d(10, 10, 10)};
+  const double distance_mm = 1.0;
+  const std::vector<std::uint8_t> under =
+      footprint_pixels(scene, pixels, square_part(), T_scene_part, 30.0, distance_mm);
+  int inside = 0, beside = 0;
+  for (int row = 0; row < 40; ++row)
+    for (int column = 0; column < 100; ++column) {
+      if (!under[static_cast<std::size_t>(row) * 100 + column]) continue;
+      const double x_mm = scene.x_mm(column);
+      const double y_mm = scene.y_mm(row);
+      // Within distance_mm of the square's line x = 10, y 0 .. 20 (one voxel's slack).
+      const bool near = std::abs(x_mm - 10) <= distance_mm + 0.5 && y_mm <= 20.5;
+      (near ? inside : beside) += 1;
+    }
+  EXPECT_EQ(beside, 0);
+  EXPECT_GE(inside, 5 * 40);  // x 9 .. 11 at least, on every row
+  // Only the pixels asked about are looked at.
+  const std::vector<std::uint8_t> none = footprint_pixels(
+      scene, std::vector<std::uint8_t>(100 * 40, 0), square_part(), T_scene_part, 30.0, 1.0);
+  EXPECT_EQ(std::count(none.begin(), none.end(), 1), 0);
+}
+
 TEST(ExplainedSurface, InteriorPixelsLeaveOutTheFringe) {
   std::vector<std::uint8_t> mask(10 * 6, 0);
   for (int row = 1; row < 5; ++row)
