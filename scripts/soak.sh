@@ -9,7 +9,7 @@
 # fault plan below appended to a copy of the config (unless --no-faults, or the config has a
 # `faults:` section of its own). The cell's RSS is sampled every S seconds (default 60). At the
 # end it prints the RSS samples, the RSS growth from the end of the warm-up (default 5 min)
-# to the end, the median of the first 10 minutes' samples against the median of the last 10
+# to the end, the lowest of the first 10 minutes' samples against the lowest of the last 10
 # (the figure that must stay flat: at most 1 %), the poses by status and every
 # counter of the cell's last COSMOS_STATUS (its summary), and exits non-zero if the cell
 # crashed or RSS grew by more than 1 %. Logs stay in DIR (default build/soak). With
@@ -100,25 +100,18 @@ wait $pid || status=$?
 
 echo "soak: RSS samples (minute, kB):"
 column -t "$rss_log" | sed 's/^/  /'
-# The level at each end is the median of the samples in a window (window_minutes, at least
-# one sample): the recognizer's buffers come and go with each blob, and a single sample can
-# catch one in flight.
+# The level at each end is the floor of the samples in a window (window_minutes, at least one
+# sample): the recognizer's buffers come and go with each blob, and how often a sample catches
+# one in flight depends on the load; what a leak raises is the floor.
 window_minutes=10
 growth=$(awk -v warm="$warmup_minutes" -v window="$window_minutes" '
-  function median(values, n,    i, j, t) {
-    for (i = 2; i <= n; ++i) for (j = i; j > 1 && values[j - 1] > values[j]; --j) {
-      t = values[j]; values[j] = values[j - 1]; values[j - 1] = t
-    }
-    return n % 2 ? values[(n + 1) / 2] : (values[n / 2] + values[n / 2 + 1]) / 2
-  }
   NR > 1 && $1 >= warm { ++n; minute[n] = $1; rss[n] = $2 }
   END {
     if (n == 0) { print "n/a"; exit }
     for (k = 1; k <= n; ++k) {
-      if (minute[k] < minute[1] + window || k == 1) first[++a] = rss[k]
-      if (minute[k] > minute[n] - window || k == n) last[++b] = rss[k]
+      if (k == 1 || minute[k] < minute[1] + window) if (base == "" || rss[k] < base) base = rss[k]
+      if (k == n || minute[k] > minute[n] - window) if (end == "" || rss[k] < end) end = rss[k]
     }
-    base = median(first, a); end = median(last, b)
     printf "%.2f %d %d", 100 * (end - base) / base, base, end
   }' "$rss_log")
 echo "poses by status:"
@@ -133,8 +126,8 @@ if [[ $growth == n/a ]]; then
   echo "soak: RSS growth after warm-up: n/a (the run ended before $warmup_minutes min)"
 else
   read -r percent base last <<< "$growth"
-  echo "soak: RSS growth after warm-up ($warmup_minutes min), median of the first $window_minutes min" \
-    "to median of the last $window_minutes min: $percent % ($base kB -> $last kB)"
+  echo "soak: RSS growth after warm-up ($warmup_minutes min), floor of the first $window_minutes min" \
+    "to floor of the last $window_minutes min: $percent % ($base kB -> $last kB)"
   if awk -v p="$percent" 'BEGIN { exit !(p > 1.0) }'; then
     echo "soak: FAILED: RSS grew by more than 1 % after warm-up" >&2
     failed=1
