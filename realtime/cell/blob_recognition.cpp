@@ -98,19 +98,20 @@ class SceneRecognition {
         parameters_(context.blob),
         part_seq_(part_seq),
         start_(std::chrono::steady_clock::now()) {
-    PartView view = extract_part_view(builder, context);
+    whole_ = extract_part_view(builder, context);
+    const PartView& view = *whole_;
     width_ = view.image.width();
     height_ = view.image.height();
     const double typical_area_mm2 = typical_view_area_mm2(*context.model_base);
     min_stretch_mm2_ = parameters_.min_stretch_fraction * typical_area_mm2;
     min_unexplained_mm2_ = parameters_.min_unexplained_fraction * typical_area_mm2;
     blob_.points_loop_mm = sampled_points(view.image);
-    blob_.image = std::move(view.image);
+    blob_.image = view.image;
     explained_.assign(pixel_count(), 0);
   }
 
   BlobRecognition run() {
-    std::optional<Unrecognized> rest = recognize_region(nothing_outside(), 0);
+    std::optional<Unrecognized> rest = recognize_region(nothing_outside(), 0, std::move(whole_));
     if (rest && !take_apart_at_necks(*rest)) report(*rest, any_recognized());
     if (builder_.truncated && builder_.tracked_rows > builder_.cosmos.rows())
       report_unscanned_rest();
@@ -154,11 +155,14 @@ class SceneRecognition {
   // The loop over one region (pixels of `excluded` left out from the start, and whatever the
   // parts recognized so far explain). Nothing is done when what the region holds outside
   // their footprints is under min_start_mm2. Returns the failed recognition that ended it,
-  // if one did, unreported.
+  // if one did, unreported. `prepared`: the region's view, already extracted (the whole blob's,
+  // whose analysis is the costliest step of all: it is not done twice).
   std::optional<Unrecognized> recognize_region(std::vector<std::uint8_t> excluded,
-                                               double min_start_mm2) {
+                                               double min_start_mm2,
+                                               std::optional<PartView> prepared = {}) {
     for (std::size_t i = 0; i < excluded.size(); ++i) excluded[i] |= explained_[i];
-    PartView view = extract_part_view(builder_, context_, &excluded);
+    PartView view =
+        prepared ? std::move(*prepared) : extract_part_view(builder_, context_, &excluded);
     Remaining remaining = remaining_of(view.image);
     if (min_start_mm2 > 0 && unexplained_mm2(view.image, remaining) < min_start_mm2) return {};
     double features_ms =
@@ -320,6 +324,7 @@ class SceneRecognition {
   int width_ = 0, height_ = 0;
   double min_stretch_mm2_ = 0, min_unexplained_mm2_ = 0;
   BlobRecognition blob_;
+  std::optional<PartView> whole_;        // the whole blob's view, until its region takes it
   std::vector<std::uint8_t> explained_;  // what the recognized parts explain, blob-wide
   std::vector<Footprint> footprints_;    // the recognized parts'
 };
