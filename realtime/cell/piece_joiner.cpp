@@ -209,21 +209,15 @@ std::vector<JoinedRecognition> PieceJoiner::add(BlobRecognition blob, const Part
       return out;
     }
   }
-  // A softly linked blob with nothing recognized in it may be a piece: of a part already
-  // recognized, or of one still to come.
-  if (soft_linked && !any_recognized && !blob.parts.empty() && !builder.truncated && !blob.merged) {
-    current.shadow = true;
-    current.image = std::move(blob.image);
-    if (explained_by_recent(current) || recognize_together(current, builder, out)) return out;
-    for (PartRecognition& part : blob.parts)
-      current.rejections.push_back({std::move(part), builder.completed_ns});
-    held_.push_back(std::move(current));
-    return out;
-  }
-  // Nothing recognized in a blob the tracker kept apart outright: a piece of a part all the
-  // same when a part recognized nearby explains it (a feature cut off by more than a shadow).
+  // A blob with nothing recognized in it may be a piece: of a part already recognized, or of
+  // one still to come (a feature cut off by its shadows, or by more than a shadow when the
+  // tracker kept it apart outright). Softly linked, it may also be a part its shadows cut
+  // into pieces none of which is recognizable alone: recognized together with them.
   if (!any_recognized && !blob.parts.empty() && !builder.truncated && !blob.merged) {
-    if (explained_by_recent(current)) return out;
+    current.shadow = soft_linked;
+    if (soft_linked) current.image = std::move(blob.image);
+    if (explained_by_recent(current) || (soft_linked && recognize_together(current, builder, out)))
+      return out;
     for (PartRecognition& part : blob.parts)
       current.rejections.push_back({std::move(part), builder.completed_ns});
     held_.push_back(std::move(current));
