@@ -14,8 +14,8 @@ RowBlockPool::RowBlockPool(int block_count, std::size_t block_bytes)
     : block_count_(std::max(block_count, 0)),
       block_bytes_((std::max<std::size_t>(block_bytes, 1) + kBlockAlignment - 1) / kBlockAlignment *
                    kBlockAlignment),
-      // Default-initialized bytes: the pages are not touched until a block is used.
-      arena_(new std::byte[static_cast<std::size_t>(block_count_) * block_bytes_]) {
+      // Value-initialized: zeroing the arena touches every page of it now.
+      arena_(new std::byte[static_cast<std::size_t>(block_count_) * block_bytes_]()) {
   free_.reserve(static_cast<std::size_t>(block_count_));
   // Block 0 on top: a lightly used pool keeps reusing the same few blocks.
   for (int block = block_count_ - 1; block >= 0; --block) free_.push_back(block);

@@ -111,7 +111,7 @@ struct PartQueueSettings {
   // each (a row takes 67 bytes per column between its first and last sample). A part holds
   // the blocks its rows fill until the recognizer is done with it; a part whose next row
   // finds no block left is dropped and counted like one that finds no builder.
-  int row_blocks = 128;
+  int row_blocks = 96;
   int row_block_rows = 16;
   // Parts lost for want of a builder or queue slot, queued for their ERROR poses: fixed
   // capacity (the hot path never allocates); beyond it a loss is only counted.
@@ -126,8 +126,8 @@ struct PartQueueSettings {
     v("part_queue_slots", part_queue_slots, "completed parts queued for the recognizer",
       Range{1, 1024});
     v("row_blocks", row_blocks,
-      "blocks of the builders' shared row pool, allocated at start, resident once used "
-      "(all of them with lock_memory); 0.65 MB each",
+      "blocks of the builders' shared row pool, allocated and made resident at start; "
+      "0.65 MB each",
       Range{1, 65536});
     v("row_block_rows", row_block_rows,
       "full-width rows per row-pool block (a part's rows hold only its own columns, so "
