@@ -13,6 +13,7 @@
 #include "realtime/rt/deadline_pacer.hpp"
 #include "realtime/rt/heap_policy.hpp"
 #include "realtime/rt/latency_histogram.hpp"
+#include "realtime/rt/ordered_workers.hpp"
 #include "realtime/rt/spsc_ring.hpp"
 #include "realtime/rt/wake_signal.hpp"
 
@@ -65,6 +66,16 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
     status.publisher_wake.notify();
   };
   PieceJoiner joiner(context);
+  // A blob's recognition depends on its builder's rows alone; its part_seq is given in order
+  // by publish().
+  OrderedWorkers<BlobRecognition> workers(
+      settings.threads.recognizer_threads,
+      [&](int index) {
+        if (settings.recognizer_delay_ms > 0)
+          std::this_thread::sleep_for(std::chrono::milliseconds(settings.recognizer_delay_ms));
+        return recognize_blob(loop.builder(index), context, 0);
+      },
+      status.recognizer_wake);
   for (;;) {
     const std::uint32_t seen = status.recognizer_wake.epoch();
     // Parts the loop dropped are reported too (ERROR poses): none passes unannounced.
@@ -72,22 +83,22 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
     while (loop.lost_parts().try_pop(lost))
       publish({report_lost_part(lost, context, 0), monotonic_now_ns()});
     int index = -1;
-    if (!loop.completed().try_pop(index)) {
-      if (status.acquisition_done.load(std::memory_order_acquire) && loop.completed().empty() &&
-          loop.lost_parts().empty())
-        break;
-      status.recognizer_wake.wait(seen, kRecognizerIdleNs);
+    while (workers.can_submit() && loop.completed().try_pop(index)) workers.submit(index);
+    // Blobs are joined and published in the order they completed, whichever worker is done
+    // first.
+    if (auto finished = workers.take_oldest()) {
+      status.blobs_merged.fetch_add(finished->result.merged ? 1 : 0, std::memory_order_relaxed);
+      std::vector<JoinedRecognition> ready =
+          joiner.add(std::move(finished->result), loop.builder(finished->job));
+      loop.returned().try_push(finished->job);  // room for every builder: never full
+      for (JoinedRecognition& joined : ready) publish(std::move(joined));
+      return_free_heap_pages();
       continue;
     }
-    if (settings.recognizer_delay_ms > 0)
-      std::this_thread::sleep_for(std::chrono::milliseconds(settings.recognizer_delay_ms));
-    PartBuilder& builder = loop.builder(index);
-    BlobRecognition blob = recognize_blob(builder, context, 0);
-    status.blobs_merged.fetch_add(blob.merged ? 1 : 0, std::memory_order_relaxed);
-    std::vector<JoinedRecognition> ready = joiner.add(std::move(blob), builder);
-    loop.returned().try_push(index);  // room for every builder: never full
-    for (JoinedRecognition& joined : ready) publish(std::move(joined));
-    return_free_heap_pages();
+    if (workers.in_flight() == 0 && status.acquisition_done.load(std::memory_order_acquire) &&
+        loop.completed().empty() && loop.lost_parts().empty())
+      break;
+    status.recognizer_wake.wait(seen, kRecognizerIdleNs);
   }
   for (JoinedRecognition& joined : joiner.finish()) publish(std::move(joined));
   status.recognizer_done.store(true, std::memory_order_release);

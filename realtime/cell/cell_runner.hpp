@@ -7,7 +7,8 @@
 //                its last stage, source time excluded); never waits on the others when
 //                paced. Unpaced, it waits for room in the recorded-profile ring, and with
 //                wait_for_recognizer (scan_loop.hpp) for the recognizer.
-//   recognizer   completed parts → recognize_part → poses ring; gives the builder back.
+//   recognizer   completed parts → recognizer_threads workers (recognize_blob) → joined and
+//                numbered in completion order → poses ring; gives the builder back.
 //   publisher    poses ring → Publisher; cell_status_t every status period; recorded
 //                profiles when asked.
 // Rings between them are single-producer/single-consumer and lock-free; counters are atomics.
@@ -35,6 +36,10 @@ struct CellThreadSettings {
   RealtimeSettings thread;        // the acquisition thread: SCHED_FIFO, cpu, mlockall
   int profile_ring_slots = 4096;  // loop -> publisher recorded profiles (1.6 s at 2,500/s)
   int pose_queue_slots = 32;      // recognizer -> publisher poses
+  // Blobs recognized at once (blob_recognition_workers.hpp). The acquisition thread takes a
+  // fraction of a core, so on two cores a second worker uses what it leaves; each worker in
+  // use adds its recognition's working memory to the cell's peak.
+  int recognizer_threads = 2;
 
   template <class Visitor>
   void visit(Visitor& v) {
@@ -42,6 +47,10 @@ struct CellThreadSettings {
     v("profile_ring_slots", profile_ring_slots, "recorded profiles queued for publishing",
       Range{1, 1 << 20});
     v("pose_queue_slots", pose_queue_slots, "poses queued for the publisher", Range{1, 4096});
+    v("recognizer_threads", recognizer_threads,
+      "blobs recognized at once, each on its own thread; poses are published in the order "
+      "the parts completed whatever the count",
+      Range{1, 64});
   }
 };
 

@@ -1,7 +1,8 @@
 // Determinism under perturbation: one recorded stream replayed again and again through the
 // cell with the threads' timing disturbed (a seeded random recognizer delay per replay,
-// random sleeps in the publisher, and a random number of part builders, so parts land in
-// builders that held other parts before) gives the same part_pose_t bytes every time: a
+// random sleeps in the publisher, a random number of part builders, so parts land in
+// builders that held other parts before, and of recognizer workers, so parts are recognized
+// at once and end in any order) gives the same part_pose_t bytes every time: a
 // pose depends on the rows of its part and on nothing else (times come from the data).
 //
 // 20 replays here; COSMOS_DETERMINISM_REPLAYS=100 for the longer run.
@@ -107,6 +108,7 @@ TEST(ReplayDeterminism, EveryReplayGivesTheSamePoseBytesWhateverTheTiming) {
     settings.deterministic_output = true;
     settings.publishing.status_period_s = 0.002;
     settings.recognizer_delay_ms = static_cast<int>(perturbation() % 4);
+    settings.threads.recognizer_threads = 1 + static_cast<int>(perturbation() % 3);
     JitteryPublisher publisher(perturbation());
     const CellRunSummary summary = run_cell(source, loop, context, publisher, settings);
     ASSERT_TRUE(summary.source_error.empty()) << summary.source_error;
