@@ -227,6 +227,12 @@ void run(const CellOptions& options) {
       static_cast<long long>(summary.deadline_overruns), static_cast<long long>(summary.parts_seen),
       static_cast<long long>(summary.parts_dropped),
       static_cast<long long>(summary.poses_published));
+  // The belt's time, from the profiles and the line rate: what the cell kept up with,
+  // whatever the wall clock did while it ran.
+  const double belt_s = static_cast<double>(summary.profiles) / settings.line_rate_hz;
+  std::printf("cell: %.1f parts/s over %.1f s of belt (%lld parts seen)\n",
+              belt_s > 0 ? static_cast<double>(summary.parts_seen) / belt_s : 0.0, belt_s,
+              static_cast<long long>(summary.parts_seen));
   if (world.has_ground_truth()) tally.print();
   std::printf(
       "cell: latency end of part -> pose published: median %.1f ms, p99 %.1f ms, max %.1f ms\n",
