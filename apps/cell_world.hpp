@@ -65,6 +65,9 @@ class CellWorld {
   SimulatedTruth simulated_truth_of(const PartRecognition& recognition,
                                     const RigidTransform& T_cell_scanner, double mm_per_tick) const;
   std::int64_t simulated_parts_placed() const;  // 0 without ground truth
+  // Placed part `index` (as in SimulatedTruth) for the summary: its name and the profiles
+  // whose sheet crosses it, e.g. "cow, profiles 1200-1530"; "" without ground truth.
+  std::string describe_placed_part(std::int64_t index) const;
   // The open source's hardware source (real devices or the twins), null for others.
   HardwareSource* hardware_source() const;
   // A pose went out: a hardware source (real or on the twins) pulses result_ready for it.

@@ -83,6 +83,8 @@ CellWorld::SimulatedTruth CellWorld::simulated_truth_of(const PartRecognition&,
 
 std::int64_t CellWorld::simulated_parts_placed() const { return 0; }
 
+std::string CellWorld::describe_placed_part(std::int64_t) const { return ""; }
+
 HardwareSource* CellWorld::hardware_source() const { return state_->hardware; }
 
 void CellWorld::announce_pose_published() {

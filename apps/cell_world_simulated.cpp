@@ -211,6 +211,18 @@ std::int64_t CellWorld::simulated_parts_placed() const {
   return state_->conveyor ? static_cast<std::int64_t>(state_->conveyor->placed_parts().size()) : 0;
 }
 
+std::string CellWorld::describe_placed_part(std::int64_t index) const {
+  if (!state_->conveyor || index < 0) return "";
+  const std::vector<PlacedSimPart>& all = state_->conveyor->placed_parts();
+  if (all.empty()) return "";
+  const auto count = static_cast<std::int64_t>(all.size());
+  // --repeat: pass p's parts are the first pass's, p passes of profiles further along.
+  const std::int64_t pass_start = (index / count) * state_->repeat_profiles;
+  const PlacedSimPart& placed = all[static_cast<std::size_t>(index % count)];
+  return placed.name + ", profiles " + std::to_string(pass_start + placed.first_profile) + "-" +
+         std::to_string(pass_start + placed.last_profile);
+}
+
 HardwareSource* CellWorld::hardware_source() const { return state_->hardware; }
 
 void CellWorld::announce_pose_published() {

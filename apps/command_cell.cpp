@@ -124,6 +124,22 @@ struct GroundTruthTally {
         reported.size(), identified, wrong_part, poor_pose, rejected, static_cast<long long>(none),
         static_cast<long long>(twice), unpaired);
   }
+
+  // The parts with no pose nor rejection, by name and place on the belt (the first few).
+  void print_unreported(const CellWorld& world) const {
+    constexpr int kListed = 10;
+    std::string listed;
+    int count = 0;
+    for (std::size_t index = 0; index < reported.size(); ++index) {
+      if (reported[index] != 0) continue;
+      if (++count <= kListed)
+        listed += (listed.empty() ? "" : "; ") + std::string("#") + std::to_string(index) + " " +
+                  world.describe_placed_part(static_cast<std::int64_t>(index));
+    }
+    if (count > 0)
+      std::printf("cell: no pose nor rejection for %s%s\n", listed.c_str(),
+                  count > kListed ? "; ..." : "");
+  }
 };
 
 void run(const CellOptions& options) {
@@ -233,7 +249,10 @@ void run(const CellOptions& options) {
   std::printf("cell: %.1f parts/s over %.1f s of belt (%lld parts seen)\n",
               belt_s > 0 ? static_cast<double>(summary.parts_seen) / belt_s : 0.0, belt_s,
               static_cast<long long>(summary.parts_seen));
-  if (world.has_ground_truth()) tally.print();
+  if (world.has_ground_truth()) {
+    tally.print();
+    tally.print_unreported(world);
+  }
   std::printf(
       "cell: latency end of part -> pose published: median %.1f ms, p99 %.1f ms, max %.1f ms\n",
       latencies.p50_ns() / 1e6, latencies.p99_ns() / 1e6, latencies.max_ns() / 1e6);
