@@ -17,6 +17,7 @@
 // are dropped.
 #include <cstdint>
 #include <deque>
+#include <list>
 #include <vector>
 
 #include "core/range_image.hpp"
@@ -76,7 +77,9 @@ class PieceJoiner {
   void remember(const Recognized& part);
 
   const PartRecognitionContext& context_;
-  std::deque<Piece> held_;
+  // A list: releasing a held piece first erases the other shadow pieces near it, and a
+  // deque's erase would leave the piece being released dangling.
+  std::list<Piece> held_;
   std::deque<Recognized> recent_;  // the parts recognized in the last few blobs
 };
 
