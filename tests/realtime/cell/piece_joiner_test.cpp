@@ -1,0 +1,124 @@
+// Held pieces: shadow pieces (softly linked blobs with nothing recognized in them) wait a few
+// blobs for the part they may belong to; nearby shadow pieces that are not recognized, alone
+// or together, are one part and are reported once, by the first of them. Three of them held
+// together is the case where releasing the first erases the other two from the held list
+// while the first is still being released.
+#include "realtime/cell/piece_joiner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+#include "core/io/model_base_file.hpp"
+#include "core/recognition/recognizer.hpp"
+#include "realtime/loop/part_rows.hpp"
+#include "realtime/loop/row_block_pool.hpp"
+#include "tests/regression_model_base.hpp"
+
+namespace cosmos {
+namespace {
+
+constexpr double kGridMm = 0.4;
+constexpr int kImageSide = 6;  // far too few pixels for any part: the recognizer rejects it
+
+class PieceJoinerTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    base_ = std::make_unique<ModelBase>(read_model_base(testing::regression_model_base()));
+    recognizer_ =
+        std::make_unique<Recognizer>(*base_, CosmosParameters{}, RecognitionParameters{});
+  }
+  static void TearDownTestSuite() {
+    recognizer_.reset();
+    base_.reset();
+  }
+
+  PieceJoinerTest() : pool_(8, PartRows::record_bytes(kImageSide)) {
+    context_.recognizer = recognizer_.get();
+    context_.model_base = base_.get();
+    context_.grid_mm = kGridMm;
+  }
+
+  // A blob of `rows` profiles from `first_profile` with nothing recognized in it: one
+  // rejection numbered `part_seq`, a small flat surface, softly linked to the piece before
+  // it and to the one after it.
+  std::vector<JoinedRecognition> add_shadow_piece(PieceJoiner& joiner, std::int64_t first_profile,
+                                                  std::int64_t part_seq) {
+    PartBuilder builder(CosmosParameters{}, kImageSide, kImageSide, kGridMm, pool_);
+    builder.first_profile = first_profile;
+    builder.soft_link_of = part_seq - 1;
+    builder.has_soft_successor = true;
+    BlobRecognition blob;
+    PartRecognition rejection;
+    rejection.pose.status = PoseStatus::kRejected;
+    rejection.pose.part_seq = part_seq;
+    rejection.pose.reason = "piece " + std::to_string(part_seq);
+    rejection.first_profile = first_profile;
+    rejection.last_profile = first_profile + kImageSide - 1;
+    blob.parts.push_back(std::move(rejection));
+    blob.image = RangeImage(kImageSide, kImageSide, kGridMm, kGridMm);
+    blob.image.origin_y_mm = static_cast<double>(first_profile) * kGridMm;
+    for (int row = 0; row < kImageSide; ++row)
+      for (int column = 0; column < kImageSide; ++column) {
+        blob.image.z_mm(column, row) = 3.0F;
+        blob.points_loop_mm.emplace_back(column * kGridMm, blob.image.y_mm(row), 3.0);
+      }
+    return joiner.add(std::move(blob), builder);
+  }
+
+  // A blob with nothing in it: the held pieces wait one blob more.
+  std::vector<JoinedRecognition> add_empty_blob(PieceJoiner& joiner) {
+    PartBuilder builder(CosmosParameters{}, kImageSide, kImageSide, kGridMm, pool_);
+    return joiner.add(BlobRecognition{}, builder);
+  }
+
+  static std::unique_ptr<ModelBase> base_;
+  static std::unique_ptr<Recognizer> recognizer_;
+  RowBlockPool pool_;
+  PartRecognitionContext context_;
+};
+
+std::unique_ptr<ModelBase> PieceJoinerTest::base_;
+std::unique_ptr<Recognizer> PieceJoinerTest::recognizer_;
+
+TEST_F(PieceJoinerTest, ThreeNearbyShadowPiecesAreReportedOnceByTheFirst) {
+  PieceJoiner joiner(context_);
+  EXPECT_TRUE(add_shadow_piece(joiner, 100, 1).empty());
+  EXPECT_TRUE(add_shadow_piece(joiner, 140, 2).empty());
+  EXPECT_TRUE(add_shadow_piece(joiner, 180, 3).empty());
+  // The first piece has waited three blobs after its own; the fourth releases it.
+  EXPECT_TRUE(add_empty_blob(joiner).empty());
+  const std::vector<JoinedRecognition> released = add_empty_blob(joiner);
+  ASSERT_EQ(released.size(), 1U);
+  EXPECT_EQ(released[0].recognition.pose.part_seq, 1);
+  EXPECT_EQ(released[0].recognition.pose.reason, "piece 1");
+  EXPECT_EQ(released[0].recognition.pose.status, PoseStatus::kRejected);
+  EXPECT_TRUE(joiner.finish().empty());
+}
+
+TEST_F(PieceJoinerTest, AShadowPieceFarFromTheOthersIsReportedOnItsOwn) {
+  PieceJoiner joiner(context_);
+  EXPECT_TRUE(add_shadow_piece(joiner, 100, 1).empty());
+  EXPECT_TRUE(add_shadow_piece(joiner, 140, 2).empty());
+  EXPECT_TRUE(add_shadow_piece(joiner, 180, 3).empty());
+  EXPECT_TRUE(add_shadow_piece(joiner, 5000, 4).empty());
+  const std::vector<JoinedRecognition> released = add_empty_blob(joiner);
+  ASSERT_EQ(released.size(), 1U);
+  EXPECT_EQ(released[0].recognition.pose.part_seq, 1);
+  const std::vector<JoinedRecognition> rest = joiner.finish();
+  ASSERT_EQ(rest.size(), 1U);
+  EXPECT_EQ(rest[0].recognition.pose.part_seq, 4);
+}
+
+TEST_F(PieceJoinerTest, PiecesWaitingTheirBlobsAreHeldTillTheEnd) {
+  PieceJoiner joiner(context_);
+  EXPECT_TRUE(add_shadow_piece(joiner, 100, 1).empty());
+  EXPECT_TRUE(add_shadow_piece(joiner, 140, 2).empty());
+  const std::vector<JoinedRecognition> rest = joiner.finish();
+  ASSERT_EQ(rest.size(), 1U);
+  EXPECT_EQ(rest[0].recognition.pose.part_seq, 1);
+}
+
+}  // namespace
+}  // namespace cosmos
