@@ -134,6 +134,7 @@ CellStatus status_message(ScanLoop& loop, const SharedStatus& shared,
   status.parts_truncated = counters.parts_truncated;
   status.runs_dropped = counters.runs_dropped;
   status.blobs_merged = shared.blobs_merged;
+  status.specks_discarded = counters.specks_discarded;
   status.recognition_queue_depth = static_cast<std::int32_t>(loop.completed().size());
   status.publish_queue_depth = static_cast<std::int32_t>(poses.size());
   return status;

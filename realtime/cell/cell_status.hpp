@@ -46,6 +46,7 @@ struct CellStatus {
   std::int64_t parts_truncated = 0;
   std::int64_t runs_dropped = 0;
   std::int64_t blobs_merged = 0;
+  std::int64_t specks_discarded = 0;
 
   std::int32_t recognition_queue_depth = 0;
   std::int32_t publish_queue_depth = 0;
@@ -83,6 +84,8 @@ struct CellStatus {
       "runs of data beyond the tracker's per-row or open limits");
     v("blobs_merged", self.blobs_merged,
       "blobs holding several parts (touching or not separated): one pose or rejection each");
+    v("specks_discarded", self.specks_discarded,
+      "components too small and short to be a part (tracking.min_pixels): not reported");
   }
 };
 

@@ -92,6 +92,7 @@ void to_message(const CellStatus& status, cosmos_lcm::cell_status_t& message) {
   message.parts_truncated = status.parts_truncated;
   message.runs_dropped = status.runs_dropped;
   message.blobs_merged = status.blobs_merged;
+  message.specks_discarded = status.specks_discarded;
 }
 
 void from_message(const cosmos_lcm::cell_status_t& message, CellStatus& status) {
@@ -124,6 +125,7 @@ void from_message(const cosmos_lcm::cell_status_t& message, CellStatus& status) 
   status.parts_truncated = message.parts_truncated;
   status.runs_dropped = message.runs_dropped;
   status.blobs_merged = message.blobs_merged;
+  status.specks_discarded = message.specks_discarded;
 }
 
 void to_message(const Profile& profile, cosmos_lcm::range_profile_t& message) {

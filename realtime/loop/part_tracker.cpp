@@ -36,7 +36,7 @@ void PartTracker::merge(std::int64_t keep, std::int64_t absorbed) {
   const int index = open_index(absorbed);
   TrackedPart gone = open_[index];
   if (gone.first_row < kept.first_row) kept.leading_z_mm = gone.leading_z_mm;
-  if (kept.soft_link_of < 0) kept.soft_link_of = gone.soft_link_of;
+  if (kept.soft_link_of < 0 && gone.soft_link_of != keep) kept.soft_link_of = gone.soft_link_of;
   kept.has_soft_successor = kept.has_soft_successor || gone.has_soft_successor;
   kept.first_row = std::min(kept.first_row, gone.first_row);
   kept.column_min = std::min(kept.column_min, gone.column_min);
@@ -48,6 +48,37 @@ void PartTracker::merge(std::int64_t keep, std::int64_t absorbed) {
   completed_.push_back(gone);
   open_.erase(open_.begin() + index);  // no allocation: erase within capacity
   merges_.emplace_back(absorbed, keep);
+}
+
+void PartTracker::join_small_pieces(std::int64_t row_index) {
+  for (bool joined = true; joined;) {
+    joined = false;
+    for (std::size_t k = 0; k < open_.size() && !joined; ++k) {
+      const TrackedPart& piece = open_[k];
+      if (!piece.has_soft_successor || piece.pixels >= parameters_.min_pixels ||
+          !idle(piece, row_index))
+        continue;
+      std::int64_t successor = -1;
+      bool other_successor = false;
+      for (const TrackedPart& part : open_) {
+        if (part.soft_link_of != piece.id) continue;
+        if (successor < 0) {
+          successor = part.id;
+        } else {
+          other_successor = true;
+        }
+      }
+      if (successor < 0) continue;
+      const std::int64_t keep = piece.id;  // the older: successors start after its last row
+      const bool successor_has_successor = open_[open_index(successor)].has_soft_successor;
+      merge(keep, successor);
+      TrackedPart& kept = open_[open_index(keep)];
+      kept.has_soft_successor = successor_has_successor || other_successor;
+      for (TrackedPart& part : open_)
+        if (part.soft_link_of == successor) part.soft_link_of = keep;
+      joined = true;
+    }
+  }
 }
 
 bool PartTracker::idle(const TrackedPart& part, std::int64_t row_index) const {
@@ -191,10 +222,14 @@ const std::vector<TrackedPart>& PartTracker::add_row(const float* z_mm, std::int
       }
     }
   }
+  join_small_pieces(row_index);
   for (std::size_t k = open_.size(); k-- > 0;) {
     if (!idle(open_[k], row_index)) continue;
     TrackedPart done = open_[k];
-    done.noise = done.pixels < parameters_.min_pixels;
+    // A thin part seen edge-on has few pixels, but spans many rows or columns; a speck neither.
+    done.noise = done.pixels < parameters_.min_pixels &&
+                 done.last_row - done.first_row + 1 < parameters_.min_pixels &&
+                 done.column_max - done.column_min + 1 < parameters_.min_pixels;
     completed_.push_back(done);
     open_.erase(open_.begin() + static_cast<long>(k));
   }

@@ -22,7 +22,9 @@ struct PartTrackerParameters {
   // (± link_gap_columns) in that time joins it: laser shadows and dropouts split a part's
   // surface into pieces a few millimetres apart. 0: only touching runs continue a part.
   int link_gap_rows = 0;
-  std::int64_t min_pixels = 50;  // smaller completed components are noise
+  // Completed components with fewer pixels, spanning fewer rows and fewer columns than this,
+  // are noise (specks).
+  std::int64_t min_pixels = 50;
   // The camera's occlusion shadow, rows of belt per mm of height (tan of the triangulation
   // angle over the belt step; the scan loop sets it from the scanner, it is no config key).
   // Above 0, pieces link across no-data rows only as far as a shadow can reach: the shadow
@@ -49,7 +51,9 @@ struct PartTrackerParameters {
       "no-data rows a part's pieces join across outright; longer gaps its shadow explains "
       "link softly (kept apart until recognition)",
       Range{0, 65536});
-    v("min_pixels", min_pixels, "smaller completed components are noise",
+    v("min_pixels", min_pixels,
+      "completed components with fewer pixels, spanning fewer rows and fewer columns, are "
+      "noise",
       Range{0, 1099511627776.0});  // 2^40
   }
 };
@@ -70,7 +74,7 @@ struct TrackedPart {
   std::int64_t soft_link_of = -1;
   bool has_soft_successor = false;
   std::int64_t merged_into = -1;  // completed by merging into this part
-  bool noise = false;             // fewer than min_pixels
+  bool noise = false;             // a speck: fewer than min_pixels pixels, rows and columns
 };
 
 // The cell's tracking: pieces of one part up to 25 columns (10 mm) and 75 rows (30 mm) apart
@@ -117,6 +121,12 @@ class PartTracker {
   std::int64_t resolve(std::int64_t part) const;
   void merge(std::int64_t keep, std::int64_t absorbed);
   bool idle(const TrackedPart& part, std::int64_t row_index) const;
+  // A piece about to complete with fewer than min_pixels pixels and a piece softly linked
+  // after it: joined with it. Softly linked pieces stay apart so that recognition can tell a
+  // neighbour from a shadow-cut piece, but a piece too small to be a part can only be a piece
+  // of the part its shadows cut: a thin part seen edge-on, rising along the belt, is cut by
+  // its own shadow into specks each far below min_pixels, which alone would all be noise.
+  void join_small_pieces(std::int64_t row_index);
   bool footprints_overlap(const TrackedPart& a, const TrackedPart& b) const;
   // Rows of no data a feature of height z_mm can shadow in front of it (shadow_rows_per_mm
   // with a margin for the perspective and the height of the surface it falls on).

@@ -141,7 +141,7 @@ void ScanLoop::complete(const TrackedPart& part) {
     const LostPartReason reason = unbuilt->reason;
     unbuilt_.erase(unbuilt);
     if (part.noise) {
-      counters_.noise_components.fetch_add(1, std::memory_order_relaxed);
+      counters_.specks_discarded.fetch_add(1, std::memory_order_relaxed);
       return;
     }
     if (part.merged_into >= 0) {
@@ -158,7 +158,7 @@ void ScanLoop::complete(const TrackedPart& part) {
   }
   open_builders_.erase(std::find(open_builders_.begin(), open_builders_.end(), index));
   if (part.merged_into >= 0 || part.noise) {
-    counters_.noise_components.fetch_add(part.noise ? 1 : 0, std::memory_order_relaxed);
+    counters_.specks_discarded.fetch_add(part.noise ? 1 : 0, std::memory_order_relaxed);
     free_builder(index);
     return;
   }

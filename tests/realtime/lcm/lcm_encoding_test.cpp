@@ -58,8 +58,8 @@ TEST(LcmEncoding, QuaternionSignDoesNotChangeTheBytes) {
 TEST(LcmEncoding, StatusBytesDependOnlyOnTheInput) {
   const auto first = encoded(testing::sample_status("ok"), cosmos_lcm::cell_status_t{});
   const auto second = encoded(testing::sample_status("ok"), cosmos_lcm::cell_status_t{});
-  // hash 8 + int64 + int8 + text (4 + 2 + 1) + 14 int64 + 3 doubles + 7 int64 + 2 int32
-  EXPECT_EQ(first.size(), 8U + 8U + 1U + 7U + 112U + 24U + 56U + 8U);
+  // hash 8 + int64 + int8 + text (4 + 2 + 1) + 14 int64 + 3 doubles + 8 int64 + 2 int32
+  EXPECT_EQ(first.size(), 8U + 8U + 1U + 7U + 112U + 24U + 64U + 8U);
   EXPECT_EQ(first, second);
   EXPECT_EQ(reencoded<cosmos_lcm::cell_status_t>(first), first);
 }

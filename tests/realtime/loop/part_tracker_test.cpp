@@ -106,6 +106,24 @@ TEST(PartTracker, SpecksAreNoiseAndCapacityIsBounded) {
   EXPECT_TRUE(completed[1][0].noise);
 }
 
+TEST(PartTracker, FewPixelsAlongManyRowsAreAPartNotASpeck) {
+  PartTrackerParameters parameters;
+  parameters.min_pixels = 6;
+  parameters.link_gap_rows = 1;
+  PartTracker tracker(parameters, 4);
+  // 5 pixels, 1 column, over 9 rows (a thin edge with dropouts), then 4 pixels in a 2 x 2 box.
+  const auto completed =
+      track(tracker, {".#..", "....", ".#..", "....", ".#..", "....", ".#..", "....", ".#..",
+                      "....", "....", "##..", "##..", "....", "...."});
+  std::vector<TrackedPart> parts;
+  for (const auto& row : completed) parts.insert(parts.end(), row.begin(), row.end());
+  ASSERT_EQ(parts.size(), 2u);
+  EXPECT_EQ(parts[0].pixels, 5);
+  EXPECT_FALSE(parts[0].noise);
+  EXPECT_EQ(parts[1].pixels, 4);
+  EXPECT_TRUE(parts[1].noise);
+}
+
 }  // namespace
 }  // namespace cosmos
 
@@ -176,6 +194,30 @@ TEST(PartTracker, BeltSeenInTheGapOrAGapLongerThanTheShadowMakesTwoParts) {
     ASSERT_EQ(completed.size(), 2u);
     EXPECT_EQ(completed[1].soft_link_of, -1);
   }
+}
+
+TEST(PartTracker, PiecesTooSmallToBePartsJoinThePieceSoftlyLinkedAfterThem) {
+  PartTrackerParameters parameters = shadow_tracking();
+  parameters.min_pixels = 5;
+  PartTracker tracker(parameters, 8);
+  // A thin edge rising along the belt, cut by its shadow into pieces of 2 pixels: alone each
+  // would be noise, together they are one part of 6.
+  const std::vector<TrackedPart> completed = track_with_belt(
+      tracker, {"11......", "........", "........", ".22.....", "........", "........",
+                "..33....", "bbbbbbbb", "bbbbbbbb", "bbbbbbbb", "bbbbbbbb", "bbbbbbbb",
+                "bbbbbbbb", "bbbbbbbb", "bbbbbbbb", "bbbbbbbb", "bbbbbbbb"});
+  ASSERT_EQ(completed.size(), 3u);
+  EXPECT_EQ(completed[0].merged_into, 0);
+  EXPECT_EQ(completed[1].merged_into, 0);
+  EXPECT_EQ(completed[2].id, 0);
+  EXPECT_EQ(completed[2].pixels, 6);
+  EXPECT_FALSE(completed[2].noise);
+  EXPECT_EQ(completed[2].first_row, 0);
+  EXPECT_EQ(completed[2].last_row, 6);
+  EXPECT_EQ(completed[2].column_max, 3);
+  EXPECT_FLOAT_EQ(completed[2].max_z_mm, 30.0f);
+  EXPECT_EQ(completed[2].soft_link_of, -1);
+  EXPECT_FALSE(completed[2].has_soft_successor);
 }
 
 TEST(PartTracker, ADropoutOfHardLinkGapRowsJoinsOutright) {
