@@ -116,12 +116,37 @@ std::string depth_name(int depth) {
   }
 }
 
+// OpenCV picks its decoder from the file's first bytes, not its name: a file named .tiff that
+// holds another format (DICOM, JPEG 2000, ...) would go to that format's decoder, which the
+// reader never means to run on input (a few crafted bytes of DICOM allocate gigabytes). So
+// the file must start as its extension's format does: "II*\0" or "MM\0*" (TIFF; '+' for
+// BigTIFF), "Pf" or "PF" and a line break (PFM).
+bool has_signature_of(ImageFormat format, std::ifstream& file) {
+  std::array<char, 4> head{};
+  file.read(head.data(), head.size());
+  if (file.gcount() < 3) return false;
+  if (format == ImageFormat::kPfm)
+    return head[0] == 'P' && (head[1] == 'f' || head[1] == 'F') &&
+           std::isspace(static_cast<unsigned char>(head[2]));
+  if (file.gcount() < 4) return false;
+  const bool little = head[0] == 'I' && head[1] == 'I' && (head[2] == '*' || head[2] == '+') &&
+                      head[3] == '\0';
+  const bool big = head[0] == 'M' && head[1] == 'M' && head[2] == '\0' &&
+                   (head[3] == '*' || head[3] == '+');
+  return little || big;
+}
+
 cv::Mat load_image(const fs::path& image_path) {
   std::error_code error;
   if (!fs::exists(image_path, error)) fail(image_path, "no such file");
   if (!fs::is_regular_file(image_path, error)) fail(image_path, "not a regular file");
-  if (!std::ifstream(image_path, std::ios::binary))
-    fail(image_path, "cannot be opened for reading");
+  std::ifstream file(image_path, std::ios::binary);
+  if (!file) fail(image_path, "cannot be opened for reading");
+  const ImageFormat format = format_of(image_path);
+  if (!has_signature_of(format, file))
+    fail(image_path, std::string("unreadable: not a ") +
+                         (format == ImageFormat::kTiff ? "TIFF" : "PFM") +
+                         " file (its first bytes are not that format's header)");
   cv::Mat image;
   try {
     QuietOpenCv quiet;

@@ -174,6 +174,24 @@ TEST_F(RangeImageFile, GarbageBytesAreUnreadable) {
   expect_rejected(file("empty.pfm"), {"empty.pfm"});
 }
 
+TEST_F(RangeImageFile, AnotherFormatUnderTheExtensionIsRefusedBeforeDecoding) {
+  // A DICOM preamble and a data element claiming a length of ~2 GB: decoded by its bytes
+  // (OpenCV's DICOM decoder), it allocated gigabytes.
+  const std::string dicom = std::string(128, 'x') + "DICM" +
+                            std::string("\x32\x5d\x82\x32\x3f\x3f\x67\x7a\x6d\x3a\x71\x30", 12);
+  for (const char* name : {"dicom.tiff", "dicom.pfm"}) {
+    testing::write_text_file(file(name), dicom);
+    write_sidecar(file(name), "pixel_size_mm: [1, 1]\n");
+  }
+  expect_rejected(file("dicom.tiff"), {"dicom.tiff", "not a TIFF file"});
+  expect_rejected(file("dicom.pfm"), {"dicom.pfm", "not a PFM file"});
+  // A PFM named .tiff is refused the same way.
+  write_range_image(sample_image(), file("real.pfm"));
+  fs::copy_file(file("real.pfm"), file("renamed.tiff"));
+  write_sidecar(file("renamed.tiff"), "pixel_size_mm: [1, 1]\n");
+  expect_rejected(file("renamed.tiff"), {"renamed.tiff", "not a TIFF file"});
+}
+
 TEST_F(RangeImageFile, ThreeChannelImagesAreRejected) {
   testing::write_handmade_tiff(file("rgb8.tiff"), 4, 3, 8, 3, TiffSampleFormat::kUnsigned);
   expect_rejected(file("rgb8.tiff"), {"rgb8.tiff", "3-channel"});
