@@ -129,10 +129,10 @@ bool has_signature_of(ImageFormat format, std::ifstream& file) {
     return head[0] == 'P' && (head[1] == 'f' || head[1] == 'F') &&
            std::isspace(static_cast<unsigned char>(head[2]));
   if (file.gcount() < 4) return false;
-  const bool little = head[0] == 'I' && head[1] == 'I' && (head[2] == '*' || head[2] == '+') &&
-                      head[3] == '\0';
-  const bool big = head[0] == 'M' && head[1] == 'M' && head[2] == '\0' &&
-                   (head[3] == '*' || head[3] == '+');
+  const bool little =
+      head[0] == 'I' && head[1] == 'I' && (head[2] == '*' || head[2] == '+') && head[3] == '\0';
+  const bool big =
+      head[0] == 'M' && head[1] == 'M' && head[2] == '\0' && (head[3] == '*' || head[3] == '+');
   return little || big;
 }
 

@@ -161,9 +161,9 @@ struct ScanLoopCounters {
   std::atomic<std::int64_t> row_blocks_peak{0};    // the most row-pool blocks held at once
   std::atomic<std::int64_t> lost_unreported{0};    // dropped while lost_parts() was full
   std::atomic<std::int64_t> parts_truncated{0};    // longer than max_part_rows
-  std::atomic<std::int64_t> specks_discarded{0};  // components too small to be parts
-  std::atomic<std::int64_t> profiles_refused{0};  // the conditioner refused its grid
-  std::atomic<std::int64_t> runs_dropped{0};      // the tracker's, beyond its limits
+  std::atomic<std::int64_t> specks_discarded{0};   // components too small to be parts
+  std::atomic<std::int64_t> profiles_refused{0};   // the conditioner refused its grid
+  std::atomic<std::int64_t> runs_dropped{0};       // the tracker's, beyond its limits
   // Samples above conditioning.max_height_mm, which the de-shear of a pitched sheet drops.
   std::atomic<std::int64_t> samples_too_high{0};
 };

@@ -26,8 +26,7 @@ class PieceJoinerTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     base_ = std::make_unique<ModelBase>(read_model_base(testing::regression_model_base()));
-    recognizer_ =
-        std::make_unique<Recognizer>(*base_, CosmosParameters{}, RecognitionParameters{});
+    recognizer_ = std::make_unique<Recognizer>(*base_, CosmosParameters{}, RecognitionParameters{});
   }
   static void TearDownTestSuite() {
     recognizer_.reset();

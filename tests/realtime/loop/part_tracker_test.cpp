@@ -203,9 +203,9 @@ TEST(PartTracker, PiecesTooSmallToBePartsJoinThePieceSoftlyLinkedAfterThem) {
   // A thin edge rising along the belt, cut by its shadow into pieces of 2 pixels: alone each
   // would be noise, together they are one part of 6.
   const std::vector<TrackedPart> completed = track_with_belt(
-      tracker, {"11......", "........", "........", ".22.....", "........", "........",
-                "..33....", "bbbbbbbb", "bbbbbbbb", "bbbbbbbb", "bbbbbbbb", "bbbbbbbb",
-                "bbbbbbbb", "bbbbbbbb", "bbbbbbbb", "bbbbbbbb", "bbbbbbbb"});
+      tracker, {"11......", "........", "........", ".22.....", "........", "........", "..33....",
+                "bbbbbbbb", "bbbbbbbb", "bbbbbbbb", "bbbbbbbb", "bbbbbbbb", "bbbbbbbb", "bbbbbbbb",
+                "bbbbbbbb", "bbbbbbbb", "bbbbbbbb"});
   ASSERT_EQ(completed.size(), 3u);
   EXPECT_EQ(completed[0].merged_into, 0);
   EXPECT_EQ(completed[1].merged_into, 0);
