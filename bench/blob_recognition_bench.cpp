@@ -76,6 +76,8 @@ void BM_BlobRecognition(benchmark::State& state) {
         ++blobs[size];
         loop.returned().try_push(index);
       }
+      SpeculativePart ahead;  // recognized at completion here: declined
+      while (loop.speculative().try_pop(ahead)) loop.speculated().try_push(ahead.builder);
     };
     while (source.next(profile) == SourceStatus::kOk) {
       loop.process(profile);

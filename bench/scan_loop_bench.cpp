@@ -129,6 +129,8 @@ std::int64_t thread_cpu_now_ns() {
 void return_builders(ScanLoop& loop) {
   int index = -1;
   while (loop.completed().try_pop(index)) loop.returned().try_push(index);
+  SpeculativePart ahead;
+  while (loop.speculative().try_pop(ahead)) loop.speculated().try_push(ahead.builder);
 }
 
 void ScanLoopProcess(benchmark::State& state) {

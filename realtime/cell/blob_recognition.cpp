@@ -17,8 +17,8 @@ RigidTransform T_belt_loop() {
 }
 
 // Rows of `explained` that hold a pixel, as the recognition's profile range.
-void set_profiles_of(const std::vector<std::uint8_t>& explained, int width,
-                     const PartBuilder& builder, PartRecognition& recognition) {
+void set_profiles_of(const std::vector<std::uint8_t>& explained, int width, const BuiltPart& built,
+                     PartRecognition& recognition) {
   int first = -1, last = -1;
   for (std::size_t i = 0; i < explained.size(); ++i) {
     if (!explained[i]) continue;
@@ -27,20 +27,20 @@ void set_profiles_of(const std::vector<std::uint8_t>& explained, int width,
     last = row;
   }
   if (first < 0) return;
-  recognition.first_profile = builder.first_profile + first;
-  recognition.last_profile = builder.first_profile + last;
+  recognition.first_profile = built.first_profile + first;
+  recognition.last_profile = built.first_profile + last;
 }
 
 // A rejection at the centroid of what remains of the blob.
-void place_rejection(const Remaining& remaining, const PartBuilder& builder,
+void place_rejection(const Remaining& remaining, const BuiltPart& built,
                      const PartRecognitionContext& context, PartRecognition& recognition) {
   const RigidTransform T_loop_part{Eigen::Matrix3d::Identity(), remaining.centroid_mm};
   recognition.T_belt_part = T_belt_loop() * T_loop_part;
-  const RigidTransform T_cell_part = cell_pose_of(T_loop_part, builder, context);
+  const RigidTransform T_cell_part = cell_pose_of(T_loop_part, built, context);
   recognition.pose.rotation_cell_part = Eigen::Quaterniond(T_cell_part.rotation);
   recognition.pose.translation_cell_part_mm = T_cell_part.translation_mm;
-  recognition.first_profile = builder.first_profile + remaining.first_row;
-  recognition.last_profile = builder.first_profile + remaining.last_row;
+  recognition.first_profile = built.first_profile + remaining.first_row;
+  recognition.last_profile = built.first_profile + remaining.last_row;
 }
 
 // How many parts an unrecognized region of `area_mm2` holds: what a part shows at most is
@@ -91,14 +91,14 @@ struct Unrecognized {
 // its necks, or reported.
 class SceneRecognition {
  public:
-  SceneRecognition(PartBuilder& builder, const PartRecognitionContext& context,
+  SceneRecognition(const BuiltPart& built, const PartRecognitionContext& context,
                    std::int64_t part_seq)
-      : builder_(builder),
+      : built_(built),
         context_(context),
         parameters_(context.blob),
         part_seq_(part_seq),
         start_(std::chrono::steady_clock::now()) {
-    whole_ = extract_part_view(builder, context);
+    whole_ = extract_part_view(built, context);
     const PartView& view = *whole_;
     width_ = view.image.width();
     height_ = view.image.height();
@@ -113,8 +113,7 @@ class SceneRecognition {
   BlobRecognition run() {
     std::optional<Unrecognized> rest = recognize_region(nothing_outside(), 0, std::move(whole_));
     if (rest && !take_apart_at_necks(*rest)) report(*rest, any_recognized());
-    if (builder_.truncated && builder_.tracked_rows > builder_.cosmos.rows())
-      report_unscanned_rest();
+    if (built_.truncated && built_.tracked_rows > built_.rows) report_unscanned_rest();
     blob_.merged = blob_.parts.size() > 1;
     return std::move(blob_);
   }
@@ -162,7 +161,7 @@ class SceneRecognition {
                                                std::optional<PartView> prepared = {}) {
     for (std::size_t i = 0; i < excluded.size(); ++i) excluded[i] |= explained_[i];
     PartView view =
-        prepared ? std::move(*prepared) : extract_part_view(builder_, context_, &excluded);
+        prepared ? std::move(*prepared) : extract_part_view(built_, context_, &excluded);
     Remaining remaining = remaining_of(view.image);
     if (min_start_mm2 > 0 && unexplained_mm2(view.image, remaining) < min_start_mm2) return {};
     double features_ms =
@@ -170,7 +169,7 @@ class SceneRecognition {
             .count();
     for (;;) {
       PartRecognition recognition =
-          recognize_part_view(view, builder_, context_, next_seq(), features_ms);
+          recognize_part_view(view, built_, context_, next_seq(), features_ms);
       if (recognition.result.status != RecognitionStatus::kOk)
         return Unrecognized{std::move(recognition), std::move(remaining), std::move(view.image)};
       const auto cut = std::chrono::steady_clock::now();
@@ -179,7 +178,7 @@ class SceneRecognition {
       const std::vector<std::uint8_t> explained =
           explained_pixels(blob_.image, model.field, recognition.result.T_scanner_part,
                            parameters_.explained_distance_mm);
-      set_profiles_of(explained, width_, builder_, recognition);
+      set_profiles_of(explained, width_, built_, recognition);
       std::size_t newly_excluded = 0;
       for (std::size_t i = 0; i < excluded.size(); ++i) {
         newly_excluded += explained[i] && !excluded[i] ? 1 : 0;
@@ -195,7 +194,7 @@ class SceneRecognition {
       const bool seen_again = repeats_a_part(recognition, blob_.parts, *context_.model_base);
       if (!seen_again) blob_.parts.push_back(std::move(recognition));
       if (seen_again && newly_excluded == 0) return {};
-      view = extract_part_view(builder_, context_, &excluded);
+      view = extract_part_view(built_, context_, &excluded);
       remaining = remaining_of(view.image);
       if (unexplained_mm2(view.image, remaining) < min_unexplained_mm2_) return {};
       if (static_cast<int>(blob_.parts.size()) >= parameters_.max_parts_per_blob) {
@@ -211,7 +210,7 @@ class SceneRecognition {
             "unresolved cluster of " +
             std::to_string(estimated_parts(remaining.interior_mm2, *context_.model_base)) +
             " parts: more than max_parts_per_blob in one blob";
-        place_rejection(remaining, builder_, context_, rest);
+        place_rejection(remaining, built_, context_, rest);
         blob_.remnants.push_back({blob_.parts.size(), 1, sampled_points(view.image)});
         blob_.parts.push_back(std::move(rest));
         return {};
@@ -231,7 +230,7 @@ class SceneRecognition {
     else if (beside_others)
       recognition.pose.reason = "merged with a neighbour, not recognized: " + why;
     recognition.pose.part_seq = next_seq();
-    place_rejection(unrecognized.remaining, builder_, context_, recognition);
+    place_rejection(unrecognized.remaining, built_, context_, recognition);
     blob_.remnants.push_back({blob_.parts.size(), count, sampled_points(unrecognized.image)});
     blob_.parts.push_back(std::move(recognition));
     for (int k = 1; k < count; ++k) {
@@ -296,15 +295,15 @@ class SceneRecognition {
     rest.pose.score = rest.pose.registration_rms_mm = 0;
     rest.pose.part_seq = next_seq();
     const double unscanned_mm =
-        static_cast<double>(builder_.tracked_rows - builder_.cosmos.rows()) * context_.grid_mm;
+        static_cast<double>(built_.tracked_rows - built_.rows) * context_.grid_mm;
     rest.pose.reason = "blob longer than tracking.max_part_length_mm: its last " +
                        std::to_string(static_cast<long long>(std::lround(unscanned_mm))) +
                        " mm were not scanned";
     // Reported where the unscanned stretch lies on the belt (its middle, on the belt's
     // surface across the blob's middle), not where the last recognized part is.
     Remaining unscanned;
-    unscanned.first_row = static_cast<int>(builder_.cosmos.rows());
-    unscanned.last_row = static_cast<int>(builder_.tracked_rows - 1);
+    unscanned.first_row = static_cast<int>(built_.rows);
+    unscanned.last_row = static_cast<int>(built_.tracked_rows - 1);
     double x_sum_mm = 0;
     for (const Eigen::Vector3d& point : blob_.points_loop_mm) x_sum_mm += point.x();
     const double middle_row = 0.5 * (unscanned.first_row + unscanned.last_row);
@@ -312,11 +311,11 @@ class SceneRecognition {
         blob_.points_loop_mm.empty() ? 0.0
                                      : x_sum_mm / static_cast<double>(blob_.points_loop_mm.size()),
         blob_.image.origin_y_mm + middle_row * blob_.image.pixel_size_y_mm, 0.0};
-    place_rejection(unscanned, builder_, context_, rest);
+    place_rejection(unscanned, built_, context_, rest);
     blob_.parts.push_back(std::move(rest));
   }
 
-  PartBuilder& builder_;
+  const BuiltPart& built_;
   const PartRecognitionContext& context_;
   const BlobRecognitionParameters& parameters_;
   std::int64_t part_seq_;
@@ -331,9 +330,17 @@ class SceneRecognition {
 
 }  // namespace
 
+BlobRecognition recognize_blob(const BuiltPart& built, const PartRecognitionContext& context,
+                               std::int64_t part_seq) {
+  return SceneRecognition(built, context, part_seq).run();
+}
+
 BlobRecognition recognize_blob(PartBuilder& builder, const PartRecognitionContext& context,
                                std::int64_t part_seq) {
-  return SceneRecognition(builder, context, part_seq).run();
+  builder.cosmos.finish();
+  BlobRecognition blob = recognize_blob(builder.built(), context, part_seq);
+  for (PartRecognition& part : blob.parts) mark_stream_fault(part, builder, context);
+  return blob;
 }
 
 PartRecognition report_lost_part(const LostPart& lost, const PartRecognitionContext& context,

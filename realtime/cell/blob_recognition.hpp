@@ -38,7 +38,12 @@ struct BlobRecognition {
   RangeImage image;  // its own pixels in the loop frame (the view recognized first)
 };
 
-// part_seq: the first part's running number; the blob's parts take the next ones.
+// part_seq: the first part's running number; the blob's parts take the next ones. The
+// built part's rows must be final (extract_part_view); stream faults are not marked.
+BlobRecognition recognize_blob(const BuiltPart& built, const PartRecognitionContext& context,
+                               std::int64_t part_seq);
+// A completed builder: its COSMOS finished, the blob recognized and its stream faults marked
+// (mark_stream_fault).
 BlobRecognition recognize_blob(PartBuilder& builder, const PartRecognitionContext& context,
                                std::int64_t part_seq);
 

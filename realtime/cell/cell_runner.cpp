@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <deque>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -43,6 +45,7 @@ struct SharedStatus {
   std::atomic<bool> source_stalled{false};
   std::atomic<std::int64_t> time_p50_ns{0}, time_p99_ns{0}, time_max_ns{0};
   std::atomic<std::int64_t> parts_recognized{0}, parts_rejected{0}, blobs_merged{0};
+  std::atomic<std::int64_t> blobs_recognized_ahead{0}, blobs_recognized_at_completion{0};
   std::atomic<bool> fault{false};
   // The source's one line, written before `fault` is set (release) and read after it.
   std::array<char, 256> fault_reason{};
@@ -66,37 +69,117 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
     status.publisher_wake.notify();
   };
   PieceJoiner joiner(context);
-  // A blob's recognition depends on its builder's rows alone; its part_seq is given in order
-  // by publish().
+  // Per builder: where its blob's recognition stands. A part the loop sent ahead of its
+  // completion (speculative) is recognized from a copy of what the loop knew of it then; at
+  // completion that result holds if the part is still the same, else it is recognized again.
+  enum class Stage : std::uint8_t {
+    kNone,
+    kAheadQueued,
+    kAheadRunning,
+    kAheadDone,
+    kRunning,
+    kReady
+  };
+  const std::size_t builders = static_cast<std::size_t>(loop.builder_count());
+  std::vector<Stage> stage(builders, Stage::kNone);
+  std::vector<BuiltPart> ahead(builders);
+  std::vector<std::optional<BlobRecognition>> results(builders);
+  std::deque<int> ahead_queue;      // speculative parts waiting for a worker
+  std::deque<int> completed_order;  // completed builders, oldest first
+  // Jobs: a builder index, or kAhead plus it for a speculative one. A blob's recognition
+  // depends on its rows alone; its part_seq is given in order by publish().
+  constexpr int kAhead = 1 << 20;
   OrderedWorkers<BlobRecognition> workers(
       settings.threads.recognizer_threads,
-      [&](int index) {
+      [&](int job) {
         if (settings.recognizer_delay_ms > 0)
           std::this_thread::sleep_for(std::chrono::milliseconds(settings.recognizer_delay_ms));
-        return recognize_blob(loop.builder(index), context, 0);
+        if (job >= kAhead)
+          return recognize_blob(ahead[static_cast<std::size_t>(job - kAhead)], context, 0);
+        return recognize_blob(loop.builder(job), context, 0);
       },
       status.recognizer_wake);
+  const auto end_ahead = [&](int index) {
+    while (!loop.speculated().try_push(index)) std::this_thread::sleep_for(kIdleWait);
+  };
   for (;;) {
     const std::uint32_t seen = status.recognizer_wake.epoch();
     // Parts the loop dropped are reported too (ERROR poses): none passes unannounced.
     LostPart lost;
     while (loop.lost_parts().try_pop(lost))
       publish({report_lost_part(lost, context, 0), monotonic_now_ns()});
+    SpeculativePart early;
+    while (loop.speculative().try_pop(early)) {
+      const auto k = static_cast<std::size_t>(early.builder);
+      ahead[k] = early.built;
+      results[k].reset();
+      stage[k] = Stage::kAheadQueued;
+      ahead_queue.push_back(early.builder);
+    }
     int index = -1;
-    while (workers.can_submit() && loop.completed().try_pop(index)) workers.submit(index);
+    while (loop.completed().try_pop(index)) completed_order.push_back(index);
+    // Completed parts first (they are on the latency path), oldest first.
+    for (const int done : completed_order) {
+      const auto k = static_cast<std::size_t>(done);
+      if (stage[k] == Stage::kAheadQueued) {
+        // Completed before a worker took it up: recognized as any completed part.
+        ahead_queue.erase(std::find(ahead_queue.begin(), ahead_queue.end(), done));
+        end_ahead(done);
+        stage[k] = Stage::kNone;
+      } else if (stage[k] == Stage::kAheadDone) {
+        if (ahead[k].same_as(loop.builder(done).built())) {
+          for (PartRecognition& part : results[k]->parts)
+            mark_stream_fault(part, loop.builder(done), context);
+          stage[k] = Stage::kReady;
+          status.blobs_recognized_ahead.fetch_add(1, std::memory_order_relaxed);
+        } else {
+          results[k].reset();
+          stage[k] = Stage::kNone;
+        }
+      }
+      if (stage[k] == Stage::kNone && workers.can_submit()) {
+        workers.submit(done);
+        stage[k] = Stage::kRunning;
+        status.blobs_recognized_at_completion.fetch_add(1, std::memory_order_relaxed);
+      }
+    }
+    while (workers.can_submit() && !ahead_queue.empty()) {
+      const int next = ahead_queue.front();
+      ahead_queue.pop_front();
+      stage[static_cast<std::size_t>(next)] = Stage::kAheadRunning;
+      workers.submit(next + kAhead);
+    }
+    bool progressed = false;
+    while (auto finished = workers.take_oldest()) {
+      progressed = true;
+      const bool early_job = finished->job >= kAhead;
+      const int job = early_job ? finished->job - kAhead : finished->job;
+      const auto k = static_cast<std::size_t>(job);
+      results[k] = std::move(finished->result);
+      stage[k] = early_job ? Stage::kAheadDone : Stage::kReady;
+      if (early_job) end_ahead(job);
+    }
     // Blobs are joined and published in the order they completed, whichever worker is done
     // first.
-    if (auto finished = workers.take_oldest()) {
-      status.blobs_merged.fetch_add(finished->result.merged ? 1 : 0, std::memory_order_relaxed);
-      std::vector<JoinedRecognition> ready =
-          joiner.add(std::move(finished->result), loop.builder(finished->job));
-      loop.returned().try_push(finished->job);  // room for every builder: never full
+    while (!completed_order.empty() &&
+           stage[static_cast<std::size_t>(completed_order.front())] == Stage::kReady) {
+      const int done = completed_order.front();
+      completed_order.pop_front();
+      const auto k = static_cast<std::size_t>(done);
+      BlobRecognition blob = std::move(*results[k]);
+      results[k].reset();
+      stage[k] = Stage::kNone;
+      status.blobs_merged.fetch_add(blob.merged ? 1 : 0, std::memory_order_relaxed);
+      std::vector<JoinedRecognition> ready = joiner.add(std::move(blob), loop.builder(done));
+      loop.returned().try_push(done);  // room for every builder: never full
       for (JoinedRecognition& joined : ready) publish(std::move(joined));
       return_free_heap_pages();
-      continue;
+      progressed = true;
     }
+    if (progressed) continue;
     if (workers.in_flight() == 0 && status.acquisition_done.load(std::memory_order_acquire) &&
-        loop.completed().empty() && loop.lost_parts().empty())
+        loop.completed().empty() && loop.lost_parts().empty() && completed_order.empty() &&
+        loop.speculative().empty() && ahead_queue.empty())
       break;
     status.recognizer_wake.wait(seen, kRecognizerIdleNs);
   }
@@ -268,7 +351,8 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
       break;
     }
     loop.process(profile);
-    if (!loop.completed().empty() || !loop.lost_parts().empty()) shared.recognizer_wake.notify();
+    if (!loop.completed().empty() || !loop.lost_parts().empty() || !loop.speculative().empty())
+      shared.recognizer_wake.notify();
     if (settings.publishing.publish_profiles) {
       Profile* slot = recorded.try_begin_push();
       // Unpaced runs (replays, log recording) lose nothing: they wait for the publisher,
@@ -314,6 +398,8 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
   summary.deadline_overruns = pacer.overruns();
   summary.parts_seen = loop.counters().parts_seen;
   summary.parts_dropped = loop.counters().parts_dropped;
+  summary.blobs_recognized_ahead = shared.blobs_recognized_ahead;
+  summary.blobs_recognized_at_completion = shared.blobs_recognized_at_completion;
   summary.profile_time_p50_us = processing.p50_ns() / 1e3;
   summary.profile_time_p99_us = processing.p99_ns() / 1e3;
   summary.profile_time_p999_us = processing.p999_ns() / 1e3;

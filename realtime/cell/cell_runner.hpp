@@ -86,6 +86,10 @@ struct CellRunSummary {
   std::int64_t parts_dropped = 0;
   std::int64_t poses_published = 0;
   std::int64_t publish_failures = 0;
+  // Blobs whose recognition before the tracker completed them held (speculative
+  // recognition), and those recognized at completion.
+  std::int64_t blobs_recognized_ahead = 0;
+  std::int64_t blobs_recognized_at_completion = 0;
   double profile_time_p50_us = 0, profile_time_p99_us = 0, profile_time_p999_us = 0,
          profile_time_max_us = 0;
   double start_jitter_p50_us = 0, start_jitter_p99_us = 0, start_jitter_max_us = 0;

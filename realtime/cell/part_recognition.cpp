@@ -25,19 +25,18 @@ RigidTransform T_belt_loop() {
 
 }  // namespace
 
-int part_view_first_column(const PartBuilder& builder) {
-  return std::max(0, builder.column_min - kColumnMargin);
+int part_view_first_column(const BuiltPart& built) {
+  return std::max(0, built.column_min - kColumnMargin);
 }
 
-PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& context,
+PartView extract_part_view(const BuiltPart& built, const PartRecognitionContext& context,
                            const std::vector<std::uint8_t>* excluded) {
-  builder.cosmos.finish();
-  const IncrementalCosmos& source = builder.cosmos;
+  const IncrementalCosmos& source = *built.cosmos;
   const int full_width = source.width();
-  const int c0 = part_view_first_column(builder);
-  const int c1 = std::min(full_width - 1, builder.column_max + kColumnMargin);
+  const int c0 = part_view_first_column(built);
+  const int c1 = std::min(full_width - 1, built.column_max + kColumnMargin);
   const int width = c1 - c0 + 1;
-  const int height = source.rows();
+  const int height = built.rows;
 
   PartView part;
   part.image = RangeImage(width, height, context.grid_mm, context.grid_mm);
@@ -62,7 +61,7 @@ PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& c
       const int column = c0 + x;
       const bool away = excluded && (*excluded)[static_cast<std::size_t>(row) * width + x] != 0;
       owned_at(x, row) =
-          !away && in.holds(column) && builder.owns(in.tracker_label[in.at(column)]) ? 1 : 0;
+          !away && in.holds(column) && built.owns(in.tracker_label[in.at(column)]) ? 1 : 0;
     }
   }
   for (int row = 0; row < height; ++row) {
@@ -100,45 +99,57 @@ RigidTransform cell_pose_of_belt(const RigidTransform& T_belt_part, std::int64_t
       .normalized();
 }
 
-RigidTransform cell_pose_of(const RigidTransform& T_loop_part, const PartBuilder& builder,
+RigidTransform cell_pose_of(const RigidTransform& T_loop_part, const BuiltPart& built,
                             const PartRecognitionContext& context) {
-  return cell_pose_of_belt(T_belt_loop() * T_loop_part, builder.last_data_encoder_ticks, context);
+  return cell_pose_of_belt(T_belt_loop() * T_loop_part, built.last_data_encoder_ticks, context);
 }
 
-PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContext& context,
+PartRecognition recognize_part(const BuiltPart& built, const PartRecognitionContext& context,
                                std::int64_t part_seq) {
   const auto start = std::chrono::steady_clock::now();
-  const PartView part = extract_part_view(builder, context);
+  const PartView part = extract_part_view(built, context);
   const double features_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  return recognize_part_view(part, builder, context, part_seq, features_ms);
+  return recognize_part_view(part, built, context, part_seq, features_ms);
 }
 
-PartRecognition recognize_part_view(const PartView& part, PartBuilder& builder,
+PartRecognition recognize_part_view(const PartView& part, const BuiltPart& built,
                                     const PartRecognitionContext& context, std::int64_t part_seq,
                                     double features_ms) {
   PartRecognition out =
       recognition_of(context.recognizer->recognize_analyzed(part.image, part.analysis, features_ms),
-                     builder, context, part_seq);
+                     built, context, part_seq);
   if (context.keep_part_image) {
     out.image = part.image;
-    out.image_first_profile = builder.first_profile;
+    out.image_first_profile = built.first_profile;
   }
   return out;
 }
 
-PartRecognition recognition_of(RecognitionResult result, const PartBuilder& builder,
+void mark_stream_fault(PartRecognition& recognition, const PartBuilder& builder,
+                       const PartRecognitionContext& context) {
+  if (!context.stream_faults || recognition.pose.status == PoseStatus::kError) return;
+  const StreamFaultKind fault =
+      context.stream_faults->fault_in({static_cast<std::uint64_t>(builder.first_profile),
+                                       static_cast<std::uint64_t>(builder.last_data_profile),
+                                       static_cast<std::uint64_t>(builder.last_profile)});
+  if (fault == StreamFaultKind::kNone) return;
+  recognition.pose.status = PoseStatus::kError;
+  recognition.pose.reason = std::string("the part's rows span a stream fault (") +
+                            to_string(fault) + "): rows missing or its encoder count wrong";
+}
+
+PartRecognition recognition_of(RecognitionResult result, const BuiltPart& built,
                                const PartRecognitionContext& context, std::int64_t part_seq) {
   PartRecognition out;
   out.result = std::move(result);
   PartPose& pose = out.pose;
-  pose.utime_us = builder.last_data_t_us;
+  pose.utime_us = built.last_data_t_us;
   pose.part_seq = part_seq;
-  pose.encoder_ticks = builder.last_data_encoder_ticks;
-  pose.encoder_ticks_first = builder.first_encoder_ticks;
-  pose.blob_extent_mm =
-      Eigen::Vector3d((builder.column_max - builder.column_min + 1) * context.grid_mm,
-                      builder.cosmos.rows() * context.grid_mm, builder.max_z_mm);
+  pose.encoder_ticks = built.last_data_encoder_ticks;
+  pose.encoder_ticks_first = built.first_encoder_ticks;
+  pose.blob_extent_mm = Eigen::Vector3d((built.column_max - built.column_min + 1) * context.grid_mm,
+                                        built.rows * context.grid_mm, built.max_z_mm);
   if (out.result.status == RecognitionStatus::kOk) {
     pose.status = PoseStatus::kOk;
     const auto base_part = static_cast<std::size_t>(out.result.part);
@@ -152,22 +163,11 @@ PartRecognition recognition_of(RecognitionResult result, const PartBuilder& buil
     pose.status = PoseStatus::kRejected;
     pose.reason = out.result.reason;
   }
-  const StreamFaultKind fault =
-      context.stream_faults
-          ? context.stream_faults->fault_in({static_cast<std::uint64_t>(builder.first_profile),
-                                             static_cast<std::uint64_t>(builder.last_data_profile),
-                                             static_cast<std::uint64_t>(builder.last_profile)})
-          : StreamFaultKind::kNone;
-  if (fault != StreamFaultKind::kNone) {
-    pose.status = PoseStatus::kError;
-    pose.reason = std::string("the part's rows span a stream fault (") + to_string(fault) +
-                  "): rows missing or its encoder count wrong";
-  }
   out.T_belt_part = T_belt_loop() * out.result.T_scanner_part;
-  out.first_profile = builder.first_profile;
-  out.last_profile = builder.first_profile + builder.cosmos.rows() - 1;
+  out.first_profile = built.first_profile;
+  out.last_profile = built.first_profile + built.rows - 1;
   const RigidTransform T_cell_part =
-      cell_pose_of_belt(out.T_belt_part, builder.last_data_encoder_ticks, context);
+      cell_pose_of_belt(out.T_belt_part, built.last_data_encoder_ticks, context);
   pose.rotation_cell_part = Eigen::Quaterniond(T_cell_part.rotation);
   pose.translation_cell_part_mm = T_cell_part.translation_mm;
   pose.score = out.result.score;

@@ -64,16 +64,16 @@ struct PartView {
   RangeImage image;
   ViewAnalysis analysis;
 };
-// Finishes the builder's COSMOS first: the pipeline's last rows (up to the smoothing depth)
-// are drained here, on the recognizer's thread, rather than in the acquisition thread's
-// profile that completed the part: draining them is the work of many rows at once, far more
-// than one line period allows.
+// The part's rows must be final: those of a completed builder once its COSMOS is finished
+// (recognize_blob(PartBuilder&) drains the pipeline's last rows on the recognizer's thread:
+// the work of many rows at once, far more than one line period allows), or rows the pipeline
+// has already passed (a part recognized before the tracker completed it).
 // `excluded` (the view's size, row-major; null: none): pixels also masked out, those that
 // parts already recognized in the blob explain (blob_recognition.hpp).
-PartView extract_part_view(PartBuilder& builder, const PartRecognitionContext& context,
+PartView extract_part_view(const BuiltPart& built, const PartRecognitionContext& context,
                            const std::vector<std::uint8_t>* excluded = nullptr);
 // The first loop-frame column of the view extract_part_view cuts out of the builder.
-int part_view_first_column(const PartBuilder& builder);
+int part_view_first_column(const BuiltPart& built);
 
 struct PartRecognition {
   PartPose pose;
@@ -89,19 +89,24 @@ struct PartRecognition {
   RangeImage image;
   std::int64_t image_first_profile = 0;
 };
-PartRecognition recognize_part(PartBuilder& builder, const PartRecognitionContext& context,
+PartRecognition recognize_part(const BuiltPart& built, const PartRecognitionContext& context,
                                std::int64_t part_seq);
 // The same for a view already cut out (the blob's, or what remains of it once the parts
 // recognized in it are taken away); `features_ms` is the time its analysis took.
-PartRecognition recognize_part_view(const PartView& part, PartBuilder& builder,
+PartRecognition recognize_part_view(const PartView& part, const BuiltPart& built,
                                     const PartRecognitionContext& context, std::int64_t part_seq,
                                     double features_ms);
 // The pose of a recognition result in the loop frame, at the builder's last encoder count.
-PartRecognition recognition_of(RecognitionResult result, const PartBuilder& builder,
+PartRecognition recognition_of(RecognitionResult result, const BuiltPart& built,
                                const PartRecognitionContext& context, std::int64_t part_seq);
 // T_cell_part for a pose in the builder's loop frame, at the builder's last encoder count.
-RigidTransform cell_pose_of(const RigidTransform& T_loop_part, const PartBuilder& builder,
+RigidTransform cell_pose_of(const RigidTransform& T_loop_part, const BuiltPart& built,
                             const PartRecognitionContext& context);
+// A part whose rows span a fault of the source's stream (context.stream_faults), up to the
+// builder's last row: ERROR, with the fault named. Applied once the tracker has completed the
+// part, since a fault in the rows after its last data (a piece of it lost) counts too.
+void mark_stream_fault(PartRecognition& recognition, const PartBuilder& builder,
+                       const PartRecognitionContext& context);
 // The same for a pose on the belt at encoder count e (the chain above).
 RigidTransform cell_pose_of_belt(const RigidTransform& T_belt_part, std::int64_t encoder_ticks,
                                  const PartRecognitionContext& context);

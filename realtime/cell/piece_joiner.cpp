@@ -87,7 +87,8 @@ bool PieceJoiner::recognize_together(const Piece& piece, const PartBuilder& buil
   RangeImage joined = union_image(images);
   RecognitionResult result = context_.recognizer->recognize(joined);
   if (result.status != RecognitionStatus::kOk) return false;
-  PartRecognition together = recognition_of(std::move(result), builder, context_, 0);
+  PartRecognition together = recognition_of(std::move(result), builder.built(), context_, 0);
+  mark_stream_fault(together, builder, context_);
   if (context_.keep_part_image) {
     // The loop frame's y is the profile index times the grid (ScanLoop::begin_part).
     together.image_first_profile =

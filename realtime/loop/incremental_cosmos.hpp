@@ -47,6 +47,8 @@ class IncrementalCosmos {
   void release_rows() { rows_store_.clear(); }
 
   int rows() const { return rows_; }
+  // Rows whose COSMOS is final, [0, final_rows()): stored, and never written again.
+  int final_rows() const { return classified_rows_; }
   int width() const { return width_; }
   // Row r of the part; its COSMOS planes are final once finish() has run.
   PartRow row(int r) const { return rows_store_.row(r); }

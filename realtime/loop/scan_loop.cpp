@@ -23,6 +23,27 @@ PartBuilder::PartBuilder(const CosmosParameters& cosmos_parameters, int width, i
                          double grid_mm, RowBlockPool& row_pool)
     : cosmos(cosmos_parameters, width, max_rows, grid_mm, grid_mm, row_pool) {}
 
+BuiltPart PartBuilder::built() const {
+  BuiltPart part;
+  part.cosmos = &cosmos;
+  part.rows = static_cast<int>(std::min<std::int64_t>(
+      cosmos.rows(), std::max<std::int64_t>(0, last_data_row - first_row + 1)));
+  part.part_id = part_id;
+  part.merged_ids = merged_ids;
+  part.merged_count = merged_count;
+  part.first_profile = first_profile;
+  part.last_data_profile = last_data_profile;
+  part.first_encoder_ticks = first_encoder_ticks;
+  part.last_data_encoder_ticks = last_data_encoder_ticks;
+  part.last_data_t_us = last_data_t_us;
+  part.column_min = column_min;
+  part.column_max = column_max;
+  part.max_z_mm = max_z_mm;
+  part.tracked_rows = tracked_rows;
+  part.truncated = truncated;
+  return part;
+}
+
 bool PartBuilder::owns(std::int64_t id) const {
   if (id == part_id) return true;
   for (int k = 0; k < merged_count; ++k)
@@ -52,6 +73,11 @@ ScanLoop::ScanLoop(const ScanLoopSettings& settings)
       completed_(static_cast<std::size_t>(std::max(settings.parts.part_queue_slots, 1))),
       returned_(static_cast<std::size_t>(std::max(settings.parts.builders, 1))),
       lost_(static_cast<std::size_t>(PartQueueSettings::kLostPartSlots)),
+      speculative_(static_cast<std::size_t>(std::max(settings.parts.builders, 1))),
+      speculated_(static_cast<std::size_t>(std::max(settings.parts.builders, 1))),
+      speculation_sent_(static_cast<std::size_t>(std::max(settings.parts.builders, 1)), 0),
+      speculation_running_(speculation_sent_.size(), 0),
+      free_when_speculated_(speculation_sent_.size(), 0),
       row_stamps_(static_cast<std::size_t>(std::max(settings.tracking.link_gap_rows, 0) + 3 +
                                            deshear_.delay())),
       row_belt_(static_cast<std::size_t>(conditioner_.width())),
@@ -81,12 +107,26 @@ double ScanLoop::x0_loop_mm() const {
 }
 
 void ScanLoop::free_builder(int index) {
-  builders_[static_cast<std::size_t>(index)]->cosmos.release_rows();
+  const auto k = static_cast<std::size_t>(index);
+  if (speculation_running_[k]) {
+    // A recognizer worker may still read its rows: it goes back once the worker is done.
+    free_when_speculated_[k] = 1;
+    return;
+  }
+  builders_[k]->cosmos.release_rows();
   free_builders_.push_back(index);
 }
 
 void ScanLoop::reclaim_returned() {
   int index = -1;
+  while (speculated_.try_pop(index)) {
+    const auto k = static_cast<std::size_t>(index);
+    speculation_running_[k] = 0;
+    if (free_when_speculated_[k]) {
+      free_when_speculated_[k] = 0;
+      free_builder(index);
+    }
+  }
   while (returned_.try_pop(index)) free_builder(index);
 }
 
@@ -163,18 +203,9 @@ void ScanLoop::complete(const TrackedPart& part) {
     return;
   }
   PartBuilder& builder = *builders_[static_cast<std::size_t>(index)];
-  builder.column_min = width() - 1 - part.column_max;
-  builder.column_max = width() - 1 - part.column_min;
-  builder.max_z_mm = part.max_z_mm;
+  describe(builder, part);
   builder.soft_link_of = part.soft_link_of;
   builder.has_soft_successor = part.has_soft_successor;
-  builder.tracked_rows = part.last_row - part.first_row + 1;
-  // The pose holds at its last row with data: the empty rows the tracker waited through after
-  // it took nothing of the part, so an encoder fault among them must not move its count.
-  const RowStamp& last_data = stamp_of_row(part.last_row);
-  builder.last_data_profile = last_data.profile;
-  builder.last_data_encoder_ticks = last_data.encoder_ticks;
-  builder.last_data_t_us = last_data.t_us;
   builder.completed_ns = monotonic_now_ns();
   counters_.parts_seen.fetch_add(1, std::memory_order_relaxed);
   counters_.parts_truncated.fetch_add(builder.truncated ? 1 : 0, std::memory_order_relaxed);
@@ -188,6 +219,49 @@ void ScanLoop::complete(const TrackedPart& part) {
       return;
     }
     std::this_thread::yield();
+  }
+}
+
+void ScanLoop::describe(PartBuilder& builder, const TrackedPart& part) {
+  builder.column_min = width() - 1 - part.column_max;
+  builder.column_max = width() - 1 - part.column_min;
+  builder.max_z_mm = part.max_z_mm;
+  builder.tracked_rows = part.last_row - part.first_row + 1;
+  builder.last_data_row = part.last_row;
+  // The pose holds at its last row with data: the empty rows the tracker waited through after
+  // it took nothing of the part, so an encoder fault among them must not move its count.
+  const RowStamp& last_data = stamp_of_row(part.last_row);
+  builder.last_data_profile = last_data.profile;
+  builder.last_data_encoder_ticks = last_data.encoder_ticks;
+  builder.last_data_t_us = last_data.t_us;
+}
+
+void ScanLoop::speculate() {
+  if (!settings_.parts.speculative_recognition) return;
+  const std::vector<TrackedPart>& open = tracker_.open_parts();
+  for (const int index : open_builders_) {
+    const auto k = static_cast<std::size_t>(index);
+    PartBuilder& builder = *builders_[k];
+    if (speculation_sent_[k] || builder.truncated) continue;
+    const auto part = std::find_if(open.begin(), open.end(), [&builder](const TrackedPart& p) {
+      return p.id == builder.part_id;
+    });
+    // Only a part that no run can join outright any more, that is no speck, whose last row
+    // with data is final in its builder, and that shares no row with another open part (which
+    // could still merge with it when either completes, part_tracker.hpp).
+    if (part == open.end() ||
+        row_index_ - part->last_row <= settings_.tracking.hard_link_gap_rows + 1 ||
+        part->pixels < settings_.tracking.min_pixels ||
+        builder.cosmos.final_rows() <= part->last_row - builder.first_row)
+      continue;
+    const bool beside_another =
+        std::any_of(open.begin(), open.end(), [&part](const TrackedPart& p) {
+          return p.id != part->id && p.first_row <= part->last_row + 1;
+        });
+    if (beside_another) continue;
+    describe(builder, *part);
+    if (!speculative_.try_push(SpeculativePart{index, builder.built()})) continue;
+    speculation_sent_[k] = speculation_running_[k] = 1;
   }
 }
 
@@ -210,6 +284,8 @@ void ScanLoop::start_parts(const RowStamp& stamp) {
     builder.part_id = part.id;
     builder.merged_count = 0;
     builder.first_profile = stamp.profile;
+    builder.first_row = row_index_;
+    speculation_sent_[static_cast<std::size_t>(index)] = 0;
     builder.last_data_profile = stamp.profile;
     builder.last_profile = stamp.profile;
     builder.first_encoder_ticks = stamp.encoder_ticks;
@@ -264,6 +340,7 @@ void ScanLoop::add_row(const float* z_mm, const std::uint8_t* belt, const RowSta
   start_parts(stamp);
   for (std::size_t k = 0; k < open_builders_.size();)
     k += add_row_to(open_builders_[k], stamp) ? 1 : 0;
+  speculate();
   ++row_index_;
 }
 

@@ -28,6 +28,7 @@
 #include "core/cosmos_parameters.hpp"
 #include "core/parameter_visitor.hpp"
 #include "core/profile.hpp"
+#include "realtime/loop/built_part.hpp"
 #include "realtime/loop/incremental_cosmos.hpp"
 #include "realtime/loop/part_tracker.hpp"
 #include "realtime/loop/profile_conditioner.hpp"
@@ -36,8 +37,6 @@
 #include "realtime/rt/spsc_ring.hpp"
 
 namespace cosmos {
-
-inline constexpr int kMaxMergedIds = 16;
 
 // A part the loop could not hand to the recognizer. It is still reported (an ERROR pose:
 // a robot or reject gate must learn that something passed), with what the tracker knows.
@@ -72,6 +71,8 @@ struct PartBuilder {
   std::array<std::int64_t, kMaxMergedIds> merged_ids{};  // ids merged into this part
   int merged_count = 0;
   std::int64_t first_profile = 0;  // the source's profile index of row 0
+  std::int64_t first_row = 0;      // the tracker's row index of row 0
+  std::int64_t last_data_row = 0;  // the tracker's row index of its last row with data
   // The profile indices of its last row with data (known once the tracker completed it) and
   // of the last row added, up to tracking.link_gap_rows of empty belt later.
   std::int64_t last_data_profile = 0;
@@ -94,6 +95,8 @@ struct PartBuilder {
   std::int64_t completed_ns = 0;  // monotonic clock when the tracker completed it
 
   bool owns(std::int64_t id) const;
+  // What recognition reads of it: its rows up to its last with data, its extent and stamps.
+  BuiltPart built() const;
 };
 
 // The loop's part builders, the pool their rows are kept in and the queue to the recognizer
@@ -113,6 +116,12 @@ struct PartQueueSettings {
   // finds no block left is dropped and counted like one that finds no builder.
   int row_blocks = 96;
   int row_block_rows = 16;
+  // A part is recognized in the rows after its end, while the tracker waits out
+  // link_gap_rows before it completes it (speculative recognition): once nothing can join it
+  // outright and no other part beside it could merge with it, its final rows go to a
+  // recognizer worker. At completion the result is used when the part is still the same
+  // (else it is recognized again), so the poses are the same either way, only earlier.
+  bool speculative_recognition = true;
   // Parts lost for want of a builder or queue slot, queued for their ERROR poses: fixed
   // capacity (the hot path never allocates); beyond it a loss is only counted.
   static constexpr int kLostPartSlots = 64;
@@ -133,6 +142,9 @@ struct PartQueueSettings {
       "full-width rows per row-pool block (a part's rows hold only its own columns, so "
       "more of them fit); 42 kB per row",
       Range{1, 4096});
+    v("speculative_recognition", speculative_recognition,
+      "recognize a part in the rows after its end, before the tracker completes it "
+      "(link_gap_rows later); the same poses, earlier");
   }
 };
 
@@ -151,6 +163,13 @@ struct ScanLoopSettings {
   // dropped and counted. true (unpaced test and replay runs, no deadlines to keep): the loop
   // waits for the recognizer instead, so every part is recognized whatever the timing.
   bool wait_for_recognizer = false;
+};
+
+// A part handed to the recognizer before the tracker completed it (speculative recognition):
+// its builder, still the acquisition thread's, and what recognition reads of it.
+struct SpeculativePart {
+  int builder = -1;
+  BuiltPart built;
 };
 
 struct ScanLoopCounters {
@@ -185,10 +204,16 @@ class ScanLoop {
   // be finished: extract_part_view does it on the recognizer's thread), and their return.
   SpscRing<int>& completed() { return completed_; }
   SpscRing<int>& returned() { return returned_; }
+  // Parts to recognize before they complete (ScanLoopSettings::parts.speculative_recognition),
+  // and the builders whose speculative recognition has ended or was dropped (no worker reads
+  // them any more): until then the loop neither frees nor reuses the builder.
+  SpscRing<SpeculativePart>& speculative() { return speculative_; }
+  SpscRing<int>& speculated() { return speculated_; }
   // Parts dropped for want of a builder or a queue slot, each to be reported as an ERROR
   // pose by the recognizer's thread (report_lost_part, part_recognition.hpp).
   SpscRing<LostPart>& lost_parts() { return lost_; }
   PartBuilder& builder(int index) { return *builders_[static_cast<std::size_t>(index)]; }
+  int builder_count() const { return static_cast<int>(builders_.size()); }
   const RowBlockPool& row_pool() const { return row_pool_; }
   const ScanLoopCounters& counters() const { return counters_; }
   int width() const { return conditioner_.width(); }
@@ -218,6 +243,10 @@ class ScanLoop {
   bool add_row_to(int index, const RowStamp& stamp);
   void start_parts(const RowStamp& stamp);
   void complete(const TrackedPart& part);
+  // The tracker's extent and last data row of `part`, in its builder.
+  void describe(PartBuilder& builder, const TrackedPart& part);
+  // Open parts that nothing can change any more before they complete, to the recognizer.
+  void speculate();
   int builder_of(std::int64_t id) const;
   void report_lost(const LostPart& lost);
   RowStamp& stamp_of_row(std::int64_t row);
@@ -239,6 +268,11 @@ class ScanLoop {
   SpscRing<int> completed_;
   SpscRing<int> returned_;
   SpscRing<LostPart> lost_;
+  SpscRing<SpeculativePart> speculative_;
+  SpscRing<int> speculated_;
+  // Per builder: its part went to speculative recognition; a worker may read it (the loop
+  // frees it only after); it was freed meanwhile, and goes back once no worker reads it.
+  std::vector<std::uint8_t> speculation_sent_, speculation_running_, free_when_speculated_;
   std::vector<UnbuiltPart> unbuilt_;     // capacity: the tracker's max_open_parts
   std::vector<RowStamp> row_stamps_;     // ring over the last rows, by input row
   std::vector<float> row_belt_;          // conditioned, belt column order

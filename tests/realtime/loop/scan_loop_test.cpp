@@ -62,15 +62,24 @@ ScanLoopSettings small_pool_settings() {
   return settings;
 }
 
+// The recognizer's answer to parts sent ahead of their completion when it recognizes none:
+// no worker reads their builders.
+void decline_speculation(ScanLoop& loop) {
+  SpeculativePart part;
+  while (loop.speculative().try_pop(part)) loop.speculated().try_push(part.builder);
+}
+
 // Runs `rows` profiles of a part, then enough belt for the tracker to complete it.
 void pass_part(ScanLoop& loop, Profile& profile, std::uint64_t& seq, int rows, double width_mm) {
   for (int k = 0; k < rows; ++k) {
     make_profile(profile, seq++, true, width_mm);
     loop.process(profile);
+    decline_speculation(loop);
   }
   for (int k = 0; k < 100; ++k) {
     make_profile(profile, seq++, false, width_mm);
     loop.process(profile);
+    decline_speculation(loop);
   }
 }
 
@@ -128,6 +137,66 @@ TEST(ScanLoop, BuildersHoldOnlyTheirPartsColumnsAndGiveThemBackWhenReturned) {
   loop.process(profile);
   EXPECT_EQ(loop.row_pool().blocks_in_use(), 0);
   EXPECT_EQ(loop.counters().row_blocks_peak, 1);
+}
+
+TEST(ScanLoop, APartIsSentAheadOnceNothingCanChangeItWithWhatItsCompletionHolds) {
+  ScanLoop loop(ScanLoopSettings{});
+  Profile profile;
+  std::uint64_t seq = 0;
+  for (int k = 0; k < 30; ++k) {
+    make_profile(profile, seq++, true, 40.0);
+    loop.process(profile);
+  }
+  SpeculativePart ahead;
+  int belt_rows = 0;
+  while (!loop.speculative().try_pop(ahead)) {
+    make_profile(profile, seq++, false, 40.0);
+    loop.process(profile);
+    ASSERT_LT(++belt_rows, 75) << "not sent ahead before the tracker completed it";
+  }
+  EXPECT_TRUE(loop.completed().empty());
+  // Its rows up to its last with data, final in the builder; what its completion says of it
+  // is the same.
+  EXPECT_EQ(ahead.built.rows, 30);
+  EXPECT_GE(ahead.built.cosmos->final_rows(), 30);
+  EXPECT_EQ(ahead.built.last_data_profile, 29);
+  int index = -1;
+  for (int k = 0; k < 100 && !loop.completed().try_pop(index); ++k) {
+    make_profile(profile, seq++, false, 40.0);
+    loop.process(profile);
+  }
+  ASSERT_EQ(index, ahead.builder);
+  EXPECT_TRUE(loop.builder(index).built().same_as(ahead.built));
+  EXPECT_TRUE(loop.speculative().empty());  // once per part
+}
+
+TEST(ScanLoop, ABuilderAWorkerMayStillReadIsFreedOnlyOnceItsSpeculationEnds) {
+  ScanLoopSettings settings;
+  settings.parts.builders = 1;
+  ScanLoop loop(settings);
+  Profile profile;
+  std::uint64_t seq = 0;
+  const auto belt = [&](int rows) {
+    for (int k = 0; k < rows; ++k) {
+      make_profile(profile, seq++, false, 40.0);
+      loop.process(profile);
+    }
+  };
+  for (int k = 0; k < 30; ++k) {
+    make_profile(profile, seq++, true, 40.0);
+    loop.process(profile);
+  }
+  belt(100);
+  SpeculativePart ahead;
+  ASSERT_TRUE(loop.speculative().try_pop(ahead));
+  int index = -1;
+  ASSERT_TRUE(loop.completed().try_pop(index));
+  loop.returned().try_push(index);
+  belt(1);
+  EXPECT_EQ(loop.row_pool().blocks_in_use(), 1);  // a worker may still read its rows
+  loop.speculated().try_push(ahead.builder);
+  belt(1);
+  EXPECT_EQ(loop.row_pool().blocks_in_use(), 0);
 }
 
 TEST(ScanLoop, TakingAndGivingBackRowBlocksAllocatesNothing) {
