@@ -15,8 +15,10 @@
 //   PacedReplayLatency
 //                     the same stream recorded to an LCM log once and replayed paced through
 //                     ReplaySource, as a cell behind a real scanner runs: no ray casting on the
-//                     acquisition thread, so the end of part -> pose latency_p50_ms is the
-//                     loop's and the recognizer's alone
+//                     acquisition thread, so the end of part -> pose latency_p50_ms and
+//                     latency_p99_ms are the loop's and the recognizer's alone; blobs_ahead
+//                     and blobs_at_completion: how many were recognized before the tracker
+//                     completed them (speculative recognition) and how many at completion
 // Needs the catalog meshes (scripts/fetch_catalog.sh). The whole-cell runs also need the
 // regression model base: $COSMOS_BENCH_MODEL_BASE, else build/test-data/regression-80.cmb
 // (ctest builds it, tests/CMakeLists.txt). $COSMOS_BENCH_CATALOG replaces the regression
@@ -244,12 +246,17 @@ PartRecognitionContext recognition_context(const BenchRecognition& recognition,
   return context;
 }
 
-double median(std::vector<double> values) {
+// The value `fraction` of the way up the sorted values (0.5: the median).
+double quantile(std::vector<double> values, double fraction) {
   if (values.empty()) return 0;
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
+  const auto at =
+      values.begin() + static_cast<std::ptrdiff_t>(std::min(
+                           values.size() - 1, static_cast<std::size_t>(fraction * values.size())));
+  std::nth_element(values.begin(), at, values.end());
+  return *at;
 }
+
+double median(std::vector<double> values) { return quantile(std::move(values), 0.5); }
 
 // One whole-cell run of `parts` simulated parts of the regression catalog through a memory
 // publisher, latency_ms measured (not zeroed); paced at the default line rate or unpaced with
@@ -374,6 +381,7 @@ void PacedReplayLatency(benchmark::State& state) {
   CellRunSummary summary;
   std::vector<double> latencies_ms, recognize_ms;
   int searched = 0;
+  std::int64_t ahead = 0, at_completion = 0;
   for (auto _ : state) {
     ReplaySource source(log_path);
     if (source.start() != SourceStatus::kOk) {
@@ -393,11 +401,16 @@ void PacedReplayLatency(benchmark::State& state) {
                              [](const RecognitionCandidate& c) { return c.from_pose_search; });
                        });
     for (const PartPose& pose : publisher.poses) latencies_ms.push_back(pose.latency_ms);
+    ahead += summary.blobs_recognized_ahead;
+    at_completion += summary.blobs_recognized_at_completion;
   }
   fs::remove(log_path);
   state.counters["recognize_p50_ms"] = median(recognize_ms);
   state.counters["pose_searched"] = searched;
   state.counters["latency_p50_ms"] = median(latencies_ms);
+  state.counters["latency_p99_ms"] = quantile(latencies_ms, 0.99);
+  state.counters["blobs_ahead"] = static_cast<double>(ahead);
+  state.counters["blobs_at_completion"] = static_cast<double>(at_completion);
   state.counters["latency_max_ms"] =
       latencies_ms.empty() ? 0 : *std::max_element(latencies_ms.begin(), latencies_ms.end());
   state.counters["poses"] = static_cast<double>(latencies_ms.size());
