@@ -15,7 +15,7 @@
 namespace cosmos {
 
 struct PartTrackerParameters {
-  int max_open_parts = 8;     // more at once: the extra runs are dropped and counted
+  int max_open_parts = 16;    // more at once: the extra runs are dropped and counted
   int max_runs_per_row = 64;  // more runs in a row: the extra are dropped and counted
   int link_gap_columns = 1;   // runs this many columns apart still touch (speckle gaps)
   // A part stays open this many rows without data, and a run within its column extent

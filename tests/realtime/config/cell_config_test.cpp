@@ -63,7 +63,7 @@ TEST_F(CellConfigFile, ShippedConfigHoldsTheDocumentedDefaults) {
   EXPECT_EQ(c.max_height_mm, defaults.conditioning.max_height_mm);
 
   const TrackingSettings& t = config.tracking;
-  EXPECT_EQ(t.tracker.max_open_parts, 8);
+  EXPECT_EQ(t.tracker.max_open_parts, 16);
   EXPECT_EQ(t.tracker.max_runs_per_row, 64);
   EXPECT_EQ(t.tracker.link_gap_columns, 25);
   EXPECT_EQ(t.tracker.link_gap_rows, 75);
