@@ -1,5 +1,6 @@
 #include "sim/conveyor_scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -19,8 +20,7 @@ bool overlap_xy(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b) {
 
 }  // namespace
 
-ConveyorScene::ConveyorScene(bool movable_parts)
-    : embree_(std::make_unique<EmbreeScene>()), movable_parts_(movable_parts) {}
+ConveyorScene::ConveyorScene() : embree_(std::make_unique<EmbreeScene>()) {}
 ConveyorScene::~ConveyorScene() = default;
 
 int ConveyorScene::add_mesh(const TriangleMesh& mesh) {
@@ -43,8 +43,7 @@ int ConveyorScene::add_part(std::string name, int mesh, const Eigen::Isometry3d&
                                   "' (bounding boxes overlap on the belt)");
     }
   }
-  const int instance = embree_->add_instance(
-      mesh, T_belt_part, movable_parts_ ? MeshPlacement::kInstanced : MeshPlacement::kBaked);
+  const int instance = embree_->add_instance(mesh, T_belt_part);
   parts_.push_back(
       {std::move(name), mesh, T_belt_part, embree_->instance_bounds(instance),
        HeightBoundGrid(meshes_[static_cast<std::size_t>(mesh)], T_belt_part, kHeightBoundCellMm)});
@@ -60,7 +59,17 @@ void ConveyorScene::move_part(int part, const Eigen::Isometry3d& T_belt_part) {
                                          T_belt_part, kHeightBoundCellMm);
 }
 
-void ConveyorScene::commit() { embree_->commit(); }
+void ConveyorScene::commit() {
+  embree_->commit();
+  std::vector<Eigen::AlignedBox3d> boxes;
+  boxes.reserve(parts_.size());
+  highest_z_mm_ = 0.0;
+  for (const PlacedPart& part : parts_) {
+    boxes.push_back(part.bounds_mm);
+    highest_z_mm_ = std::max(highest_z_mm_, part.bounds_mm.max().z());
+  }
+  parts_along_belt_.rebuild(boxes);
+}
 
 Eigen::AlignedBox3d ConveyorScene::bounds_mm() const {
   Eigen::AlignedBox3d box;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "scanner/scanner_model.hpp"
+#include "sim/belt_interval_index.hpp"
 #include "sim/height_bound_grid.hpp"
 #include "sim/mesh.hpp"
 
@@ -33,10 +34,9 @@ struct PlacedPart {
 
 class ConveyorScene {
  public:
-  // movable_parts: parts are placed as Embree instances, so move_part() is cheap (model
-  // views); otherwise their triangles are built into the scene at their pose, for faster
-  // rays (embree_scene.hpp).
-  explicit ConveyorScene(bool movable_parts = false);
+  // Each mesh is stored once, however many parts use it; parts are placements of it
+  // (embree_scene.hpp), so moving one is cheap.
+  ConveyorScene();
   ~ConveyorScene();
   ConveyorScene(const ConveyorScene&) = delete;
   ConveyorScene& operator=(const ConveyorScene&) = delete;
@@ -47,20 +47,29 @@ class ConveyorScene {
   // another part's in x and y (a conservative test: boxes, not surfaces).
   int add_part(std::string name, int mesh, const Eigen::Isometry3d& T_belt_part);
   // Moves a placed part (model views turn one part through many poses). No touching check.
-  // Cheap for movable parts; otherwise it rebuilds the part's ray-tracing structure.
   void move_part(int part, const Eigen::Isometry3d& T_belt_part);
   // Makes added or moved parts visible to the rays; required before scanning.
   void commit();
 
   const std::vector<PlacedPart>& parts() const { return parts_; }
+  // Calls visit(part) for each part whose y extent (belt frame) meets [y_low_mm, y_high_mm],
+  // in a fixed order; as of the last commit(). Allocation-free.
+  template <class Visit>
+  void for_each_part_meeting_y(double y_low_mm, double y_high_mm, Visit&& visit) const {
+    parts_along_belt_.for_each_meeting(
+        y_low_mm, y_high_mm, [&](int part) { visit(parts_[static_cast<std::size_t>(part)]); });
+  }
   Eigen::AlignedBox3d bounds_mm() const;  // all parts; empty box without parts
+  // The top of the tallest part (belt frame), as of the last commit(); 0 without parts.
+  double highest_z_mm() const { return highest_z_mm_; }
   const EmbreeScene& embree() const { return *embree_; }
 
  private:
   std::unique_ptr<EmbreeScene> embree_;
-  bool movable_parts_ = false;
   std::vector<TriangleMesh> meshes_;  // for the parts' height bounds
   std::vector<PlacedPart> parts_;
+  BeltIntervalIndex parts_along_belt_;
+  double highest_z_mm_ = 0.0;
 };
 
 // The belt's displacement at a tick count, as the transform from belt to scanner frame.

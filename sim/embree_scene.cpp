@@ -1,10 +1,17 @@
 #include "sim/embree_scene.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 namespace cosmos {
 namespace {
+
+constexpr int kPacket = 8;
+// A ray's sweep is boxed up to this length: the orthographic probe's rays are unbounded.
+constexpr double kLongestRayMm = 1e6;
 
 const char* error_name(RTCError error) {
   switch (error) {
@@ -25,30 +32,6 @@ const char* error_name(RTCError error) {
   }
 }
 
-void set_instance_matrix(RTCGeometry geometry, const Eigen::Isometry3d& T_world_mesh) {
-  // Embree's RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR: the 3x3 linear part column by column, then the
-  // translation.
-  float matrix[12];
-  const Eigen::Matrix3d& R = T_world_mesh.linear();
-  const Eigen::Vector3d& t = T_world_mesh.translation();
-  for (int column = 0; column < 3; ++column) {
-    for (int row = 0; row < 3; ++row) matrix[column * 3 + row] = static_cast<float>(R(row, column));
-  }
-  for (int row = 0; row < 3; ++row) matrix[9 + row] = static_cast<float>(t(row));
-  rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, matrix);
-}
-
-void write_vertices(RTCGeometry geometry, const TriangleMesh& mesh,
-                    const Eigen::Isometry3d& T_world_mesh) {
-  auto* vertices =
-      static_cast<float*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_VERTEX, 0));
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-    const Eigen::Vector3d world = T_world_mesh * mesh.vertices[v].cast<double>();
-    for (int k = 0; k < 3; ++k)
-      vertices[3 * v + static_cast<std::size_t>(k)] = static_cast<float>(world(k));
-  }
-}
-
 }  // namespace
 
 EmbreeScene::EmbreeScene() {
@@ -57,19 +40,10 @@ EmbreeScene::EmbreeScene() {
     throw std::runtime_error(std::string("Embree: cannot create a device: ") +
                              error_name(rtcGetDeviceError(nullptr)));
   }
-  top_ = rtcNewScene(device_);
-  // Watertight intersection: a ray through a shared edge or vertex of the tessellation must
-  // hit one of the triangles, not slip through to the belt.
-  rtcSetSceneFlags(top_, RTC_SCENE_FLAG_ROBUST);
-  check("rtcNewScene");
 }
 
 EmbreeScene::~EmbreeScene() {
-  for (Instance& instance : instances_) rtcReleaseGeometry(instance.geometry);
-  for (Mesh& mesh : meshes_) {
-    if (mesh.scene != nullptr) rtcReleaseScene(mesh.scene);
-  }
-  if (top_ != nullptr) rtcReleaseScene(top_);
+  for (RTCScene scene : mesh_scenes_) rtcReleaseScene(scene);
   if (device_ != nullptr) rtcReleaseDevice(device_);
 }
 
@@ -88,84 +62,173 @@ int EmbreeScene::add_mesh(const TriangleMesh& mesh) {
       throw std::invalid_argument("EmbreeScene::add_mesh: triangle index out of range");
     }
   }
-  meshes_.push_back({mesh, nullptr});
-  return static_cast<int>(meshes_.size()) - 1;
-}
-
-RTCGeometry EmbreeScene::new_triangle_geometry(const TriangleMesh& mesh) {
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
   // rtcSetNewGeometryBuffer pads the buffers as Embree's vector loads require.
-  rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                          mesh.vertices.size());
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                               RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                               mesh.vertices.size()));
   auto* indices = static_cast<unsigned*>(
       rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                               3 * sizeof(unsigned), mesh.triangles.size()));
   check("rtcSetNewGeometryBuffer");
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    for (int k = 0; k < 3; ++k) vertices[3 * v + static_cast<std::size_t>(k)] = mesh.vertices[v](k);
+  }
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     for (int k = 0; k < 3; ++k)
       indices[3 * t + static_cast<std::size_t>(k)] = static_cast<unsigned>(mesh.triangles[t](k));
   }
-  return geometry;
-}
-
-RTCScene EmbreeScene::mesh_scene(int mesh_index) {
-  Mesh& mesh = meshes_[static_cast<std::size_t>(mesh_index)];
-  if (mesh.scene != nullptr) return mesh.scene;
-  RTCGeometry geometry = new_triangle_geometry(mesh.mesh);
-  write_vertices(geometry, mesh.mesh, Eigen::Isometry3d::Identity());
   rtcCommitGeometry(geometry);
-  mesh.scene = rtcNewScene(device_);
-  rtcSetSceneFlags(mesh.scene, RTC_SCENE_FLAG_ROBUST);
-  rtcAttachGeometry(mesh.scene, geometry);
+  RTCScene scene = rtcNewScene(device_);
+  // Watertight intersection: a ray through a shared edge or vertex of the tessellation must
+  // hit one of the triangles, not slip through to the belt.
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+  rtcAttachGeometry(scene, geometry);
   rtcReleaseGeometry(geometry);
-  rtcCommitScene(mesh.scene);
+  rtcCommitScene(scene);
   check("committing a mesh");
-  return mesh.scene;
+  meshes_.push_back(mesh);
+  mesh_scenes_.push_back(scene);
+  return static_cast<int>(meshes_.size()) - 1;
 }
 
-int EmbreeScene::add_instance(int mesh_index, const Eigen::Isometry3d& T_world_mesh,
-                              MeshPlacement placement) {
+int EmbreeScene::add_instance(int mesh_index, const Eigen::Isometry3d& T_world_mesh) {
   if (mesh_index < 0 || mesh_index >= static_cast<int>(meshes_.size())) {
     throw std::invalid_argument("EmbreeScene::add_instance: no such mesh");
   }
   Instance instance;
   instance.mesh = mesh_index;
-  instance.placement = placement;
-  if (placement == MeshPlacement::kInstanced) {
-    instance.geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
-    rtcSetGeometryInstancedScene(instance.geometry, mesh_scene(mesh_index));
-  } else {
-    instance.geometry = new_triangle_geometry(meshes_[static_cast<std::size_t>(mesh_index)].mesh);
-  }
-  const unsigned id = rtcAttachGeometry(top_, instance.geometry);
-  check("adding an instance");
-  if (id != instances_.size()) throw std::logic_error("EmbreeScene: geometry ids out of step");
   instances_.push_back(instance);
-  set_instance_transform(static_cast<int>(id), T_world_mesh);
-  return static_cast<int>(id);
+  const int index = static_cast<int>(instances_.size()) - 1;
+  set_instance_transform(index, T_world_mesh);
+  return index;
 }
 
 void EmbreeScene::set_instance_transform(int instance_index,
                                          const Eigen::Isometry3d& T_world_mesh) {
   Instance& instance = instances_.at(static_cast<std::size_t>(instance_index));
-  const TriangleMesh& mesh = meshes_[static_cast<std::size_t>(instance.mesh)].mesh;
   instance.T_world_mesh = T_world_mesh;
-  if (instance.placement == MeshPlacement::kInstanced) {
-    set_instance_matrix(instance.geometry, T_world_mesh);
-  } else {
-    write_vertices(instance.geometry, mesh, T_world_mesh);
-    rtcUpdateGeometryBuffer(instance.geometry, RTC_BUFFER_TYPE_VERTEX, 0);
-  }
-  rtcCommitGeometry(instance.geometry);
+  instance.T_mesh_world = T_world_mesh.inverse(Eigen::Isometry);
   instance.bounds.setEmpty();
-  for (const Eigen::Vector3f& vertex : mesh.vertices)
+  for (const Eigen::Vector3f& vertex : meshes_[static_cast<std::size_t>(instance.mesh)].vertices)
     instance.bounds.extend(T_world_mesh * vertex.cast<double>());
-  check("moving an instance");
 }
 
 void EmbreeScene::commit() {
-  rtcCommitScene(top_);
-  check("rtcCommitScene");
+  std::vector<Eigen::AlignedBox3d> boxes;
+  boxes.reserve(instances_.size());
+  for (const Instance& instance : instances_) boxes.push_back(instance.bounds);
+  instances_along_belt_.rebuild(boxes);
+}
+
+template <class Visit>
+void EmbreeScene::for_each_instance_swept(const int* valid, const RTCRay8& rays, double frame_y_mm,
+                                          Visit&& visit) const {
+  Eigen::AlignedBox3d box;
+  for (int k = 0; k < kPacket; ++k) {
+    if (valid[k] == 0 || !(rays.tfar[k] >= rays.tnear[k])) continue;
+    const Eigen::Vector3d origin(rays.org_x[k], rays.org_y[k] + frame_y_mm, rays.org_z[k]);
+    const Eigen::Vector3d direction(rays.dir_x[k], rays.dir_y[k], rays.dir_z[k]);
+    const double far = std::min(static_cast<double>(rays.tfar[k]), kLongestRayMm);
+    box.extend(origin + static_cast<double>(rays.tnear[k]) * direction);
+    box.extend(origin + far * direction);
+  }
+  if (box.isEmpty()) return;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  instances_along_belt_.for_each_meeting(box.min().y(), box.max().y(), [&](int index) {
+    const Instance& instance = instances_[static_cast<std::size_t>(index)];
+    if (instance.bounds.intersects(box)) visit(index, instance, context);
+  });
+}
+
+void EmbreeScene::to_mesh_frame(const Instance& instance, const int* valid, const RTCRay8& world,
+                                double frame_y_mm, RTCRay8& local) {
+  const Eigen::Matrix3d& R_mesh_world = instance.T_mesh_world.linear();
+  for (int k = 0; k < kPacket; ++k) {
+    local.tnear[k] = world.tnear[k];
+    local.tfar[k] = world.tfar[k];
+    local.time[k] = world.time[k];
+    local.mask[k] = world.mask[k];
+    local.id[k] = world.id[k];
+    local.flags[k] = world.flags[k];
+    if (valid[k] == 0) {
+      local.org_x[k] = local.org_y[k] = local.org_z[k] = 0.0f;
+      local.dir_x[k] = local.dir_y[k] = 0.0f;
+      local.dir_z[k] = 1.0f;
+      continue;
+    }
+    const Eigen::Vector3d origin =
+        instance.T_mesh_world *
+        Eigen::Vector3d(world.org_x[k], world.org_y[k] + frame_y_mm, world.org_z[k]);
+    const Eigen::Vector3d direction =
+        R_mesh_world * Eigen::Vector3d(world.dir_x[k], world.dir_y[k], world.dir_z[k]);
+    local.org_x[k] = static_cast<float>(origin.x());
+    local.org_y[k] = static_cast<float>(origin.y());
+    local.org_z[k] = static_cast<float>(origin.z());
+    local.dir_x[k] = static_cast<float>(direction.x());
+    local.dir_y[k] = static_cast<float>(direction.y());
+    local.dir_z[k] = static_cast<float>(direction.z());
+  }
+}
+
+void EmbreeScene::intersect8(const int* valid, RTCRayHit8& rays, double frame_y_mm) const {
+  for (int k = 0; k < kPacket; ++k) {
+    rays.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+    rays.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+  }
+  for_each_instance_swept(valid, rays.ray, frame_y_mm,
+                          [&](int index, const Instance& instance, RTCIntersectContext& context) {
+                            alignas(32) int local_valid[kPacket];
+                            std::copy(valid, valid + kPacket, local_valid);
+                            RTCRayHit8 local;
+                            to_mesh_frame(instance, valid, rays.ray, frame_y_mm, local.ray);
+                            for (int k = 0; k < kPacket; ++k) {
+                              // The nearest hit so far bounds the ray: only a nearer one on this
+                              // mesh replaces it.
+                              local.ray.tfar[k] = rays.ray.tfar[k];
+                              local.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+                              local.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+                            }
+                            rtcIntersect8(local_valid,
+                                          mesh_scenes_[static_cast<std::size_t>(instance.mesh)],
+                                          &context, &local);
+                            for (int k = 0; k < kPacket; ++k) {
+                              if (valid[k] == 0 || local.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID)
+                                continue;
+                              rays.ray.tfar[k] = local.ray.tfar[k];
+                              rays.hit.Ng_x[k] = local.hit.Ng_x[k];
+                              rays.hit.Ng_y[k] = local.hit.Ng_y[k];
+                              rays.hit.Ng_z[k] = local.hit.Ng_z[k];
+                              rays.hit.u[k] = local.hit.u[k];
+                              rays.hit.v[k] = local.hit.v[k];
+                              rays.hit.primID[k] = local.hit.primID[k];
+                              rays.hit.geomID[k] = local.hit.geomID[k];
+                              rays.hit.instID[0][k] = static_cast<unsigned>(index);
+                            }
+                          });
+}
+
+void EmbreeScene::occluded8(const int* valid, RTCRay8& rays, double frame_y_mm) const {
+  for_each_instance_swept(
+      valid, rays, frame_y_mm, [&](int, const Instance& instance, RTCIntersectContext& context) {
+        alignas(32) int local_valid[kPacket];
+        bool any = false;
+        for (int k = 0; k < kPacket; ++k) {
+          // A ray already occluded by another mesh needs no further test.
+          local_valid[k] = valid[k] != 0 && rays.tfar[k] >= rays.tnear[k] ? -1 : 0;
+          any = any || local_valid[k] != 0;
+        }
+        if (!any) return;
+        RTCRay8 local;
+        to_mesh_frame(instance, local_valid, rays, frame_y_mm, local);
+        rtcOccluded8(local_valid, mesh_scenes_[static_cast<std::size_t>(instance.mesh)], &context,
+                     &local);
+        for (int k = 0; k < kPacket; ++k) {
+          if (local_valid[k] != 0 && local.tfar[k] < 0.0f) rays.tfar[k] = local.tfar[k];
+        }
+      });
 }
 
 const Eigen::Isometry3d& EmbreeScene::instance_transform(int instance) const {
@@ -179,9 +242,7 @@ const Eigen::AlignedBox3d& EmbreeScene::instance_bounds(int instance) const {
 Eigen::Vector3d EmbreeScene::world_normal(unsigned instance, float ng_x, float ng_y,
                                           float ng_z) const {
   const Instance& placed = instances_[instance];
-  const Eigen::Vector3d normal(ng_x, ng_y, ng_z);
-  if (placed.placement == MeshPlacement::kBaked) return normal.normalized();
-  return (placed.T_world_mesh.linear() * normal).normalized();
+  return (placed.T_world_mesh.linear() * Eigen::Vector3d(ng_x, ng_y, ng_z)).normalized();
 }
 
 }  // namespace cosmos

@@ -55,7 +55,7 @@ LaserLineScanner::LaserLineScanner(const ConveyorScene& scene, const ScannerPara
   normal_z_.resize(static_cast<std::size_t>(samples));
   occlusion_candidates_.reserve(static_cast<std::size_t>(samples));
   belt_sight_marks_.resize(static_cast<std::size_t>(samples) + 1);
-  belt_sights_.reserve(scene.parts().size());
+  belt_sights_.reserve(scene.parts().size());  // the most a line can meet
 }
 
 void LaserLineScanner::reserve(LaserLine& line) const {
@@ -83,14 +83,21 @@ void LaserLineScanner::trace(double laser_y_belt_mm, LaserLine& line) {
   double x_low = std::numeric_limits<double>::infinity();
   double x_high = -x_low;
   double top_z_mm = -x_low;
-  for (const PlacedPart& part : scene_.parts()) {
-    double part_low = 0.0;
-    double part_high = 0.0;
-    if (!sheet_x_extent(part, laser_y_belt_mm, part_low, part_high)) continue;
-    x_low = std::min(x_low, part_low);
-    x_high = std::max(x_high, part_high);
-    top_z_mm = std::max(top_z_mm, part.bounds_mm.max().z() + 1.0);
-  }
+  // The parts the sheet can meet: those at its foot, and with a pitched sheet those within
+  // its lean up to the tallest part's top.
+  const double lean_mm = pitch_.pitched()
+                             ? std::abs((scene_.highest_z_mm() + 1.0) * pitch_.sin() / pitch_.cos())
+                             : 0.0;
+  scene_.for_each_part_meeting_y(laser_y_belt_mm - lean_mm, laser_y_belt_mm + lean_mm,
+                                 [&](const PlacedPart& part) {
+                                   double part_low = 0.0;
+                                   double part_high = 0.0;
+                                   if (!sheet_x_extent(part, laser_y_belt_mm, part_low, part_high))
+                                     return;
+                                   x_low = std::min(x_low, part_low);
+                                   x_high = std::max(x_high, part_high);
+                                   top_z_mm = std::max(top_z_mm, part.bounds_mm.max().z() + 1.0);
+                                 });
   if (x_low <= x_high) {
     const int first = std::max(0, static_cast<int>(std::floor((x_low - line.x0_mm) / line.dx_mm)));
     const int end =
@@ -125,9 +132,6 @@ Eigen::Vector3d LaserLineScanner::camera_belt_mm(double y_mm) const {
 void LaserLineScanner::probe_top_surface(double y_mm, int first, int end, double top_z_mm,
                                          LaserLine& line) {
   const EmbreeScene& embree = scene_.embree();
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
   // Down the sheet from its point at in-sheet height top_s_mm: the ray's length is the
   // in-sheet height it descends.
   const double top_s_mm = top_z_mm / pitch_.cos();
@@ -140,7 +144,8 @@ void LaserLineScanner::probe_top_surface(double y_mm, int first, int end, double
       const int i = base + k;
       valid[k] = i < end ? -1 : 0;
       packet.ray.org_x[k] = static_cast<float>(line.x_mm(i));
-      packet.ray.org_y[k] = static_cast<float>(top.y());
+      // Relative to the sheet's foot, so the rays keep their precision wherever the belt is.
+      packet.ray.org_y[k] = static_cast<float>(top.y() - y_mm);
       packet.ray.org_z[k] = static_cast<float>(top.z());
       packet.ray.dir_x[k] = 0.0f;
       // 0 − u rather than −u: an unpitched sheet's ray keeps +0 across, not −0, so its
@@ -153,18 +158,16 @@ void LaserLineScanner::probe_top_surface(double y_mm, int first, int end, double
       packet.ray.mask[k] = 0xFFFFFFFFu;
       packet.ray.id[k] = static_cast<unsigned>(k);
       packet.ray.flags[k] = 0;
-      packet.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
-      packet.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
     }
-    rtcIntersect8(valid, embree.handle(), &context, &packet);
+    embree.intersect8(valid, packet, y_mm);
     for (int k = 0; k < kPacket && base + k < end; ++k) {
       if (packet.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) continue;
       const auto i = static_cast<std::size_t>(base + k);
       const float z = static_cast<float>(top_s_mm - static_cast<double>(packet.ray.tfar[k]));
       line.z_mm[i] = z;
-      Eigen::Vector3d normal = embree.world_normal(
-          EmbreeScene::hit_instance(packet.hit.geomID[k], packet.hit.instID[0][k]),
-          packet.hit.Ng_x[k], packet.hit.Ng_y[k], packet.hit.Ng_z[k]);
+      Eigen::Vector3d normal =
+          embree.world_normal(EmbreeScene::hit_instance(packet.hit, k), packet.hit.Ng_x[k],
+                              packet.hit.Ng_y[k], packet.hit.Ng_z[k]);
       // The probe comes from above, so the surface it met faces up the sheet, whatever the
       // winding.
       if (normal.dot(up) < 0.0) normal = -normal;
@@ -234,14 +237,16 @@ void LaserLineScanner::classify(double y_mm, LaserLine& line) {
   const Eigen::Vector3d source_mm = pitch_.belt_point(0.0, y_mm, parameters_.laser_height_mm);
   const Eigen::Vector3d camera_mm = camera_belt_mm(y_mm);
   const Eigen::Matrix3d R_sheet_belt = pitch_.R_belt_sheet().transpose();
-  const auto& parts = scene_.parts();
   belt_sights_.clear();
   std::fill(belt_sight_marks_.begin(), belt_sight_marks_.end(), 0);
-  for (const PlacedPart& part : parts) {
-    belt_sights_.push_back(part.height_bounds.belt_sight(y_mm, camera_mm));
-    part.height_bounds.mark_belt_sights(belt_sights_.back(), line.x0_mm, line.dx_mm, samples_,
-                                        belt_sight_marks_.data());
-  }
+  // A belt point's line of sight runs from the sheet to the camera: only parts within that
+  // stretch of belt can hide it.
+  scene_.for_each_part_meeting_y(
+      std::min(y_mm, camera_mm.y()), std::max(y_mm, camera_mm.y()), [&](const PlacedPart& part) {
+        belt_sights_.push_back({&part, part.height_bounds.belt_sight(y_mm, camera_mm)});
+        part.height_bounds.mark_belt_sights(belt_sights_.back().sight, line.x0_mm, line.dx_mm,
+                                            samples_, belt_sight_marks_.data());
+      });
   int belt_sight_marked = 0;  // running sum of the marks: > 0 where a part may hide the belt
   for (int i = 0; i < samples_; ++i) {
     const auto s = static_cast<std::size_t>(i);
@@ -274,9 +279,9 @@ void LaserLineScanner::classify(double y_mm, LaserLine& line) {
       continue;
     }
     const Eigen::Vector3d point_mm(line.x_mm(i), y_mm, 0.0);
-    for (std::size_t p = 0; p < parts.size(); ++p) {
-      if (!parts[p].height_bounds.may_block(belt_sights_[p], point_mm.x())) continue;
-      if (!parts[p].height_bounds.clears(point_mm, camera_mm)) {
+    for (const PartSight& near : belt_sights_) {
+      if (!near.part->height_bounds.may_block(near.sight, point_mm.x())) continue;
+      if (!near.part->height_bounds.clears(point_mm, camera_mm)) {
         occlusion_candidates_.push_back(i);
         break;
       }
@@ -286,9 +291,6 @@ void LaserLineScanner::classify(double y_mm, LaserLine& line) {
 
 void LaserLineScanner::trace_camera_occlusion(double y_mm, LaserLine& line) {
   const Eigen::Vector3d camera_mm = camera_belt_mm(y_mm);
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
   const int count = static_cast<int>(occlusion_candidates_.size());
   for (int base = 0; base < count; base += kPacket) {
     alignas(32) int valid[kPacket];
@@ -304,7 +306,7 @@ void LaserLineScanner::trace_camera_occlusion(double y_mm, LaserLine& line) {
           kSurfaceOffsetMm * normal;
       const Eigen::Vector3d direction = camera_mm - origin;
       packet.org_x[k] = static_cast<float>(origin.x());
-      packet.org_y[k] = static_cast<float>(origin.y());
+      packet.org_y[k] = static_cast<float>(origin.y() - y_mm);  // relative to the sheet's foot
       packet.org_z[k] = static_cast<float>(origin.z());
       packet.dir_x[k] = static_cast<float>(direction.x());
       packet.dir_y[k] = static_cast<float>(direction.y());
@@ -316,7 +318,7 @@ void LaserLineScanner::trace_camera_occlusion(double y_mm, LaserLine& line) {
       packet.id[k] = static_cast<unsigned>(k);
       packet.flags[k] = 0;
     }
-    rtcOccluded8(valid, scene_.embree().handle(), &context, &packet);
+    scene_.embree().occluded8(valid, packet, y_mm);
     for (int k = 0; k < kPacket && base + k < count; ++k) {
       // Embree marks an occluded ray by setting its tfar to -inf.
       if (packet.tfar[k] < 0.0f) {

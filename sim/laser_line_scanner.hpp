@@ -116,7 +116,12 @@ class LaserLineScanner {
   std::vector<float> normal_y_;
   std::vector<float> normal_z_;
   std::vector<int> occlusion_candidates_;
-  std::vector<HeightBoundGrid::BeltSight> belt_sights_;  // per part, for the current line
+  // The parts that may hide the belt from the camera in the current line, with their sight.
+  struct PartSight {
+    const PlacedPart* part = nullptr;
+    HeightBoundGrid::BeltSight sight;
+  };
+  std::vector<PartSight> belt_sights_;
   std::vector<int> belt_sight_marks_;  // difference array of HeightBoundGrid::mark_belt_sights
 };
 

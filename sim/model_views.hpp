@@ -57,7 +57,7 @@ class ModelViewRenderer {
   ScannerParameters parameters_;
   ConditioningParameters conditioning_;  // the belt threshold of the views
   std::vector<Eigen::Vector3d> directions_;
-  ConveyorScene scene_{true};  // movable: one part turned through every view
+  ConveyorScene scene_;  // one part turned through every view
   std::unique_ptr<SimulatedScanner> scanner_;
 };
 

