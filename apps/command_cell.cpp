@@ -160,6 +160,7 @@ void run(const CellOptions& options) {
   const CosmosParameters& cosmos = loaded.cosmos;
   RecognitionParameters recognition;
   recognition.surfaces = config.realtime.recognizer_surfaces;
+  recognition.resting.parts_rest = config.cell.parts_rest;
   const Recognizer recognizer(base, cosmos, recognition);
   LcmPublisher lcm_publisher(config.lcm.url, config.lcm.channels());
   Publisher& publisher = web ? web->publisher(lcm_publisher) : lcm_publisher;

@@ -130,7 +130,11 @@ void run(const EvalOptions& options) {
       parts, options.tests, options.seed,
       options.pose == "resting" ? EvaluationPoseMode::kResting : EvaluationPoseMode::kRandom);
   if (!options.only.empty()) plan = chosen_tests(plan, options.only);
-  const Recognizer recognizer(base, cosmos, RecognitionParameters{});
+  // Scans in resting poses stand for a cell whose parts lie on the belt, and the recognizer
+  // is told so (resting_pose_search.hpp).
+  RecognitionParameters recognition;
+  recognition.resting.parts_rest = options.pose == "resting";
+  const Recognizer recognizer(base, cosmos, recognition);
   const std::vector<EvaluationRecord> records =
       run_tests(plan, parts, scanner, conditioning, recognizer, base, options.threads);
 
@@ -176,7 +180,8 @@ void install(CLI::App& root) {
   command
       ->add_option(
           "--pose", options->pose,
-          "random: uniform over all rotations; resting: the part's stable poses on the belt")
+          "random: uniform over all rotations; resting: the part's stable poses on the belt, "
+          "and the recognizer told the parts rest")
       ->check(CLI::IsMember({"random", "resting"}))
       ->type_name("random|resting")
       ->capture_default_str();

@@ -78,11 +78,15 @@ std::string parameters_markdown() {
   base_sections("cosmos", build.cosmos, "the COSMOS pipeline of one view (ch. 3)");
   base_sections("registration", build.registration, "the model surface's control points (ch. 6)");
   base_sections("grouping", build.grouping, "view clusters per part (§4.4.2)");
+  base_sections("resting", build.resting,
+                "each part's stable resting poses on the belt (sim/part_pose.hpp)");
 
   text.append(
       "\n## Recognition\n\n"
       "Not read from a file: the defaults of RecognitionParameters "
-      "(core/recognition/recognizer.hpp), which every recognizer uses.\n");
+      "(core/recognition/recognizer.hpp), which every recognizer uses; only "
+      "`resting.parts_rest` is set from outside: by `cell.parts_rest` in a cell, by "
+      "`--pose resting` in `cosmos eval`.\n");
   SectionDocs recognition_sections(text);
   recognition_sections("recognition", RecognitionParameters{},
                        "selection, verification, registration and decision (ch. 5-6)");

@@ -1,6 +1,7 @@
 #include "sim/part_pose.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -69,6 +70,30 @@ Eigen::Matrix3d flat_rotation(const TriangleMesh& mesh) {
   return rotation_looking_along(solver.eigenvectors().col(0));
 }
 
+// Per hull face: the solid angle it subtends at the centre of mass when the centre projects
+// inside it (a face the part can rest on), else 0.
+std::vector<double> stable_face_weights(const TriangleMesh& mesh, const ConvexHull& hull) {
+  const Eigen::Vector3d centre = centre_of_mass(mesh, hull);
+  std::vector<double> weight(hull.faces.size(), 0.0);
+  for (std::size_t f = 0; f < hull.faces.size(); ++f)
+    if (projects_inside(hull.faces[f], centre)) weight[f] = solid_angle(hull.faces[f], centre);
+  return weight;
+}
+
+std::size_t face_nearest_centre(const TriangleMesh& mesh, const ConvexHull& hull) {
+  const Eigen::Vector3d centre = centre_of_mass(mesh, hull);
+  std::size_t chosen = 0;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t f = 0; f < hull.faces.size(); ++f) {
+    const double distance = -(hull.faces[f].normal.dot(centre) + hull.faces[f].offset);
+    if (distance < nearest) {
+      nearest = distance;
+      chosen = f;
+    }
+  }
+  return chosen;
+}
+
 }  // namespace
 
 Eigen::Matrix3d rotation_from_xyz_deg(double rx_deg, double ry_deg, double rz_deg) {
@@ -113,14 +138,9 @@ Eigen::Matrix3d resting_rotation(const TriangleMesh& mesh, std::uint64_t seed) {
   } catch (const std::invalid_argument&) {
     return yaw(yaw_rad) * flat_rotation(mesh);
   }
-  const Eigen::Vector3d centre = centre_of_mass(mesh, hull);
-  std::vector<double> weight(hull.faces.size(), 0.0);
+  const std::vector<double> weight = stable_face_weights(mesh, hull);
   double total = 0.0;
-  for (std::size_t f = 0; f < hull.faces.size(); ++f) {
-    if (!projects_inside(hull.faces[f], centre)) continue;
-    weight[f] = solid_angle(hull.faces[f], centre);
-    total += weight[f];
-  }
+  for (double w : weight) total += w;
   // A convex solid always has a stable face; only rounding on a degenerate hull can leave
   // none, and then the face nearest the centre (the most stable one) is used.
   std::size_t chosen = 0;
@@ -137,17 +157,82 @@ Eigen::Matrix3d resting_rotation(const TriangleMesh& mesh, std::uint64_t seed) {
     }
     while (weight[chosen] <= 0.0) --chosen;
   } else {
-    double nearest = std::numeric_limits<double>::infinity();
-    for (std::size_t f = 0; f < hull.faces.size(); ++f) {
-      const double distance = -(hull.faces[f].normal.dot(centre) + hull.faces[f].offset);
-      if (distance < nearest) {
-        nearest = distance;
-        chosen = f;
-      }
-    }
+    chosen = face_nearest_centre(mesh, hull);
   }
   // The face's outward normal must point down the belt: R · normal = −z.
   return yaw(yaw_rad) * rotation_looking_along(-hull.faces[chosen].normal);
+}
+
+std::vector<StableRestingPose> stable_resting_poses(const TriangleMesh& mesh,
+                                                    const RestingPoseParameters& parameters) {
+  std::vector<StableRestingPose> poses;
+  if (mesh.vertices.empty()) return poses;
+  const auto height_mm = [&mesh](const Eigen::Matrix3d& R_belt_part) {
+    double lowest = std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3f& v : mesh.vertices)
+      lowest = std::min(lowest, (R_belt_part * v.cast<double>()).z());
+    return -lowest;
+  };
+  ConvexHull hull;
+  try {
+    hull = convex_hull(mesh.vertices);
+  } catch (const std::invalid_argument&) {
+    const Eigen::Matrix3d R = flat_rotation(mesh);
+    poses.push_back({R, height_mm(R), 1.0});
+    return poses;
+  }
+  std::vector<double> weight = stable_face_weights(mesh, hull);
+  double total = 0.0;
+  for (double w : weight) total += w;
+  if (total <= 0.0) {
+    weight.assign(hull.faces.size(), 0.0);
+    weight[face_nearest_centre(mesh, hull)] = total = 1.0;
+  }
+  std::vector<std::size_t> order(hull.faces.size());
+  for (std::size_t f = 0; f < order.size(); ++f) order[f] = f;
+  std::stable_sort(order.begin(), order.end(),
+                   [&weight](std::size_t a, std::size_t b) { return weight[a] > weight[b]; });
+  const double merge_cos = std::cos(parameters.merge_deg * kDegree);
+  std::vector<Eigen::Vector3d> normals;
+  for (std::size_t f : order) {
+    if (weight[f] <= 0.0) break;
+    const Eigen::Vector3d& normal = hull.faces[f].normal;
+    std::size_t merged = 0;
+    while (merged < normals.size() && normals[merged].dot(normal) < merge_cos) ++merged;
+    if (merged < normals.size()) {
+      poses[merged].probability += weight[f] / total;
+      continue;
+    }
+    const Eigen::Matrix3d R = rotation_looking_along(-normal);
+    normals.push_back(normal);
+    poses.push_back({R, height_mm(R), weight[f] / total});
+  }
+  std::stable_sort(poses.begin(), poses.end(),
+                   [](const StableRestingPose& a, const StableRestingPose& b) {
+                     return a.probability > b.probability;
+                   });
+  std::erase_if(poses, [&parameters](const StableRestingPose& pose) {
+    return pose.probability < parameters.min_probability;
+  });
+  if (poses.size() > static_cast<std::size_t>(parameters.max_poses))
+    poses.resize(static_cast<std::size_t>(parameters.max_poses));
+  return poses;
+}
+
+std::vector<Eigen::Vector3d> hull_vertices(const TriangleMesh& mesh) {
+  std::vector<Eigen::Vector3d> corners;
+  try {
+    for (const HullFace& face : convex_hull(mesh.vertices).faces)
+      corners.insert(corners.end(), face.corners.begin(), face.corners.end());
+  } catch (const std::invalid_argument&) {
+    for (const Eigen::Vector3f& v : mesh.vertices) corners.push_back(v.cast<double>());
+  }
+  const auto lexicographic = [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+  };
+  std::sort(corners.begin(), corners.end(), lexicographic);
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  return corners;
 }
 
 Eigen::Isometry3d place_on_belt(const TriangleMesh& mesh, const Eigen::Matrix3d& R_belt_part,

@@ -4,7 +4,9 @@
 // belt frame (conveyor_scene.hpp).
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <vector>
 
+#include "core/parameter_visitor.hpp"
 #include "sim/mesh.hpp"
 
 namespace cosmos {
@@ -30,6 +32,36 @@ Eigen::Vector3d centre_of_mass(const TriangleMesh& mesh);
 // lies on the belt, and about the vertical by a uniformly random angle. Deterministic in the
 // seed. A flat mesh (no hull volume) lies on its plane.
 Eigen::Matrix3d resting_rotation(const TriangleMesh& mesh, std::uint64_t seed);
+
+// The stable resting poses of a part, most likely first: the stable faces of its hull (as in
+// resting_rotation), faces whose normals lie within merge_deg of a likelier one counted as that
+// one (a curved side is many small hull faces), each with the chance that a dropped part
+// settles on it. What a recognizer may try first for parts lying on a belt.
+struct RestingPoseParameters {
+  double merge_deg = 4.0;
+  int max_poses = 32;
+  double min_probability = 0.002;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("merge_deg", merge_deg, "stable faces this close in normal are one pose, deg", Range{0, 90});
+    v("max_poses", max_poses, "the likeliest poses kept per part", Range{1, 1000});
+    v("min_probability", min_probability, "less likely poses are not kept", Range{0, 1});
+  }
+};
+
+struct StableRestingPose {
+  Eigen::Matrix3d R_belt_part;  // the face down, no turn about the vertical
+  double height_mm = 0;         // of the part's origin above the belt
+  double probability = 0;
+};
+
+std::vector<StableRestingPose> stable_resting_poses(const TriangleMesh& mesh,
+                                                    const RestingPoseParameters& parameters);
+
+// The corners of the mesh's convex hull, each once (a flat mesh: its vertices): the points a
+// part can touch the belt with.
+std::vector<Eigen::Vector3d> hull_vertices(const TriangleMesh& mesh);
 
 // T_belt_part placing the rotated part with its lowest vertex on the belt (z = 0) and the
 // centre of its bounding box at (x_mm, y_mm).

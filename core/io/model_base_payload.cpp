@@ -123,7 +123,9 @@ Offset<fb::View> encode_view(FlatBufferBuilder& b, const ModelBaseView& view,
 
 std::size_t estimated_payload_bytes(const ModelBase& base) {
   std::size_t bytes = 4096 + base.catalog_hash.size() + base.parameters_text.size();
-  for (const ModelPart& part : base.parts) bytes += 128 + part.name.size() + part.mesh.size();
+  for (const ModelPart& part : base.parts)
+    bytes += 128 + part.name.size() + part.mesh.size() + 96 * part.resting_poses.size() +
+             32 * part.hull_vertices_mm.size();
   for (const ViewCluster& cluster : base.clusters) bytes += 160 + 4 * cluster.views.size();
   for (const ModelBaseView& view : base.views) {
     const bool packed = packed_is_set(view.registration_packed);
@@ -146,7 +148,17 @@ void encode_model_base(const ModelBase& base, FlatBufferBuilder& b) {
   for (const ModelPart& part : base.parts) {
     const auto name = b.CreateString(part.name);
     const auto mesh = b.CreateString(part.mesh);
-    parts.push_back(fb::CreatePart(b, name, mesh, part.size_mm, part.diameter_mm, part.symmetric));
+    std::vector<fb::RestingPose> resting;
+    for (const RestingPose& pose : part.resting_poses)
+      resting.emplace_back(
+          transform(RigidTransform{pose.R_belt_part, Eigen::Vector3d(0, 0, pose.height_mm)}),
+          pose.probability);
+    const auto resting_vector = b.CreateVectorOfStructs(resting);
+    std::vector<fb::Vec3> hull;
+    for (const Eigen::Vector3d& vertex : part.hull_vertices_mm) hull.push_back(vec3(vertex));
+    const auto hull_vector = b.CreateVectorOfStructs(hull);
+    parts.push_back(fb::CreatePart(b, name, mesh, part.size_mm, part.diameter_mm, part.symmetric,
+                                   resting_vector, hull_vector));
   }
   const auto part_vector = b.CreateVector(parts);
   std::vector<Offset<fb::View>> views;
@@ -287,9 +299,24 @@ std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::s
   out.catalog_hash = in->catalog_hash() ? in->catalog_hash()->str() : "";
   out.parameters_text = in->parameters_text() ? in->parameters_text()->str() : "";
   if (const auto* parts = in->parts()) {
-    for (const fb::Part* p : *parts)
-      out.parts.push_back({p->name() ? p->name()->str() : "", p->mesh() ? p->mesh()->str() : "",
-                           p->size_mm(), p->diameter_mm(), p->symmetric()});
+    for (const fb::Part* p : *parts) {
+      ModelPart& part = out.parts.emplace_back();
+      part = {p->name() ? p->name()->str() : "",
+              p->mesh() ? p->mesh()->str() : "",
+              p->size_mm(),
+              p->diameter_mm(),
+              p->symmetric(),
+              {},
+              {}};
+      if (const auto* resting = p->resting_poses())
+        for (const fb::RestingPose* pose : *resting) {
+          const RigidTransform T_belt_part = transform(&pose->t_belt_part());
+          part.resting_poses.push_back(
+              {T_belt_part.rotation, T_belt_part.translation_mm.z(), pose->probability()});
+        }
+      if (const auto* hull = p->hull_vertices_mm())
+        for (const fb::Vec3* vertex : *hull) part.hull_vertices_mm.push_back(vec3(vertex));
+    }
   }
   const int part_count = static_cast<int>(out.parts.size());
   if (const auto* views = in->views()) {

@@ -16,12 +16,25 @@
 
 namespace cosmos {
 
+// A stable pose of the part lying on the belt (z up, the belt the plane z = 0): the rotation
+// with its resting face down and no turn about the vertical, the height of the part's origin
+// above the belt, and the chance a dropped part settles so. Any turn about the vertical and
+// any place on the belt rest as well.
+struct RestingPose {
+  Eigen::Matrix3d R_belt_part = Eigen::Matrix3d::Identity();
+  double height_mm = 0;
+  double probability = 0;
+};
+
 struct ModelPart {
   std::string name;
   std::string mesh;        // as written in the catalog
   double size_mm = 0;      // largest extent after scaling
   double diameter_mm = 0;  // largest distance between two mesh vertices (for ADD-S)
   bool symmetric = false;
+  std::vector<RestingPose> resting_poses;  // most likely first
+  // The corners of the part's convex hull: its lowest point in any pose.
+  std::vector<Eigen::Vector3d> hull_vertices_mm;
 };
 
 struct ModelBaseView {
@@ -55,8 +68,8 @@ struct ViewCluster {
 struct ModelBase {
   // Raised whenever what a build writes changes (layout or content), so that caches and
   // readers refuse or rebuild what an older build wrote. 2: registration streams
-  // (docs/architecture.md), and no patch without pixels.
-  static constexpr std::uint32_t kFormatVersion = 2;
+  // (docs/architecture.md), and no patch without pixels. 3: the parts' resting poses and hulls.
+  static constexpr std::uint32_t kFormatVersion = 3;
   std::string catalog_hash;     // content hash of the catalog and its meshes
   std::string parameters_text;  // every COSMOS/scanner/grouping parameter, canonical text
   std::vector<ModelPart> parts;

@@ -147,6 +147,16 @@ std::optional<std::string> model_base_out_of_range(const ModelBase& base,
     const std::string where = "part " + std::to_string(p);
     check.between(where, "size_mm", base.parts[p].size_mm, 0, ranges.max_coordinate_mm);
     check.between(where, "diameter_mm", base.parts[p].diameter_mm, 0, ranges.max_coordinate_mm);
+    for (std::size_t r = 0; r < base.parts[p].resting_poses.size(); ++r) {
+      const RestingPose& pose = base.parts[p].resting_poses[r];
+      const std::string pose_where = where + " resting pose " + std::to_string(r);
+      check.rigid(pose_where, "R_belt_part", {pose.R_belt_part, Eigen::Vector3d::Zero()});
+      check.between(pose_where, "height_mm", pose.height_mm, 0, ranges.max_coordinate_mm);
+      check.between(pose_where, "probability", pose.probability, 0, 1);
+    }
+    for (std::size_t k = 0; k < base.parts[p].hull_vertices_mm.size(); ++k)
+      check.coordinates(where, "hull vertex " + std::to_string(k),
+                        base.parts[p].hull_vertices_mm[k]);
   }
   for (std::size_t v = 0; v < base.views.size() && !check.failed(); ++v) {
     const ModelBaseView& view = base.views[v];

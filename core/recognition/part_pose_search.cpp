@@ -121,12 +121,11 @@ PartSearchModel build_part_search_model(const ModelBase& base, int part,
   return model;
 }
 
-std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& scene,
-                                                   const ModelBase& base,
-                                                   const PartSearchModel& model,
-                                                   const PartPoseSearchParameters& parameters) {
+std::vector<FieldHypothesis> rank_field_starts(const RegistrationPoints& scene,
+                                               const PartDistanceField& field,
+                                               std::vector<FieldHypothesis> starts,
+                                               const PartPoseSearchParameters& parameters) {
   const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
-  const PartDistanceField& field = model.field;
   if (scoring.size() == 0 || field.empty()) return {};
   const double truncation_mm = parameters.field_truncation_mm;
   // The first stages on a sparser subset still: most starts are far off, and which few
@@ -134,15 +133,24 @@ std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& sce
   const RegistrationPoints sparse = spread_subset(scoring, parameters.start_scoring_points);
   // Against the whole part, in stages: every start as it is, the best after one alignment
   // step, the best of those after a few more.
-  std::vector<FieldHypothesis> hypotheses =
-      turned_view_starts(scoring, base, model, parameters.in_plane_turns);
-  align_and_rescore(sparse, field, 0, truncation_mm, hypotheses);
-  keep_best(hypotheses, static_cast<std::size_t>(parameters.field_candidates));
-  align_and_rescore(sparse, field, 1, truncation_mm, hypotheses);
-  keep_best(hypotheses, static_cast<std::size_t>(parameters.field_aligned));
-  align_and_rescore(scoring, field, parameters.field_iterations, truncation_mm, hypotheses);
-  keep_best(hypotheses, static_cast<std::size_t>(parameters.refined_hypotheses));
-  return hypotheses;
+  align_and_rescore(sparse, field, 0, truncation_mm, starts);
+  keep_best(starts, static_cast<std::size_t>(parameters.field_candidates));
+  align_and_rescore(sparse, field, 1, truncation_mm, starts);
+  keep_best(starts, static_cast<std::size_t>(parameters.field_aligned));
+  align_and_rescore(scoring, field, parameters.field_iterations, truncation_mm, starts);
+  keep_best(starts, static_cast<std::size_t>(parameters.refined_hypotheses));
+  return starts;
+}
+
+std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& scene,
+                                                   const ModelBase& base,
+                                                   const PartSearchModel& model,
+                                                   const PartPoseSearchParameters& parameters) {
+  const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
+  if (scoring.size() == 0 || model.field.empty()) return {};
+  return rank_field_starts(scene, model.field,
+                           turned_view_starts(scoring, base, model, parameters.in_plane_turns),
+                           parameters);
 }
 
 std::vector<ViewPoseHypothesis> register_field_hypotheses(

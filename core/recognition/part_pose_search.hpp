@@ -102,9 +102,18 @@ struct FieldHypothesis {
   double truncated_mean_square_mm2 = 0;
 };
 
-// The search's field stages alone: at most parameters.refined_hypotheses poses, best first.
-// Their best score already tells the scene's part from the others (on the 25-part cell
-// catalog: 0.02-0.07 mm^2 against 2-47 mm^2), at half the cost of the whole search.
+// The search's field stages from the given starts (T_part_scene): all scored, the best
+// field_candidates aligned one step, the best field_aligned of those field_iterations steps;
+// at most refined_hypotheses returned, best first.
+std::vector<FieldHypothesis> rank_field_starts(const RegistrationPoints& scene,
+                                               const PartDistanceField& field,
+                                               std::vector<FieldHypothesis> starts,
+                                               const PartPoseSearchParameters& parameters);
+
+// The search's field stages alone, from every start view's turns: at most
+// parameters.refined_hypotheses poses, best first. Their best score already tells the scene's part
+// from the others (on the 25-part cell catalog: 0.02-0.07 mm^2 against 2-47 mm^2), at half the cost
+// of the whole search.
 std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& scene,
                                                    const ModelBase& base,
                                                    const PartSearchModel& model,

@@ -182,9 +182,13 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   const RecognitionCandidate* best = best_candidate(result.candidates);
   const auto explains_scene = [&] {
     best = best_candidate(result.candidates);
-    return best && best->inlier_fraction >= parameters_.sufficient_support &&
+    return best && best->inlier_fraction >= parameters_.sufficient_support && at_rest(*best) &&
            seen_fraction(*best) >= parameters_.min_seen_fraction;
   };
+  if (parameters_.resting.search && !explains_scene()) {
+    result.resting_searched = true;
+    search_candidate_parts(analysis, points, surfaces, result, {}, true);
+  }
   if (!explains_scene() && parameters_.vote_index.enabled)
     verify_voted_poses(analysis, points, surfaces, result);
   if (!explains_scene()) {
@@ -198,12 +202,15 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   // candidate of another part (part_ambiguity.hpp).
   const RecognitionCandidate* rival = nullptr;
   const RecognitionCandidate* winner = nullptr;
+  bool best_at_rest = true;
   const auto choose = [&] {
     winner = rival = nullptr;
     best = best_candidate(result.candidates);
     result.seen_fraction = seen_fraction(*best);
+    best_at_rest = at_rest(*best);
     for (const RecognitionCandidate* candidate : ranked_candidates(result.candidates)) {
       if (winner && candidate->part == winner->part) continue;
+      if (!at_rest(*candidate)) continue;
       const double seen = candidate == best ? result.seen_fraction : seen_fraction(*candidate);
       if (seen < parameters_.min_seen_fraction) continue;
       if (!winner) {
@@ -244,6 +251,15 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   }
   const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(best->view)];
   result.T_scanner_part = (best->T_model_scene.inverse() * view.T_scanner_part).normalized();
+  if (none_seen && !best_at_rest) {
+    result.part = -1;
+    const RestingCheck rest = check_resting(*best);
+    char numbers[96];
+    std::snprintf(numbers, sizeof numbers, "lowest point %.1f mm above it, %.0f deg",
+                  rest.lowest_point_mm, rest.tilt_deg);
+    return finish(std::string("best candidate does not rest on the belt: ") + numbers +
+                  " from its part's nearest resting pose");
+  }
   if (none_seen) {
     result.part = -1;
     return finish("best candidate's surface is not where the scene is: " +
@@ -366,9 +382,21 @@ void Recognizer::verify_voted_poses(const ViewAnalysis& scene, const ScenePoints
   search_candidate_parts(scene, scene_points, surfaces, result, voted_parts);
 }
 
+bool Recognizer::at_rest(const RecognitionCandidate& candidate) const {
+  return !parameters_.resting.parts_rest || check_resting(candidate).at_rest;
+}
+
+RestingCheck Recognizer::check_resting(const RecognitionCandidate& candidate) const {
+  const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(candidate.view)];
+  return cosmos::check_resting(model_base_.parts[static_cast<std::size_t>(candidate.part)],
+                               view.T_scanner_part.inverse() * candidate.T_model_scene,
+                               parameters_.resting);
+}
+
 void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
                                         ModelSurfaces& surfaces, RecognitionResult& result,
-                                        const std::vector<int>& only_parts) const {
+                                        const std::vector<int>& only_parts,
+                                        bool resting_poses) const {
   // Parts in the order of their closest view.
   std::vector<int> parts = selector_.rank_parts(scene.moments);
   if (parts.size() > static_cast<std::size_t>(parameters_.searched_parts))
@@ -386,7 +414,8 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
       RecognitionCandidate candidate;
       candidate.view = hypothesis.view;
       candidate.part = part;
-      candidate.from_pose_search = true;
+      candidate.from_pose_search = !resting_poses;
+      candidate.from_resting_search = resting_poses;
       candidate.spectral_distance = selector_.distance(scene.moments, view.moments);
       stage = Clock::now();
       candidate.goodness = match_patch_groups(scene.view, view.cosmos, parameters_.matching).score;
@@ -396,7 +425,8 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
       result.timings.registration_ms += elapsed_ms(stage);
       result.candidates.push_back(candidate);
       // As in verification: a pose that explains this much of the scene ends the search.
-      if (candidate.registered && candidate.inlier_fraction >= parameters_.sufficient_support)
+      if (candidate.registered && candidate.inlier_fraction >= parameters_.sufficient_support &&
+          at_rest(candidate))
         return true;
     }
     return false;
@@ -413,16 +443,23 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
   std::vector<WaitingPart> waiting;
   double best_fit_mm2_of_all = std::numeric_limits<double>::infinity();
   for (int part : parts) {
-    for (const ModelBaseView& view : model_base_.views)
-      result.views_examined += view.part_index == part;
+    if (!resting_poses)
+      for (const ModelBaseView& view : model_base_.views)
+        result.views_examined += view.part_index == part;
     Clock::time_point stage = Clock::now();
-    std::vector<FieldHypothesis> field_poses = field_pose_hypotheses(
-        scene_points.all, model_base_, part_search_model(part), parameters_.search);
+    std::vector<FieldHypothesis> field_poses =
+        resting_poses
+            ? resting_pose_hypotheses(scene_points.all, model_base_, part, part_search_model(part),
+                                      parameters_.search, parameters_.resting)
+            : field_pose_hypotheses(scene_points.all, model_base_, part_search_model(part),
+                                    parameters_.search);
     result.timings.registration_ms += elapsed_ms(stage);
     const double best_fit_mm2 = field_poses.empty() ? std::numeric_limits<double>::infinity()
                                                     : field_poses.front().truncated_mean_square_mm2;
     best_fit_mm2_of_all = std::min(best_fit_mm2_of_all, best_fit_mm2);
-    if (best_fit_mm2 <= parameters_.convincing_field_fit_mm2) {
+    // The resting poses' field stages are cheap: every part's are run and the parts
+    // registered in the order of their fit.
+    if (!resting_poses && best_fit_mm2 <= parameters_.convincing_field_fit_mm2) {
       if (register_part(part, field_poses)) return;
     } else {
       waiting.push_back({part, std::move(field_poses), best_fit_mm2});

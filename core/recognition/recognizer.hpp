@@ -7,7 +7,10 @@
 //   selection     spectral model-view selection (§5.2): K best clusters, m best views;
 //   matching      for each selected view, COSMOS verification by patch-group graph matching
 //                 (§5.3) and the initial pose it implies (§5.3.5);
-//   voting        when no selected view explains the scene: the scene's CSMP pairs vote
+//   resting       when no selected view explains the scene: every part's stable resting
+//                 poses turned about the belt's normal (resting_pose_search.hpp), searched
+//                 in the parts' distance fields;
+//   voting        when none of that explains the scene: the scene's CSMP pairs vote
 //                 for (part, pose) over the whole catalog (core/indexing/); the strongest
 //                 poses are verified like selected views, the first voted parts searched
 //                 over all their views, and only when none of that explains the scene does
@@ -43,6 +46,7 @@
 #include "core/recognition/part_ambiguity.hpp"
 #include "core/recognition/part_pose_search.hpp"
 #include "core/recognition/part_support.hpp"
+#include "core/recognition/resting_pose_search.hpp"
 #include "core/recognition/surface_seen.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/registration/view_registration.hpp"
@@ -86,6 +90,8 @@ struct RecognitionParameters {
   // When no selected view reaches sufficient_support: the poses the catalog-wide vote index
   // proposes, verified like selected views.
   VoteIndexParameters vote_index;
+  // Before them, the parts' resting poses; and whether a part must rest to be recognized.
+  RestingSearchParameters resting;
   // When none of them reaches it either: the pose search over every view of
   // up to `searched_parts` parts (SpectralViewSelector::rank_parts, closest single view
   // first), until one reaches it. Every part of any base: a part the spectra rank below the
@@ -145,6 +151,7 @@ struct RecognitionParameters {
       Range{0, 1});
     v("support", support, "what counts as explained scene surface");
     v("vote_index", vote_index, "votes for (part, pose) over the whole catalog");
+    v("resting", resting, "the parts' stable poses on the belt, searched first");
     v("searched_parts", searched_parts, "parts the pose search falls back to", Range{0, 100000});
     v("convincing_field_fit_mm2", convincing_field_fit_mm2,
       "a part whose best field pose fits this well is registered at once, mm^2", Range{0, 1e6});
@@ -177,8 +184,9 @@ struct RecognitionCandidate {
   double inlier_fraction = 0;
   double score = 0;  // the decision's figure of merit, in [0, 1]
   RigidTransform T_model_scene;
-  bool from_pose_search = false;  // proposed by the fallback search, not by §5.2 selection
-  bool from_vote_index = false;   // proposed by the vote index (core/indexing/)
+  bool from_pose_search = false;     // proposed by the fallback search, not by §5.2 selection
+  bool from_vote_index = false;      // proposed by the vote index (core/indexing/)
+  bool from_resting_search = false;  // proposed by the resting-pose search
 };
 
 struct RecognitionTimings {
@@ -219,6 +227,8 @@ struct RecognitionResult {
   // The pose search ran over every part of the catalog (neither the selected views nor the
   // vote index's poses explained the scene).
   bool catalog_searched = false;
+  // The resting poses of every part were searched (the selected views explained nothing).
+  bool resting_searched = false;
   std::vector<RecognitionCandidate> candidates;  // spectral order
   RecognitionTimings timings;
 };
@@ -256,11 +266,17 @@ class Recognizer {
   // unless one explains the scene, the pose search over the first voted parts' views.
   void verify_voted_poses(const ViewAnalysis& scene, const ScenePoints& scene_points,
                           ModelSurfaces& surfaces, RecognitionResult& result) const;
-  // The fallback: every view of the candidates' parts (part_pose_search.hpp).
-  // `only_parts` not empty: those parts' views alone, in that order.
+  // The fallback: every view of the candidates' parts (part_pose_search.hpp), or with
+  // `resting_poses` only their resting poses (resting_pose_search.hpp).
+  // `only_parts` not empty: those parts alone, in that order.
   void search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
                               ModelSurfaces& surfaces, RecognitionResult& result,
-                              const std::vector<int>& only_parts = {}) const;
+                              const std::vector<int>& only_parts = {},
+                              bool resting_poses = false) const;
+  // Parts known to rest on the belt (resting.parts_rest): a candidate tilted off every resting
+  // pose of its part is not the part lying there.
+  bool at_rest(const RecognitionCandidate& candidate) const;
+  RestingCheck check_resting(const RecognitionCandidate& candidate) const;
   // Registers from each start on its view, keeps the pose its view supports best (the
   // candidate's view becomes that one), then judges it against the part's views around it
   // (part_support.hpp).

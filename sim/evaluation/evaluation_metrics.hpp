@@ -66,6 +66,7 @@ struct EvaluationRecord {
   double features_ms = 0, matching_ms = 0, registration_ms = 0;
   bool pose_searched = false;
   bool catalog_searched = false;
+  bool resting_searched = false;  // the parts' resting poses were searched
   // The decision's margin: the winner's score (the best candidate's when rejected) and the
   // best candidate of another part, empty when none registered.
   double score = 0;

@@ -231,7 +231,7 @@ std::string report_html(std::span<const EvaluationRecord> records, const Evaluat
           "<th>status</th><th>rotation error (deg)</th><th>translation error (mm)</th>"
           "<th>ADD-S / diameter</th><th>time (ms)</th><th>features (ms)</th><th>matching (ms)</th>"
           "<th>registration (ms)</th><th>pose search</th><th>catalog "
-          "search</th><th>score</th><th>runner-up (score)</th>"
+          "search</th><th>resting search</th><th>score</th><th>runner-up (score)</th>"
           "<th>rejected because</th></tr>\n";
   for (std::size_t i = 0; i < records.size(); ++i) {
     const EvaluationRecord& record = records[i];
@@ -251,7 +251,8 @@ std::string report_html(std::span<const EvaluationRecord> records, const Evaluat
          << format("%.2f", record.features_ms) << "</td><td>" << format("%.2f", record.matching_ms)
          << "</td><td>" << format("%.2f", record.registration_ms) << "</td><td>"
          << (record.pose_searched ? "yes" : "no") << "</td><td>"
-         << (record.catalog_searched ? "yes" : "no") << "</td><td>" << format("%.3f", record.score)
+         << (record.catalog_searched ? "yes" : "no") << "</td><td>"
+         << (record.resting_searched ? "yes" : "no") << "</td><td>" << format("%.3f", record.score)
          << format(", %.2f seen", record.seen_fraction) << "</td><td>"
          << (record.runner_up_name.empty()
                  ? std::string("&ndash;")

@@ -147,6 +147,7 @@ EvaluationRecord run_evaluation_test(const EvaluationTest& test,
   for (const RecognitionCandidate& candidate : result.candidates)
     record.pose_searched |= candidate.from_pose_search;
   record.catalog_searched = result.catalog_searched;
+  record.resting_searched = result.resting_searched;
   record.score = result.score;
   if (result.runner_up_part >= 0) {
     record.runner_up_name = base.parts[static_cast<std::size_t>(result.runner_up_part)].name;

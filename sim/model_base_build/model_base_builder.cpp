@@ -180,8 +180,17 @@ ModelBase build_model_base(const PartCatalog& catalog, const ScannerParameters& 
   std::vector<TriangleMesh> meshes;
   for (const PartEntry& entry : catalog.parts) {
     meshes.push_back(load_mesh(entry.mesh_path, entry.size_mm));
-    base.parts.push_back({entry.name, entry.mesh_path.filename().string(), entry.size_mm,
-                          mesh_diameter_mm(meshes.back()), entry.symmetric});
+    ModelPart& part = base.parts.emplace_back();
+    part = {entry.name,
+            entry.mesh_path.filename().string(),
+            entry.size_mm,
+            mesh_diameter_mm(meshes.back()),
+            entry.symmetric,
+            {},
+            {}};
+    for (const StableRestingPose& pose : stable_resting_poses(meshes.back(), settings.resting))
+      part.resting_poses.push_back({pose.R_belt_part, pose.height_mm, pose.probability});
+    part.hull_vertices_mm = hull_vertices(meshes.back());
   }
 
   BuildJobs jobs(catalog, meshes, scanner, settings);

@@ -17,6 +17,7 @@
 #include "scanner/scanner_model.hpp"
 #include "sim/model_base_build/view_direction_subset.hpp"
 #include "sim/part_catalog.hpp"
+#include "sim/part_pose.hpp"
 
 namespace cosmos {
 
@@ -42,6 +43,8 @@ struct ModelBaseBuildSettings {
   // The cell's conditioning: the model views lose the belt at its height_threshold_mm, as
   // live scans do (the views' grid is the scanner's samples and profiles, recorded beside it).
   ConditioningParameters conditioning;
+  // The stable poses each part's record holds (sim/part_pose.hpp).
+  RestingPoseParameters resting;
 };
 
 struct ModelBaseBuildProgress {

@@ -123,6 +123,72 @@ TEST(PartPose, RestingNeverUsesAnUnstableFace) {
   }
 }
 
+TEST(PartPose, AStableBoxHasSixRestingPosesLikeliestOnItsLargestFaces) {
+  const TriangleMesh box = make_box(40, 20, 10);
+  const std::vector<StableRestingPose> poses = stable_resting_poses(box, {});
+  ASSERT_EQ(poses.size(), 6u);
+  double total = 0;
+  for (const StableRestingPose& pose : poses) {
+    expect_rotation(pose.R_belt_part);
+    ASSERT_EQ(corners_on_belt(box, pose.R_belt_part), 4);
+    // The box is centred on its origin: the origin rests at half the extent along the
+    // vertical.
+    Eigen::AlignedBox3d placed;
+    for (const Eigen::Vector3f& v : box.vertices)
+      placed.extend(pose.R_belt_part * v.cast<double>());
+    EXPECT_NEAR(pose.height_mm, -placed.min().z(), 1e-9);
+    total += pose.probability;
+  }
+  EXPECT_NEAR(total, 1.0, 1e-9);
+  // The two 40 x 20 faces first, with the chance resting_rotation draws them with.
+  EXPECT_NEAR(poses[0].height_mm, 5.0, 1e-6);
+  EXPECT_NEAR(poses[1].height_mm, 5.0, 1e-6);
+  EXPECT_NEAR(poses[5].height_mm, 20.0, 1e-6);
+  const double a = 20.0;
+  const double b = 10.0;
+  const double d = 5.0;
+  const double omega = 4.0 * std::asin(a * b / std::sqrt((a * a + d * d) * (b * b + d * d)));
+  EXPECT_NEAR(poses[0].probability, omega / (4.0 * std::numbers::pi), 1e-9);
+}
+
+TEST(PartPose, AHullHasEachCornerOnce) {
+  const std::vector<Eigen::Vector3d> box = hull_vertices(make_box(40, 20, 10));
+  ASSERT_EQ(box.size(), 8u);
+  for (const Eigen::Vector3d& corner : box)
+    EXPECT_LT((corner.cwiseAbs() - Eigen::Vector3d(20, 10, 5)).norm(), 1e-5);
+  TriangleMesh square;
+  square.vertices = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
+  square.triangles = {{0, 1, 2}, {0, 2, 3}};
+  EXPECT_EQ(hull_vertices(square).size(), 4u);
+}
+
+TEST(PartPose, RestingPosesMergeNearFacesAndKeepTheLikeliest) {
+  // A once-subdivided icosphere rests on any of its 80 faces, neighbours about 20 degrees
+  // apart: each its own pose unless the merge angle joins them, the chances always summing
+  // to one.
+  const TriangleMesh sphere = make_icosphere(20, 1);
+  const auto total = [](const std::vector<StableRestingPose>& poses) {
+    double sum = 0;
+    for (const StableRestingPose& pose : poses) sum += pose.probability;
+    return sum;
+  };
+  const std::vector<StableRestingPose> apart =
+      stable_resting_poses(sphere, {.merge_deg = 8, .max_poses = 1000, .min_probability = 0});
+  EXPECT_EQ(apart.size(), 80u);
+  EXPECT_NEAR(total(apart), 1.0, 1e-9);
+  const std::vector<StableRestingPose> merged =
+      stable_resting_poses(sphere, {.merge_deg = 30, .max_poses = 1000, .min_probability = 0});
+  EXPECT_LT(merged.size(), 40u);
+  EXPECT_GT(merged.size(), 4u);
+  EXPECT_NEAR(total(merged), 1.0, 1e-9);
+  EXPECT_GT(merged[0].probability, 1.5 / 80);
+  const std::vector<StableRestingPose> likeliest =
+      stable_resting_poses(sphere, {.merge_deg = 30, .max_poses = 3, .min_probability = 0});
+  ASSERT_EQ(likeliest.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k)
+    EXPECT_DOUBLE_EQ(likeliest[k].probability, merged[k].probability);
+}
+
 TEST(PartPose, CentreOfMassOfClosedAndFlatMeshes) {
   TriangleMesh box = make_box(40, 20, 10);
   for (Eigen::Vector3f& v : box.vertices) v += Eigen::Vector3f(1, 2, 3);

@@ -57,7 +57,11 @@ ModelBase hand_made_base() {
   ModelBase base;
   base.catalog_hash = "0123456789abcdef";
   base.parameters_text = parameters(0.02);
-  base.parts = {{"cow", "cow.off", 120, 131.5, false}, {"spool", "spool.off", 70, 74.25, true}};
+  base.parts = {{"cow", "cow.off", 120, 131.5, false, {}, {}},
+                {"spool", "spool.off", 70, 74.25, true, {}, {}}};
+  base.parts[0].resting_poses = {{rotation_from_xyz_angles_deg(180, 0, 0), 21.5, 0.625},
+                                 {rotation_from_xyz_angles_deg(90, 0, 0), 30.25, 0.375}};
+  base.parts[0].hull_vertices_mm = {{-60, -20, -21.5}, {60, 25, 30}, {0, -30, 5}};
   const CosmosView cosmos = testing::hand_made_view_analysis().view;
   for (int k = 0; k < 5; ++k) {
     ModelBaseView view;
@@ -362,6 +366,12 @@ TEST_F(ModelBaseFile, AbsurdValuesBehindAValidChecksumAreRefusedNamingThem) {
       },
       "view 3: direction_part length is 7");
   expect_refused([](ModelBase& b) { b.parts[1].size_mm = -1; }, "part 1: size_mm is -1");
+  expect_refused([](ModelBase& b) { b.parts[0].resting_poses[1].R_belt_part(1, 2) = 0.5; },
+                 "part 0 resting pose 1: R_belt_part rotation's |R^T R - I|");
+  expect_refused([](ModelBase& b) { b.parts[0].resting_poses[0].probability = 1.5; },
+                 "part 0 resting pose 0: probability is 1.5, expected in [0, 1]");
+  expect_refused([](ModelBase& b) { b.parts[0].hull_vertices_mm[2].y() = -1e9; },
+                 "part 0: hull vertex 2.y is -1e+09");
   expect_refused([](ModelBase& b) { b.views[0].moments[4] = INFINITY; }, "view 0: moment 5 is inf");
   expect_refused([](ModelBase& b) { b.views[1].cosmos.patches[0].centroid_mm.z() = -1e7; },
                  "view 1: patch 0 centroid_mm.z is -1e+07");
@@ -406,9 +416,9 @@ TEST_F(ModelBaseFile, AVersion1BaseIsRefusedWithTheWayToRebuildIt) {
   std::string content = bytes();
   content[8] = 1;
   put_bytes(content);
-  expect_refusal(
-      "format version 1, this build reads version 2 (rebuild it with `cosmos modelbase "
-      "build`)");
+  expect_refusal("format version 1, this build reads version " +
+                 std::to_string(ModelBase::kFormatVersion) +
+                 " (rebuild it with `cosmos modelbase build`)");
 }
 
 }  // namespace

@@ -36,7 +36,11 @@ ModelBase small_base() {
   ModelBase base;
   base.catalog_hash = "feedc0ffee";
   base.parameters_text = "{\"cosmos\":{\"fit\":{\"window_size\":5}}}";
-  base.parts = {{"cow", "cow.off", 120, 131.5, false}, {"spool", "spool.off", 70, 74.25, true}};
+  base.parts = {{"cow", "cow.off", 120, 131.5, false, {}, {}},
+                {"spool", "spool.off", 70, 74.25, true, {}, {}}};
+  base.parts[0].resting_poses = {{rotation_from_xyz_angles_deg(180, 0, 0), 21.5, 0.625},
+                                 {rotation_from_xyz_angles_deg(90, 0, 0), 30.25, 0.375}};
+  base.parts[0].hull_vertices_mm = {{-60, -20, -21.5}, {60, 25, 30}, {0, -30, 5}};
   for (int k = 0; k < 3; ++k) {
     ModelBaseView view;
     view.part_index = k < 2 ? 0 : 1;
@@ -101,6 +105,12 @@ TEST(ModelBasePayload, DecodesWhatWasEncoded) {
   EXPECT_EQ(read.parts[1].name, "spool");
   EXPECT_EQ(read.parts[1].diameter_mm, 74.25);
   EXPECT_TRUE(read.parts[1].symmetric);
+  EXPECT_TRUE(read.parts[1].resting_poses.empty());
+  ASSERT_EQ(read.parts[0].resting_poses.size(), 2u);
+  EXPECT_EQ(read.parts[0].resting_poses[1].R_belt_part, base.parts[0].resting_poses[1].R_belt_part);
+  EXPECT_EQ(read.parts[0].resting_poses[1].height_mm, 30.25);
+  EXPECT_EQ(read.parts[0].resting_poses[0].probability, 0.625);
+  EXPECT_EQ(read.parts[0].hull_vertices_mm, base.parts[0].hull_vertices_mm);
   ASSERT_EQ(read.views.size(), 3u);
   const ModelBaseView &view = read.views[2], &written = base.views[2];
   EXPECT_EQ(view.part_index, 1);

@@ -40,7 +40,8 @@ Eigen::Vector3d direction_at_deg(double angle_deg) {
 // 20 mm in x; part 1 holds a view like view 1 that must never be asked.
 ModelBase two_view_base(double second_view_angle_deg) {
   ModelBase base;
-  base.parts = {{"plate", "plate.off", 24, 24, false}, {"other", "other.off", 24, 24, false}};
+  base.parts = {{"plate", "plate.off", 24, 24, false, {}, {}},
+                {"other", "other.off", 24, 24, false, {}, {}}};
   ModelBaseView matched;
   matched.part_index = 0;
   matched.direction_part = direction_at_deg(0.0);
