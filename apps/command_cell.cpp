@@ -160,6 +160,7 @@ void run(const CellOptions& options) {
   const CosmosParameters& cosmos = loaded.cosmos;
   RecognitionParameters recognition;
   recognition.surfaces = config.realtime.recognizer_surfaces;
+  recognition.resting.parts_touch_belt = config.cell.parts_touch_belt;
   recognition.resting.parts_rest = config.cell.parts_rest;
   const Recognizer recognizer(base, cosmos, recognition);
   LcmPublisher lcm_publisher(config.lcm.url, config.lcm.channels());

@@ -130,9 +130,10 @@ void run(const EvalOptions& options) {
       parts, options.tests, options.seed,
       options.pose == "resting" ? EvaluationPoseMode::kResting : EvaluationPoseMode::kRandom);
   if (!options.only.empty()) plan = chosen_tests(plan, options.only);
-  // Scans in resting poses stand for a cell whose parts lie on the belt, and the recognizer
-  // is told so (resting_pose_search.hpp).
+  // Every test part lies on the belt (its lowest point on it), in resting poses in its
+  // stable poses, as in a cell; the recognizer is told so (resting_pose_search.hpp).
   RecognitionParameters recognition;
+  recognition.resting.parts_touch_belt = true;
   recognition.resting.parts_rest = options.pose == "resting";
   const Recognizer recognizer(base, cosmos, recognition);
   const std::vector<EvaluationRecord> records =

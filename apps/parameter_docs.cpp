@@ -85,8 +85,9 @@ std::string parameters_markdown() {
       "\n## Recognition\n\n"
       "Not read from a file: the defaults of RecognitionParameters "
       "(core/recognition/recognizer.hpp), which every recognizer uses; only "
-      "`resting.parts_rest` is set from outside: by `cell.parts_rest` in a cell, by "
-      "`--pose resting` in `cosmos eval`.\n");
+      "`resting.parts_touch_belt` and `resting.parts_rest` are set from outside: by the "
+      "`cell:` keys of the same names in a cell; in `cosmos eval`, the first always and the "
+      "second by `--pose resting`.\n");
   SectionDocs recognition_sections(text);
   recognition_sections("recognition", RecognitionParameters{},
                        "selection, verification, registration and decision (ch. 5-6)");

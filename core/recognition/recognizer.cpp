@@ -254,11 +254,16 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   if (none_seen && !best_at_rest) {
     result.part = -1;
     const RestingCheck rest = check_resting(*best);
-    char numbers[96];
-    std::snprintf(numbers, sizeof numbers, "lowest point %.1f mm above it, %.0f deg",
-                  rest.lowest_point_mm, rest.tilt_deg);
-    return finish(std::string("best candidate does not rest on the belt: ") + numbers +
-                  " from its part's nearest resting pose");
+    char numbers[128];
+    if (rest.touches_belt)
+      std::snprintf(numbers, sizeof numbers,
+                    "does not rest on the belt: %.0f deg from its part's nearest resting pose",
+                    rest.tilt_deg);
+    else
+      std::snprintf(numbers, sizeof numbers,
+                    "does not touch the belt: its lowest point %.1f mm above it",
+                    rest.lowest_point_mm);
+    return finish(std::string("best candidate ") + numbers);
   }
   if (none_seen) {
     result.part = -1;
@@ -383,7 +388,10 @@ void Recognizer::verify_voted_poses(const ViewAnalysis& scene, const ScenePoints
 }
 
 bool Recognizer::at_rest(const RecognitionCandidate& candidate) const {
-  return !parameters_.resting.parts_rest || check_resting(candidate).at_rest;
+  const RestingSearchParameters& resting = parameters_.resting;
+  if (!resting.parts_rest && !resting.parts_touch_belt) return true;
+  const RestingCheck check = check_resting(candidate);
+  return resting.parts_rest ? check.at_rest : check.touches_belt;
 }
 
 RestingCheck Recognizer::check_resting(const RecognitionCandidate& candidate) const {

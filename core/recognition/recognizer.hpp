@@ -273,8 +273,9 @@ class Recognizer {
                               ModelSurfaces& surfaces, RecognitionResult& result,
                               const std::vector<int>& only_parts = {},
                               bool resting_poses = false) const;
-  // Parts known to rest on the belt (resting.parts_rest): a candidate tilted off every resting
-  // pose of its part is not the part lying there.
+  // Parts known to lie on the belt (resting.parts_touch_belt): a candidate floating above it or
+  // sunk into it is not the part lying there; known to rest (resting.parts_rest): nor is one
+  // tilted off every resting pose of its part.
   bool at_rest(const RecognitionCandidate& candidate) const;
   RestingCheck check_resting(const RecognitionCandidate& candidate) const;
   // Registers from each start on its view, keeps the pose its view supports best (the

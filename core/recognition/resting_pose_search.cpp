@@ -81,8 +81,9 @@ RestingCheck check_resting(const ModelPart& part, const RigidTransform& T_part_s
   }
   check.tilt_deg = std::acos(std::clamp(best_cos, -1.0, 1.0)) / kDegree;
   check.covered = coverage >= parameters.min_coverage;
-  check.at_rest = std::abs(check.lowest_point_mm) <= parameters.max_height_error_mm &&
-                  (!check.covered || check.tilt_deg <= parameters.max_tilt_deg);
+  check.touches_belt = std::abs(check.lowest_point_mm) <= parameters.max_height_error_mm;
+  check.at_rest =
+      check.touches_belt && (!check.covered || check.tilt_deg <= parameters.max_tilt_deg);
   return check;
 }
 

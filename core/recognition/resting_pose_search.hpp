@@ -19,11 +19,13 @@ namespace cosmos {
 struct RestingSearchParameters {
   // Search each part's resting poses before the pose search over all its views.
   bool search = true;
-  // The parts lie on the belt in their stable poses (not propped on each other): a candidate
-  // whose lowest point is not on the belt (within max_height_error_mm), or whose vertical is
-  // farther than max_tilt_deg from every resting pose's, neither wins nor rivals. A part
-  // whose kept resting poses cover less than min_coverage of the chance (a roller: its side
-  // is many hull faces, each unlikely) is held to its contact with the belt alone.
+  // The parts lie on the belt (not propped on each other): a candidate whose lowest point is
+  // not on the belt (within max_height_error_mm) neither wins nor rivals.
+  bool parts_touch_belt = false;
+  // Moreover in their stable poses: nor does one whose vertical is farther than max_tilt_deg
+  // from every resting pose's. A part whose kept resting poses cover less than min_coverage
+  // of the chance (a roller: its side is many hull faces, each unlikely) is held to its
+  // contact with the belt alone.
   bool parts_rest = false;
   double max_height_error_mm = 2.0;
   double max_tilt_deg = 5.0;
@@ -37,7 +39,8 @@ struct RestingSearchParameters {
   template <class Visitor>
   void visit(Visitor& v) {
     v("search", search, "search the parts' resting poses before all their views");
-    v("parts_rest", parts_rest, "parts lie in their stable poses: others cannot win");
+    v("parts_touch_belt", parts_touch_belt, "parts lie on the belt: floating poses cannot win");
+    v("parts_rest", parts_rest, "and in their stable poses: leaning ones cannot win either");
     v("max_height_error_mm", max_height_error_mm,
       "lowest point farther from the belt: not at rest, mm", Range{0, 1e3});
     v("max_tilt_deg", max_tilt_deg, "farther from every resting pose: not at rest, deg",
@@ -65,9 +68,10 @@ struct RestingCheck {
   // The height of the part's lowest point (ModelPart::hull_vertices_mm): 0 when it touches the
   // belt.
   double lowest_point_mm = 0;
-  double tilt_deg = 180;  // the vertical's angle from the nearest resting pose's
-  bool covered = false;   // the part's resting poses cover min_coverage of the chance
-  bool at_rest = false;   // the pose touches the belt and, when covered, is a resting one
+  double tilt_deg = 180;      // the vertical's angle from the nearest resting pose's
+  bool covered = false;       // the part's resting poses cover min_coverage of the chance
+  bool touches_belt = false;  // the lowest point within max_height_error_mm of the belt
+  bool at_rest = false;       // touches the belt and, when covered, is a resting pose
 };
 
 RestingCheck check_resting(const ModelPart& part, const RigidTransform& T_part_scene,

@@ -49,9 +49,12 @@ struct CellSettings {
   // YAML, rotation_deg [rx, ry, rz] gives R = Rz Ry Rx (Eq. 6.2 order) and translation_mm t.
   // Default identity: the cell frame is the scanner frame until the cell is calibrated.
   RigidTransform T_cell_scanner;
-  // The parts lie on the belt in their stable poses (fed one by one, not tumbled onto each
-  // other): recognition searches their resting poses first and refuses a pose that would float
-  // above the belt or lean off every stable face (core/recognition/resting_pose_search.hpp).
+  // The parts lie on the belt (not propped on each other): recognition refuses a pose that
+  // would float above the belt or sink into it; and in their stable poses (fed one by one, not
+  // tumbled): nor one that leans off every stable face
+  // (core/recognition/resting_pose_search.hpp). Both need the belt plane conditioning removes
+  // to be the real one (docs/calibration.md).
+  bool parts_touch_belt = true;
   bool parts_rest = false;
 
   template <class Visitor>
@@ -62,8 +65,10 @@ struct CellSettings {
     v("T_cell_scanner", T_cell_scanner,
       "scanner frame in the cell frame: rotation_deg [rx, ry, rz] (R = Rz Ry Rx), "
       "translation_mm [x, y, z]");
+    v("parts_touch_belt", parts_touch_belt,
+      "parts lie on the belt: a pose floating above it or sunk into it is refused");
     v("parts_rest", parts_rest,
-      "parts lie in their stable poses: a pose floating or leaning off them is refused");
+      "and in their stable poses: a pose leaning off every stable face is refused");
   }
 };
 

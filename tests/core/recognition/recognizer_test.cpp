@@ -247,6 +247,27 @@ TEST_F(RecognizerOnRegressionBase, PartsAtRestAreFoundInTheirRestingPosesAndFloa
   EXPECT_GE(covered_scans, 12);
 }
 
+// Parts in random poses still lie on the belt, their lowest point on it: told so, the
+// recognizer takes the same scans, and refuses each one lifted off the belt, with the reason.
+TEST_F(RecognizerOnRegressionBase, APartLiftedOffTheBeltIsRefusedWhenPartsLieOnIt) {
+  RecognitionParameters parameters;
+  parameters.resting.parts_touch_belt = true;
+  const Recognizer recognizer(*base_, CosmosParameters{}, parameters);
+  for (std::uint64_t seed = 121; seed < 126; ++seed) {
+    const int part = static_cast<int>(seed % 5);
+    const std::string& name = base_->parts[static_cast<std::size_t>(part)].name;
+    RangeImage image = scan(name, seed);
+    const RecognitionResult lying = recognizer.recognize(image);
+    ASSERT_EQ(lying.status, RecognitionStatus::kOk) << name << ": " << lying.reason;
+    EXPECT_EQ(lying.part, part) << name;
+    for (float& z_mm : image.z_mm.values()) z_mm += 6.0f;
+    const RecognitionResult lifted = recognizer.recognize(image);
+    EXPECT_EQ(lifted.status, RecognitionStatus::kRejected) << name;
+    EXPECT_NE(lifted.reason.find("does not touch the belt"), std::string::npos)
+        << name << ": " << lifted.reason;
+  }
+}
+
 TEST_F(RecognizerOnRegressionBase, RejectsAPartTheBaseDoesNotHold) {
   for (const ModelPart& part : base_->parts) ASSERT_NE(part.name, "bunny");
   for (std::uint64_t seed : {51, 52}) {
