@@ -123,8 +123,9 @@ void run_info(const std::string& file) {
               ModelBase::kFormatVersion, base.catalog_hash.c_str());
   std::printf("parts: %zu, views: %zu, clusters: %zu\n", base.parts.size(), base.views.size(),
               base.clusters.size());
-  std::printf("%-20s %6s %9s %15s %8s %12s %s\n", "part", "views", "clusters", "control_points",
-              "size_mm", "diameter_mm", "symmetric");
+  std::printf("%-20s %6s %9s %15s %8s %12s %9s %13s %s\n", "part", "views", "clusters",
+              "control_points", "size_mm", "diameter_mm", "symmetric", "resting_poses",
+              "resting_coverage");
   for (std::size_t p = 0; p < base.parts.size(); ++p) {
     std::size_t views = 0, clusters = 0, points = 0;
     for (const ModelBaseView& view : base.views) {
@@ -135,8 +136,11 @@ void run_info(const std::string& file) {
     for (const ViewCluster& cluster : base.clusters)
       clusters += cluster.part_index == static_cast<int>(p);
     const ModelPart& part = base.parts[p];
-    std::printf("%-20s %6zu %9zu %15zu %8g %12.2f %s\n", part.name.c_str(), views, clusters, points,
-                part.size_mm, part.diameter_mm, part.symmetric ? "yes" : "no");
+    double coverage = 0;
+    for (const RestingPose& pose : part.resting_poses) coverage += pose.probability;
+    std::printf("%-20s %6zu %9zu %15zu %8g %12.2f %9s %13zu %.3f\n", part.name.c_str(), views,
+                clusters, points, part.size_mm, part.diameter_mm, part.symmetric ? "yes" : "no",
+                part.resting_poses.size(), coverage);
   }
   std::printf("parameters:\n%s", base.parameters_text.c_str());
 }

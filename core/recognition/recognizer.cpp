@@ -94,6 +94,12 @@ Recognizer::Recognizer(const ModelBase& model_base, const CosmosParameters& cosm
     part_search_models_.push_back(build_part_search_model(model_base, part, parameters.field));
   if (parameters_.vote_index.enabled)
     patch_pair_table_ = PatchPairTable(model_base, parameters_.vote_index.key);
+  for (int part = 0; part < static_cast<int>(model_base.parts.size()); ++part) {
+    double coverage = 0;
+    for (const RestingPose& pose : model_base.parts[static_cast<std::size_t>(part)].resting_poses)
+      coverage += pose.probability;
+    if (coverage < parameters_.resting.min_coverage) poorly_covered_parts_.push_back(part);
+  }
 }
 
 RecognitionResult Recognizer::recognize(const RangeImage& scene) const {
@@ -189,11 +195,16 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
     result.resting_searched = true;
     search_candidate_parts(analysis, points, surfaces, result, {}, true);
   }
-  if (!explains_scene() && parameters_.vote_index.enabled)
+  // Parts known to rest have had every resting pose searched: the searches over views can only
+  // add poses the decision refuses, except for the parts whose resting poses are not known
+  // well enough to refuse a lean.
+  const bool rest_searched = parameters_.resting.parts_rest && result.resting_searched;
+  if (!explains_scene() && parameters_.vote_index.enabled && !rest_searched)
     verify_voted_poses(analysis, points, surfaces, result);
-  if (!explains_scene()) {
-    result.catalog_searched = true;
-    search_candidate_parts(analysis, points, surfaces, result);
+  const std::vector<int> uncovered = rest_searched ? poorly_covered_parts_ : std::vector<int>{};
+  if (!explains_scene() && (!rest_searched || !uncovered.empty())) {
+    result.catalog_searched = !rest_searched;
+    search_candidate_parts(analysis, points, surfaces, result, uncovered);
     best = best_candidate(result.candidates);
   }
   if (!best) return finish("no candidate view could be registered");

@@ -224,8 +224,9 @@ struct RecognitionResult {
   int scene_patches = 0;
   int scene_points = 0;
   int views_examined = 0;  // model views compared with the scene (selected + searched)
-  // The pose search ran over every part of the catalog (neither the selected views nor the
-  // vote index's poses explained the scene).
+  // The pose search ran over every part of the catalog (neither the selected views, the
+  // resting poses nor the vote index's poses explained the scene). For parts known to rest it
+  // runs only over the parts whose resting poses are poorly known, and this stays false.
   bool catalog_searched = false;
   // The resting poses of every part were searched (the selected views explained nothing).
   bool resting_searched = false;
@@ -291,6 +292,8 @@ class Recognizer {
   SpectralViewSelector selector_;
   std::vector<PartSearchModel> part_search_models_;
   PatchPairTable patch_pair_table_;
+  // Parts whose resting poses cover less than resting.min_coverage of the chance.
+  std::vector<int> poorly_covered_parts_;
 };
 
 const char* to_string(RecognitionStatus status);
