@@ -187,6 +187,15 @@ std::span<const T> span_of(const flatbuffers::Vector<T>* v) {
   return v ? std::span<const T>(v->data(), v->size()) : std::span<const T>();
 }
 
+// Element i of a vector of structs, copied out: the verifier checks a vector's length word's
+// alignment, not its elements', so a crafted payload may place doubles off their 8 bytes.
+template <class Struct>
+Struct struct_at(const flatbuffers::Vector<const Struct*>& v, std::size_t i) {
+  Struct out;
+  std::memcpy(static_cast<void*>(&out), v.Data() + i * sizeof(Struct), sizeof(Struct));
+  return out;
+}
+
 std::string view_label(std::size_t v) { return "view " + std::to_string(v); }
 
 std::optional<std::string> decode_moments(const flatbuffers::Vector<double>* in, MomentVector& out,
@@ -261,7 +270,7 @@ std::optional<std::string> decode_registration(const fb::RegistrationPoints* in,
     return where + ": " + std::to_string(codings ? codings->size() : 0) +
            " coefficient codings, expected " + std::to_string(out.coefficients.size());
   for (std::size_t c = 0; c < out.coefficients.size(); ++c) {
-    const fb::CoefficientCoding& coding = *codings->Get(static_cast<flatbuffers::uoffset_t>(c));
+    const fb::CoefficientCoding coding = struct_at(*codings, c);
     out.coefficients[c] = {coding.step(),      coding.low(),         coding.high(),
                            coding.predictor(), coding.rice_bits(),   coding.ratio_x(),
                            coding.ratio_y(),   coding.stream_bytes()};
@@ -309,13 +318,17 @@ std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::s
               {},
               {}};
       if (const auto* resting = p->resting_poses())
-        for (const fb::RestingPose* pose : *resting) {
-          const RigidTransform T_belt_part = transform(&pose->t_belt_part());
+        for (std::size_t r = 0; r < resting->size(); ++r) {
+          const fb::RestingPose pose = struct_at(*resting, r);
+          const RigidTransform T_belt_part = transform(&pose.t_belt_part());
           part.resting_poses.push_back(
-              {T_belt_part.rotation, T_belt_part.translation_mm.z(), pose->probability()});
+              {T_belt_part.rotation, T_belt_part.translation_mm.z(), pose.probability()});
         }
       if (const auto* hull = p->hull_vertices_mm())
-        for (const fb::Vec3* vertex : *hull) part.hull_vertices_mm.push_back(vec3(vertex));
+        for (std::size_t k = 0; k < hull->size(); ++k) {
+          const fb::Vec3 vertex = struct_at(*hull, k);
+          part.hull_vertices_mm.push_back(vec3(&vertex));
+        }
     }
   }
   const int part_count = static_cast<int>(out.parts.size());

@@ -5,11 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstring>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "core/io/model_base_generated.h"
 #include "tests/core/hand_made_view.hpp"
 
 namespace cosmos {
@@ -153,6 +155,50 @@ std::string refusal_after(void (*damage)(ModelBase&)) {
   damage(base);
   const Decoded decoded = decode(encode(base));
   return decoded.refusal.value_or("accepted");
+}
+
+// The verifier checks a vector's length word's alignment, not its elements': a crafted payload
+// may put a part's resting poses and hull corners (doubles) off their 8 bytes, and they are
+// read as written wherever they lie (a fuzzing finding, caught by UBSan in
+// scripts/check_sanitizers.sh).
+TEST(ModelBasePayload, StructVectorsOffTheirElementsAlignmentAreReadAsWritten) {
+  int misaligned = 0;
+  for (int padding_words = 0; padding_words < 2; ++padding_words) {
+    flatbuffers::FlatBufferBuilder b;
+    const fb::Vec3 corner(1.5, -2.25, 3.0);
+    const fb::RestingPose pose(
+        fb::Transform(fb::Vec3(1, 0, 0), fb::Vec3(0, 1, 0), fb::Vec3(0, 0, 1), fb::Vec3(0, 0, 7.5)),
+        0.875);
+    for (int k = 0; k < padding_words; ++k) b.PushElement<std::uint32_t>(0);
+    b.StartVector(1, sizeof(std::uint32_t));
+    b.PushBytes(reinterpret_cast<const std::uint8_t*>(&corner), sizeof corner);
+    const flatbuffers::Offset<flatbuffers::Vector<const fb::Vec3*>> hull(b.EndVector(1));
+    for (int k = 0; k < padding_words; ++k) b.PushElement<std::uint32_t>(0);
+    b.StartVector(1, sizeof(std::uint32_t));
+    b.PushBytes(reinterpret_cast<const std::uint8_t*>(&pose), sizeof pose);
+    const flatbuffers::Offset<flatbuffers::Vector<const fb::RestingPose*>> resting(b.EndVector(1));
+    const auto part = fb::CreatePart(b, b.CreateString("cow"), b.CreateString("cow.off"), 120,
+                                     131.5, false, resting, hull);
+    const auto parts = b.CreateVector(std::vector<flatbuffers::Offset<fb::Part>>{part});
+    fb::FinishModelBaseBuffer(
+        b, fb::CreateModelBase(b, ModelBase::kFormatVersion, b.CreateString("feedc0ffee"),
+                               b.CreateString("{}"), parts));
+    const Decoded decoded = decode({b.GetBufferPointer(), b.GetBufferPointer() + b.GetSize()});
+    ASSERT_FALSE(decoded.refusal) << *decoded.refusal;
+    const fb::Part& written = *fb::GetModelBase(decoded.payload.get())->parts()->Get(0);
+    misaligned += reinterpret_cast<std::uintptr_t>(written.hull_vertices_mm()->Data()) % 8 != 0;
+    misaligned += reinterpret_cast<std::uintptr_t>(written.resting_poses()->Data()) % 8 != 0;
+    ASSERT_EQ(decoded.base.parts.size(), 1u);
+    const ModelPart& read = decoded.base.parts[0];
+    ASSERT_EQ(read.hull_vertices_mm.size(), 1u);
+    EXPECT_EQ(read.hull_vertices_mm[0], Eigen::Vector3d(1.5, -2.25, 3.0));
+    ASSERT_EQ(read.resting_poses.size(), 1u);
+    EXPECT_EQ(read.resting_poses[0].height_mm, 7.5);
+    EXPECT_EQ(read.resting_poses[0].probability, 0.875);
+    EXPECT_TRUE(read.resting_poses[0].R_belt_part.isIdentity(0));
+  }
+  // The paddings put the vectors' elements off 8 bytes at least once.
+  EXPECT_GE(misaligned, 1);
 }
 
 TEST(ModelBasePayload, IndicesOutOfTheirRangeAreRefusedNamingWhere) {
