@@ -1,7 +1,6 @@
 #include "core/recognition/recognizer.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -13,16 +12,12 @@
 #include "core/recognition/part_pose_search.hpp"
 #include "core/recognition/part_support.hpp"
 #include "core/recognition/pose_hypotheses.hpp"
+#include "core/recognition/ranked_candidates.hpp"
 #include "core/recognition/surface_seen.hpp"
+#include "core/stage_clock.hpp"
 
 namespace cosmos {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double elapsed_ms(Clock::time_point since) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
-}
 
 // Support and residual of a registered pose, from one correspondence pass with the inlier
 // distance as the limit: the fraction of scene points the model surface explains, and the
@@ -58,26 +53,6 @@ double candidate_score(double inlier_fraction, double rms_mm, double goodness,
   return inlier_fraction * residual_factor * (0.8 + 0.2 * std::clamp(goodness, 0.0, 1.0));
 }
 
-const RecognitionCandidate* best_candidate(const std::vector<RecognitionCandidate>& candidates) {
-  const RecognitionCandidate* best = nullptr;
-  for (const RecognitionCandidate& candidate : candidates)
-    if (candidate.registered && (!best || candidate.score > best->score)) best = &candidate;
-  return best;
-}
-
-// Registered candidates, best score first (ties: the order they were verified in).
-std::vector<const RecognitionCandidate*> ranked_candidates(
-    const std::vector<RecognitionCandidate>& candidates) {
-  std::vector<const RecognitionCandidate*> ranked;
-  for (const RecognitionCandidate& candidate : candidates)
-    if (candidate.registered) ranked.push_back(&candidate);
-  std::stable_sort(ranked.begin(), ranked.end(),
-                   [](const RecognitionCandidate* a, const RecognitionCandidate* b) {
-                     return a->score > b->score;
-                   });
-  return ranked;
-}
-
 }  // namespace
 
 const char* to_string(RecognitionStatus status) {
@@ -100,10 +75,11 @@ Recognizer::Recognizer(const ModelBase& model_base, const CosmosParameters& cosm
       coverage += pose.probability;
     if (coverage < parameters_.resting.min_coverage) poorly_covered_parts_.push_back(part);
   }
+  size_variants_ = find_size_variants(model_base, parameters_.size_variants);
 }
 
 RecognitionResult Recognizer::recognize(const RangeImage& scene) const {
-  const Clock::time_point start = Clock::now();
+  const StageClock::time_point start = StageClock::now();
   if (scene.width() == 0 || scene.count_valid() == 0) {
     RecognitionResult empty;
     empty.reason = "empty scan: no range data";
@@ -117,7 +93,7 @@ RecognitionResult Recognizer::recognize(const RangeImage& scene) const {
 RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
                                                  const ViewAnalysis& analysis,
                                                  double features_ms) const {
-  const Clock::time_point start = Clock::now();
+  const StageClock::time_point start = StageClock::now();
   RecognitionResult result;
   result.moments = analysis.moments;
   result.scene_patches = static_cast<int>(analysis.view.patches.size());
@@ -129,7 +105,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   };
   if (analysis.valid_pixels == 0) return finish("no object: no surface could be fitted");
 
-  Clock::time_point stage = Clock::now();
+  StageClock::time_point stage = StageClock::now();
   RegistrationPointsResult scene_points =
       build_registration_points(scene, parameters_.scene_points, &analysis.frames);
   // A small visible surface gets denser control points: a hundred points do not tell a
@@ -147,7 +123,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
                   " control points)");
   if (model_base_.views.empty()) return finish("the model base has no views");
 
-  stage = Clock::now();
+  stage = StageClock::now();
   const std::vector<SpectralCandidate> selected = selector_.select(analysis.moments);
   result.timings.selection_ms = elapsed_ms(stage);
 
@@ -210,48 +186,80 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   if (!best) return finish("no candidate view could be registered");
 
   // The winner is the best candidate whose surface is seen; the rival the best such
-  // candidate of another part (part_ambiguity.hpp).
+  // candidate of another part (part_ambiguity.hpp). Among the sizes of one shape the two-way
+  // fit chooses (size_variants.hpp).
   const RecognitionCandidate* rival = nullptr;
   const RecognitionCandidate* winner = nullptr;
   bool best_at_rest = true;
+  const auto is_size_variant = [&](int part, int other) {
+    const std::vector<int>& family = size_variants_[static_cast<std::size_t>(part)];
+    return std::binary_search(family.begin(), family.end(), other);
+  };
+  const auto size_fit = [&](const RecognitionCandidate& candidate) {
+    return candidate.inlier_fraction * seen_fraction(candidate);
+  };
+  const auto qualifies = [&](const RecognitionCandidate& candidate) {
+    return at_rest(candidate) && seen_fraction(candidate) >= parameters_.min_seen_fraction;
+  };
   const auto choose = [&] {
     winner = rival = nullptr;
     best = best_candidate(result.candidates);
     result.seen_fraction = seen_fraction(*best);
     best_at_rest = at_rest(*best);
-    for (const RecognitionCandidate* candidate : ranked_candidates(result.candidates)) {
-      if (winner && candidate->part == winner->part) continue;
-      if (!at_rest(*candidate)) continue;
-      const double seen = candidate == best ? result.seen_fraction : seen_fraction(*candidate);
-      if (seen < parameters_.min_seen_fraction) continue;
-      if (!winner) {
+    const std::vector<const RecognitionCandidate*> ranked = ranked_candidates(result.candidates);
+    for (const RecognitionCandidate* candidate : ranked)
+      if (qualifies(*candidate)) {
         winner = candidate;
-        result.seen_fraction = seen;
-        continue;
+        break;
       }
-      rival = candidate;
-      result.runner_up_seen_fraction = seen;
-      break;
+    if (winner && parameters_.size_variants.search &&
+        !size_variants_[static_cast<std::size_t>(winner->part)].empty()) {
+      const int family_part = winner->part;
+      double best_fit = size_fit(*winner);
+      for (const RecognitionCandidate* candidate : ranked)
+        if (is_size_variant(family_part, candidate->part) && qualifies(*candidate) &&
+            size_fit(*candidate) > best_fit) {
+          best_fit = size_fit(*candidate);
+          winner = candidate;
+        }
     }
+    if (!winner) return;
+    result.seen_fraction = seen_fraction(*winner);
+    for (const RecognitionCandidate* candidate : ranked)
+      if (candidate->part != winner->part && qualifies(*candidate)) {
+        rival = candidate;
+        result.runner_up_seen_fraction = seen_fraction(*candidate);
+        break;
+      }
   };
   choose();
   // A rival only verified on one selected view may have registered far from its best pose;
-  // the pose search over its part's views gives it its fair chance before it is compared.
-  if (rival && parameters_.ambiguity.search_rival_part) {
-    const int rival_part = rival->part;
-    if (std::none_of(result.candidates.begin(), result.candidates.end(),
-                     [rival_part](const RecognitionCandidate& c) {
-                       return c.part == rival_part && c.from_pose_search;
-                     })) {
-      search_candidate_parts(analysis, points, surfaces, result, {rival_part});
-      choose();
-    }
+  // the pose search over its part's views gives it its fair chance before it is compared. So
+  // do the other sizes of the winner's shape, which selection cannot tell from it.
+  const auto pose_searched = [&](int part) {
+    return std::any_of(
+        result.candidates.begin(), result.candidates.end(),
+        [part](const RecognitionCandidate& c) { return c.part == part && c.from_pose_search; });
+  };
+  std::vector<int> unsearched;
+  if (rival && parameters_.ambiguity.search_rival_part && !pose_searched(rival->part))
+    unsearched.push_back(rival->part);
+  if (winner && parameters_.size_variants.search)
+    for (int variant : size_variants_[static_cast<std::size_t>(winner->part)])
+      if (!pose_searched(variant) &&
+          std::find(unsearched.begin(), unsearched.end(), variant) == unsearched.end())
+        unsearched.push_back(variant);
+  if (!unsearched.empty()) {
+    // One part at a time: a search stops at the first part that explains the scene.
+    for (int part : unsearched) search_candidate_parts(analysis, points, surfaces, result, {part});
+    choose();
   }
   const bool none_seen = winner == nullptr;
   if (winner) best = winner;
 
   result.part = best->part;
   result.view = best->view;
+  result.best_candidate_part = best->part;
   result.score = best->score;
   result.spectral_distance = best->spectral_distance;
   result.registration_rms_mm = best->rms_mm;
@@ -292,7 +300,17 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
     result.part = -1;
     return finish("best candidate's registration residual is too large");
   }
-  if (rival && best->score - rival->score < parameters_.ambiguity.examined_score_margin) {
+  // Sizes of one shape are told apart by the two-way fit, which the ambiguity test (the scene's
+  // points alone) cannot see: a larger size explains a smaller one's scene as well.
+  const bool sizes_told_apart =
+      rival && is_size_variant(best->part, rival->part) && parameters_.size_variants.search &&
+      size_fit(*best) - size_fit(*rival) >= parameters_.size_variants.fit_margin;
+  if (rival && is_size_variant(best->part, rival->part)) {
+    result.size_fit = size_fit(*best);
+    result.runner_up_size_fit = size_fit(*rival);
+  }
+  if (rival && !sizes_told_apart &&
+      best->score - rival->score < parameters_.ambiguity.examined_score_margin) {
     result.ambiguity_examined = true;
     result.ambiguity =
         judge_part_ambiguity(points.all, model_base_, {best->view, best->T_model_scene},
@@ -324,14 +342,14 @@ RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene, const ScenePo
   candidate.part = view.part_index;
   candidate.spectral_distance = selected.distance;
 
-  Clock::time_point stage = Clock::now();
+  StageClock::time_point stage = StageClock::now();
   const PatchGroupMatch match = match_patch_groups(scene.view, view.cosmos, parameters_.matching);
   candidate.goodness = match.score;
   const PoseFromPatches from_patches =
       estimate_pose_from_patches(scene.view, view.cosmos, match.pairs, parameters_.pose);
   matching_ms += elapsed_ms(stage);
 
-  stage = Clock::now();
+  stage = StageClock::now();
   const std::vector<ViewPoseHypothesis> starts = align_view_starts_in_field(
       scene_points.all, model_base_, selected.view,
       generate_pose_hypotheses(scene_points.coarse, surfaces.points(selected.view), from_patches,
@@ -341,61 +359,6 @@ RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene, const ScenePo
   register_candidate(scene_points, starts, surfaces, candidate);
   registration_ms += elapsed_ms(stage);
   return candidate;
-}
-
-void Recognizer::verify_voted_poses(const ViewAnalysis& scene, const ScenePoints& scene_points,
-                                    ModelSurfaces& surfaces, RecognitionResult& result) const {
-  Clock::time_point stage = Clock::now();
-  PoseVoter voter(patch_pair_table_, parameters_.vote_index.voting);
-  const std::span<const VotedPose> voted = voter.vote(scene.view);
-  result.timings.selection_ms += elapsed_ms(stage);
-  std::vector<RigidTransform> starts;
-  std::vector<int> voted_parts;
-  for (std::size_t first = 0; first < voted.size(); ++first) {
-    const int part = voted[first].part;
-    if (std::any_of(voted.begin(), voted.begin() + static_cast<std::ptrdiff_t>(first),
-                    [part](const VotedPose& earlier) { return earlier.part == part; }))
-      continue;
-    voted_parts.push_back(part);
-    const PartSearchModel& model = part_search_model(part);
-    if (model.start_views.empty()) continue;
-    // The part's poses as starts on one of its views; aligning them in the part's field moves
-    // each onto the view nearest to it (part_pose_search.hpp).
-    const int view = model.start_views.front();
-    const RigidTransform& T_view_part =
-        model_base_.views[static_cast<std::size_t>(view)].T_scanner_part;
-    starts.clear();
-    for (std::size_t v = first; v < voted.size(); ++v)
-      if (voted[v].part == part) starts.push_back(T_view_part * voted[v].T_part_scene);
-    stage = Clock::now();
-    const std::vector<ViewPoseHypothesis> aligned = align_view_starts_in_field(
-        scene_points.all, model_base_, view, starts, model, parameters_.field_starts,
-        parameters_.search, parameters_.registered_hypotheses);
-    result.timings.registration_ms += elapsed_ms(stage);
-    if (aligned.empty()) continue;
-    RecognitionCandidate candidate;
-    candidate.part = part;
-    candidate.view = aligned.front().view;
-    candidate.from_vote_index = true;
-    const ModelBaseView& nearest = model_base_.views[static_cast<std::size_t>(candidate.view)];
-    candidate.spectral_distance = selector_.distance(scene.moments, nearest.moments);
-    stage = Clock::now();
-    candidate.goodness = match_patch_groups(scene.view, nearest.cosmos, parameters_.matching).score;
-    result.timings.matching_ms += elapsed_ms(stage);
-    stage = Clock::now();
-    register_candidate(scene_points, aligned, surfaces, candidate);
-    result.timings.registration_ms += elapsed_ms(stage);
-    result.candidates.push_back(candidate);
-    ++result.views_examined;
-  }
-  // A voted pose can be too far from the truth to register; the part's votes still rank it
-  // far better than the spectra do.
-  if (voted_parts.size() > static_cast<std::size_t>(parameters_.vote_index.searched_parts))
-    voted_parts.resize(static_cast<std::size_t>(parameters_.vote_index.searched_parts));
-  const RecognitionCandidate* best = best_candidate(result.candidates);
-  if (voted_parts.empty() || (best && best->inlier_fraction >= parameters_.sufficient_support))
-    return;
-  search_candidate_parts(scene, scene_points, surfaces, result, voted_parts);
 }
 
 bool Recognizer::at_rest(const RecognitionCandidate& candidate) const {
@@ -410,90 +373,6 @@ RestingCheck Recognizer::check_resting(const RecognitionCandidate& candidate) co
   return cosmos::check_resting(model_base_.parts[static_cast<std::size_t>(candidate.part)],
                                view.T_scanner_part.inverse() * candidate.T_model_scene,
                                parameters_.resting);
-}
-
-void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
-                                        ModelSurfaces& surfaces, RecognitionResult& result,
-                                        const std::vector<int>& only_parts,
-                                        bool resting_poses) const {
-  // Parts in the order of their closest view.
-  std::vector<int> parts = selector_.rank_parts(scene.moments);
-  if (parts.size() > static_cast<std::size_t>(parameters_.searched_parts))
-    parts.resize(static_cast<std::size_t>(parameters_.searched_parts));
-  if (!only_parts.empty()) parts = only_parts;
-  // Registers one part's field poses; true when one explains enough to end the search.
-  auto register_part = [&](int part, const std::vector<FieldHypothesis>& field_poses) {
-    Clock::time_point stage = Clock::now();
-    const std::vector<ViewPoseHypothesis> hypotheses = register_field_hypotheses(
-        scene_points.all, model_base_, part, part_search_model(part), field_poses,
-        parameters_.registration, parameters_.search, surfaces);
-    result.timings.registration_ms += elapsed_ms(stage);
-    for (const ViewPoseHypothesis& hypothesis : hypotheses) {
-      const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(hypothesis.view)];
-      RecognitionCandidate candidate;
-      candidate.view = hypothesis.view;
-      candidate.part = part;
-      candidate.from_pose_search = !resting_poses;
-      candidate.from_resting_search = resting_poses;
-      candidate.spectral_distance = selector_.distance(scene.moments, view.moments);
-      stage = Clock::now();
-      candidate.goodness = match_patch_groups(scene.view, view.cosmos, parameters_.matching).score;
-      result.timings.matching_ms += elapsed_ms(stage);
-      stage = Clock::now();
-      register_candidate(scene_points, {hypothesis}, surfaces, candidate);
-      result.timings.registration_ms += elapsed_ms(stage);
-      result.candidates.push_back(candidate);
-      // As in verification: a pose that explains this much of the scene ends the search.
-      if (candidate.registered && candidate.inlier_fraction >= parameters_.sufficient_support &&
-          at_rest(candidate))
-        return true;
-    }
-    return false;
-  };
-  // The field stages rank the parts far better than the spectra do: a part whose fit is
-  // convincing is registered at once, the others wait and are registered in the order of
-  // their fit, so a scene whose part ranks tenth by spectrum no longer registers nine wrong
-  // parts first.
-  struct WaitingPart {
-    int part;
-    std::vector<FieldHypothesis> field_poses;
-    double best_fit_mm2;
-  };
-  std::vector<WaitingPart> waiting;
-  double best_fit_mm2_of_all = std::numeric_limits<double>::infinity();
-  for (int part : parts) {
-    if (!resting_poses)
-      for (const ModelBaseView& view : model_base_.views)
-        result.views_examined += view.part_index == part;
-    Clock::time_point stage = Clock::now();
-    std::vector<FieldHypothesis> field_poses =
-        resting_poses
-            ? resting_pose_hypotheses(scene_points.all, model_base_, part, part_search_model(part),
-                                      parameters_.search, parameters_.resting)
-            : field_pose_hypotheses(scene_points.all, model_base_, part_search_model(part),
-                                    parameters_.search);
-    result.timings.registration_ms += elapsed_ms(stage);
-    const double best_fit_mm2 = field_poses.empty() ? std::numeric_limits<double>::infinity()
-                                                    : field_poses.front().truncated_mean_square_mm2;
-    best_fit_mm2_of_all = std::min(best_fit_mm2_of_all, best_fit_mm2);
-    // The resting poses' field stages are cheap: every part's are run and the parts
-    // registered in the order of their fit.
-    if (!resting_poses && best_fit_mm2 <= parameters_.convincing_field_fit_mm2) {
-      if (register_part(part, field_poses)) return;
-    } else {
-      waiting.push_back({part, std::move(field_poses), best_fit_mm2});
-    }
-  }
-  std::stable_sort(waiting.begin(), waiting.end(), [](const WaitingPart& a, const WaitingPart& b) {
-    return a.best_fit_mm2 < b.best_fit_mm2;
-  });
-  // As among one part's poses: a part that fits many times worse than the best one cannot
-  // explain the scene as well, and is not registered.
-  const double hopeless_fit_mm2 = parameters_.search.worst_kept_score_mm2(best_fit_mm2_of_all);
-  for (const WaitingPart& part : waiting) {
-    if (part.best_fit_mm2 > hopeless_fit_mm2) break;
-    if (register_part(part.part, part.field_poses)) return;
-  }
 }
 
 void Recognizer::register_candidate(const ScenePoints& scene_points,

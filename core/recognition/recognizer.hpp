@@ -47,6 +47,7 @@
 #include "core/recognition/part_pose_search.hpp"
 #include "core/recognition/part_support.hpp"
 #include "core/recognition/resting_pose_search.hpp"
+#include "core/recognition/size_variants.hpp"
 #include "core/recognition/surface_seen.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/registration/view_registration.hpp"
@@ -123,6 +124,8 @@ struct RecognitionParameters {
   double min_seen_fraction = 0.3;
   // Rejection as ambiguous between two parts (§5.3.6, §5.4).
   PartAmbiguityParameters ambiguity;
+  // One shape at several sizes (size_variants.hpp).
+  SizeVariantParameters size_variants;
   // The model surfaces a recognition keeps unpacked at once (model_surface.hpp).
   ModelSurfaceCacheParameters surfaces;
 
@@ -167,6 +170,7 @@ struct RecognitionParameters {
     v("min_seen_fraction", min_seen_fraction,
       "less of the winner's matched view seen in the scene: rejected", Range{0, 1});
     v("ambiguity", ambiguity, "rejection as ambiguous between two parts (§5.3.6, §5.4)");
+    v("size_variants", size_variants, "one shape at several sizes: told apart by the fit");
     v("surfaces", surfaces, "the model surfaces a recognition keeps unpacked");
   }
 };
@@ -202,6 +206,8 @@ struct RecognitionResult {
   std::string reason;  // why rejected; empty when ok
   int part = -1;       // ModelBase::parts index of the winner, -1 when rejected
   int view = -1;       // ModelBase::views index of the winner
+  // The part of the best registered candidate, also when it was rejected (-1: none registered).
+  int best_candidate_part = -1;
   double score = 0;
   double spectral_distance = 0;
   double registration_rms_mm = 0;
@@ -210,6 +216,9 @@ struct RecognitionResult {
   // how near the decision came to naming that part instead.
   int runner_up_part = -1;
   double runner_up_score = 0;
+  // When the two are sizes of one shape (size_variants.hpp): their two-way fits, by which
+  // they were told apart or not.
+  double size_fit = 0, runner_up_size_fit = 0;
   // The two compared where they differ (part_ambiguity.hpp); `examined` false when the
   // runner-up was too far behind (or there was none) to be.
   bool ambiguity_examined = false;
@@ -294,6 +303,8 @@ class Recognizer {
   PatchPairTable patch_pair_table_;
   // Parts whose resting poses cover less than resting.min_coverage of the chance.
   std::vector<int> poorly_covered_parts_;
+  // Per part, the other sizes of its shape in the base (size_variants.hpp).
+  std::vector<std::vector<int>> size_variants_;
 };
 
 const char* to_string(RecognitionStatus status);

@@ -108,7 +108,7 @@ EvaluationMetrics compute_metrics(std::span<const EvaluationRecord> records,
   EvaluationMetrics metrics;
   AddSByPart add_s(model_points_per_part);
   int correct = 0, view_selection_hits = 0, add_s_hits_10pct = 0, add_s_hits_2pct = 0;
-  int false_rejects = 0, unknown_rejects = 0, largest_rank = -1;
+  int false_rejects = 0, unknown_rejects = 0, largest_rank = -1, taken_for_size_variant = 0;
   double fraction_db_sum = 0;
   std::vector<int> cluster_ranks;
   std::vector<double> translation_errors_mm, recognition_times_ms;
@@ -128,6 +128,10 @@ EvaluationMetrics compute_metrics(std::span<const EvaluationRecord> records,
     if (record.true_part_among_selected_views) ++view_selection_hits;
     fraction_db_sum += record.fraction_db_examined;
     if (record.rejected) ++false_rejects;
+    if (record.truth_has_size_variants) {
+      ++metrics.size_variant_tests;
+      if (record.taken_for_size_variant) ++taken_for_size_variant;
+    }
     if (outcome.status == RecordStatus::kCorrect) {
       ++correct;
       if (!(record.diameter_mm > 0))
@@ -171,6 +175,8 @@ EvaluationMetrics compute_metrics(std::span<const EvaluationRecord> records,
   metrics.false_reject_rate = fraction(false_rejects, known);
   metrics.recognition_ms_median = nearest_rank_percentile(recognition_times_ms, 50);
   metrics.recognition_ms_p99 = nearest_rank_percentile(recognition_times_ms, 99);
+  metrics.size_variants_told_apart_rate =
+      fraction(metrics.size_variant_tests - taken_for_size_variant, metrics.size_variant_tests);
   return metrics;
 }
 
@@ -194,6 +200,9 @@ nlohmann::json metrics_json(const EvaluationMetrics& metrics) {
       {"recognition_ms",
        {{"median", to_json(metrics.recognition_ms_median)},
         {"p99", to_json(metrics.recognition_ms_p99)}}},
+      {"size_variants",
+       {{"tests", metrics.size_variant_tests},
+        {"told_apart_rate", to_json(metrics.size_variants_told_apart_rate)}}},
   };
 }
 

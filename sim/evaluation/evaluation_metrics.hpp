@@ -23,6 +23,10 @@
 //   unknown_reject_rate            fraction of unknown records rejected.
 //   false_reject_rate              fraction of known records rejected.
 //   recognition_ms                 recognition_ms over all records: {median, p99}.
+//   size_variants.tests            |known records whose part has size variants in the base|:
+//                                  other base parts of the same mesh at other sizes.
+//   size_variants.told_apart_rate  fraction of those neither identified as one of its size
+//                                  variants nor rejected as ambiguous with one.
 // Percentiles are nearest-rank: the p-th percentile of n sorted values is value number
 // ceil(p/100 * n) (1-based, at least 1), so it is always an observed value; the median is the
 // 50th, the lower middle value for an even count.
@@ -43,7 +47,11 @@ struct EvaluationRecord {
   std::string truth_name;
   bool truth_in_model_base = true;  // false for --unknown parts
   bool truth_symmetric = false;     // catalog flag: rotation error not meaningful
-  double diameter_mm = 0;           // part diameter (largest vertex distance) for ADD-S
+  // Another part of the base is the same mesh at another size; and this record took the part
+  // for one of them (identified it as one, or rejected the two as ambiguous).
+  bool truth_has_size_variants = false;
+  bool taken_for_size_variant = false;
+  double diameter_mm = 0;  // part diameter (largest vertex distance) for ADD-S
   bool rejected = false;
   std::string rejection_reason;  // the recognizer's reason when rejected
   int predicted_part = -1;       // catalog index, -1 when rejected
@@ -123,6 +131,8 @@ struct EvaluationMetrics {
   std::optional<double> add_s_recall_10pct, add_s_recall_2pct;
   std::optional<double> unknown_reject_rate, false_reject_rate;
   std::optional<double> recognition_ms_median, recognition_ms_p99;
+  int size_variant_tests = 0;
+  std::optional<double> size_variants_told_apart_rate;
   std::vector<double> rotation_errors_deg;  // ascending, the set rotation_error_deg is over
   std::vector<RecordOutcome> outcomes;      // one per record, in record order
 };

@@ -27,10 +27,21 @@ EvaluationPart load_evaluation_part(const PartEntry& entry, int catalog_index, i
   part.catalog_index = catalog_index;
   part.base_index = base_index;
   part.symmetric = entry.symmetric;
+  part.mesh_path = entry.mesh_path.string();
   part.mesh = load_mesh(entry.mesh_path, entry.size_mm);
   part.model_points_mm = spread_vertices(part.mesh);
   part.diameter_mm = bounding_box(part.mesh).diagonal().norm();
   return part;
+}
+
+// Whether base part `base_part` is another size of `part`'s mesh.
+bool is_size_variant(const ModelBase& base, const std::vector<EvaluationPart>& parts,
+                     const EvaluationPart& part, int base_part) {
+  if (base_part < 0 || base_part == part.base_index) return false;
+  const std::string& name = base.parts[static_cast<std::size_t>(base_part)].name;
+  for (const EvaluationPart& other : parts)
+    if (other.name == name) return other.mesh_path == part.mesh_path;
+  return false;
 }
 
 int catalog_index(const PartCatalog& catalog, const std::string& name) {
@@ -117,6 +128,15 @@ EvaluationRecord run_evaluation_test(const EvaluationTest& test,
   record.diameter_mm = part.diameter_mm;
   record.rejected = result.status != RecognitionStatus::kOk;
   if (record.rejected) record.rejection_reason = result.reason;
+  if (part.base_index >= 0) {
+    for (std::size_t b = 0; b < base.parts.size(); ++b)
+      record.truth_has_size_variants |= is_size_variant(base, parts, part, static_cast<int>(b));
+    const bool ambiguous = record.rejected && result.ambiguity.ambiguous;
+    record.taken_for_size_variant =
+        (!record.rejected && is_size_variant(base, parts, part, result.part)) ||
+        (ambiguous && (is_size_variant(base, parts, part, result.best_candidate_part) ||
+                       is_size_variant(base, parts, part, result.runner_up_part)));
+  }
   if (!record.rejected) {
     const std::string& name = base.parts[static_cast<std::size_t>(result.part)].name;
     for (const EvaluationPart& candidate : parts)

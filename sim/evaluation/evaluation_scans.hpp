@@ -31,6 +31,7 @@ struct EvaluationPart {
   int base_index = -1;  // -1: not in the model base (an unknown part)
   bool symmetric = false;
   double diameter_mm = 0;
+  std::string mesh_path;  // parts of one mesh at several sizes are size variants
   TriangleMesh mesh;
   std::vector<Eigen::Vector3d> model_points_mm;  // part-frame subsample for ADD-S
 };

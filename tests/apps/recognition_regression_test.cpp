@@ -94,7 +94,8 @@ TEST_F(RecognitionRegression, ReportHasItsFilesAndStableKeys) {
   for (const char* key :
        {"tests", "identification_rate", "spectral_cluster_hit_rate", "spectral_view_selection_rate",
         "fraction_db_examined", "rotation_error_deg", "translation_error_mm", "add_s_recall_10pct",
-        "add_s_recall_2pct", "unknown_reject_rate", "false_reject_rate", "recognition_ms"})
+        "add_s_recall_2pct", "unknown_reject_rate", "false_reject_rate", "recognition_ms",
+        "size_variants"})
     EXPECT_TRUE(m.contains(key)) << key;
   for (const char* k : {"1", "2", "5", "10"})
     EXPECT_TRUE(m["spectral_cluster_hit_rate"].contains(k)) << k;

@@ -208,6 +208,24 @@ TEST(NearestRankPercentile, KnownVectors) {
   EXPECT_FALSE(nearest_rank_percentile({}, 50).has_value());
 }
 
+// Size variants: only the records of parts with another size in the base count, and a record
+// counts against the rate when it took the part for one of those sizes (identified as it, or
+// rejected as ambiguous with it), not when it took it for an unrelated part or rejected it
+// for another reason.
+TEST(EvaluationMetrics, SizeVariantsToldApartCountsOnlyConfusionsWithinAFamily) {
+  std::vector<EvaluationRecord> records = {
+      known_record(0, 0, 0, 1), known_record(0, 1, 0, 1), known_record(1, -1, 0, 1),
+      known_record(1, 1, 0, 1), known_record(2, 3, 0, 1), known_record(3, 3, 0, 1),
+  };
+  for (int i : {0, 1, 2, 3, 4}) records[static_cast<std::size_t>(i)].truth_has_size_variants = true;
+  records[1].taken_for_size_variant = true;  // part 0 identified as its variant, part 1
+  records[2].taken_for_size_variant = true;  // part 1 rejected as ambiguous with part 0
+  const EvaluationMetrics metrics = metrics_of(records);
+  EXPECT_EQ(metrics.size_variant_tests, 5);
+  EXPECT_DOUBLE_EQ(*metrics.size_variants_told_apart_rate, 3.0 / 5);
+  EXPECT_DOUBLE_EQ(*metrics.identification_rate, 3.0 / 6);
+}
+
 std::set<std::string> keys_of(const nlohmann::json& json) {
   std::set<std::string> keys;
   for (const auto& item : json.items()) keys.insert(item.key());
@@ -221,7 +239,10 @@ TEST(MetricsJson, HasExactlyTheStableKeys) {
                                    "spectral_view_selection_rate", "fraction_db_examined",
                                    "rotation_error_deg", "translation_error_mm",
                                    "add_s_recall_10pct", "add_s_recall_2pct", "unknown_reject_rate",
-                                   "false_reject_rate", "recognition_ms"}));
+                                   "false_reject_rate", "recognition_ms", "size_variants"}));
+  EXPECT_EQ(keys_of(json["size_variants"]), (std::set<std::string>{"tests", "told_apart_rate"}));
+  EXPECT_EQ(json["size_variants"]["tests"], 0);
+  EXPECT_TRUE(json["size_variants"]["told_apart_rate"].is_null());
   EXPECT_EQ(keys_of(json["spectral_cluster_hit_rate"]),
             (std::set<std::string>{"1", "2", "5", "10"}));
   EXPECT_EQ(keys_of(json["rotation_error_deg"]), (std::set<std::string>{"median", "p95"}));

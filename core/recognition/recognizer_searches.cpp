@@ -1,0 +1,154 @@
+// The recognizer's searches beyond the views §5.2 selects (recognizer.hpp): the poses the vote
+// index proposes, and the field-ranked pose search over a part's views or resting poses.
+#include <algorithm>
+#include <limits>
+
+#include "core/indexing/pose_voting.hpp"
+#include "core/recognition/part_pose_search.hpp"
+#include "core/recognition/ranked_candidates.hpp"
+#include "core/recognition/recognizer.hpp"
+#include "core/recognition/resting_pose_search.hpp"
+#include "core/stage_clock.hpp"
+
+namespace cosmos {
+
+void Recognizer::verify_voted_poses(const ViewAnalysis& scene, const ScenePoints& scene_points,
+                                    ModelSurfaces& surfaces, RecognitionResult& result) const {
+  StageClock::time_point stage = StageClock::now();
+  PoseVoter voter(patch_pair_table_, parameters_.vote_index.voting);
+  const std::span<const VotedPose> voted = voter.vote(scene.view);
+  result.timings.selection_ms += elapsed_ms(stage);
+  std::vector<RigidTransform> starts;
+  std::vector<int> voted_parts;
+  for (std::size_t first = 0; first < voted.size(); ++first) {
+    const int part = voted[first].part;
+    if (std::any_of(voted.begin(), voted.begin() + static_cast<std::ptrdiff_t>(first),
+                    [part](const VotedPose& earlier) { return earlier.part == part; }))
+      continue;
+    voted_parts.push_back(part);
+    const PartSearchModel& model = part_search_model(part);
+    if (model.start_views.empty()) continue;
+    // The part's poses as starts on one of its views; aligning them in the part's field moves
+    // each onto the view nearest to it (part_pose_search.hpp).
+    const int view = model.start_views.front();
+    const RigidTransform& T_view_part =
+        model_base_.views[static_cast<std::size_t>(view)].T_scanner_part;
+    starts.clear();
+    for (std::size_t v = first; v < voted.size(); ++v)
+      if (voted[v].part == part) starts.push_back(T_view_part * voted[v].T_part_scene);
+    stage = StageClock::now();
+    const std::vector<ViewPoseHypothesis> aligned = align_view_starts_in_field(
+        scene_points.all, model_base_, view, starts, model, parameters_.field_starts,
+        parameters_.search, parameters_.registered_hypotheses);
+    result.timings.registration_ms += elapsed_ms(stage);
+    if (aligned.empty()) continue;
+    RecognitionCandidate candidate;
+    candidate.part = part;
+    candidate.view = aligned.front().view;
+    candidate.from_vote_index = true;
+    const ModelBaseView& nearest = model_base_.views[static_cast<std::size_t>(candidate.view)];
+    candidate.spectral_distance = selector_.distance(scene.moments, nearest.moments);
+    stage = StageClock::now();
+    candidate.goodness = match_patch_groups(scene.view, nearest.cosmos, parameters_.matching).score;
+    result.timings.matching_ms += elapsed_ms(stage);
+    stage = StageClock::now();
+    register_candidate(scene_points, aligned, surfaces, candidate);
+    result.timings.registration_ms += elapsed_ms(stage);
+    result.candidates.push_back(candidate);
+    ++result.views_examined;
+  }
+  // A voted pose can be too far from the truth to register; the part's votes still rank it
+  // far better than the spectra do.
+  if (voted_parts.size() > static_cast<std::size_t>(parameters_.vote_index.searched_parts))
+    voted_parts.resize(static_cast<std::size_t>(parameters_.vote_index.searched_parts));
+  const RecognitionCandidate* best = best_candidate(result.candidates);
+  if (voted_parts.empty() || (best && best->inlier_fraction >= parameters_.sufficient_support))
+    return;
+  search_candidate_parts(scene, scene_points, surfaces, result, voted_parts);
+}
+
+void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
+                                        ModelSurfaces& surfaces, RecognitionResult& result,
+                                        const std::vector<int>& only_parts,
+                                        bool resting_poses) const {
+  // Parts in the order of their closest view.
+  std::vector<int> parts = selector_.rank_parts(scene.moments);
+  if (parts.size() > static_cast<std::size_t>(parameters_.searched_parts))
+    parts.resize(static_cast<std::size_t>(parameters_.searched_parts));
+  if (!only_parts.empty()) parts = only_parts;
+  // Registers one part's field poses; true when one explains enough to end the search.
+  auto register_part = [&](int part, const std::vector<FieldHypothesis>& field_poses) {
+    StageClock::time_point stage = StageClock::now();
+    const std::vector<ViewPoseHypothesis> hypotheses = register_field_hypotheses(
+        scene_points.all, model_base_, part, part_search_model(part), field_poses,
+        parameters_.registration, parameters_.search, surfaces);
+    result.timings.registration_ms += elapsed_ms(stage);
+    for (const ViewPoseHypothesis& hypothesis : hypotheses) {
+      const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(hypothesis.view)];
+      RecognitionCandidate candidate;
+      candidate.view = hypothesis.view;
+      candidate.part = part;
+      candidate.from_pose_search = !resting_poses;
+      candidate.from_resting_search = resting_poses;
+      candidate.spectral_distance = selector_.distance(scene.moments, view.moments);
+      stage = StageClock::now();
+      candidate.goodness = match_patch_groups(scene.view, view.cosmos, parameters_.matching).score;
+      result.timings.matching_ms += elapsed_ms(stage);
+      stage = StageClock::now();
+      register_candidate(scene_points, {hypothesis}, surfaces, candidate);
+      result.timings.registration_ms += elapsed_ms(stage);
+      result.candidates.push_back(candidate);
+      // As in verification: a pose that explains this much of the scene ends the search.
+      if (candidate.registered && candidate.inlier_fraction >= parameters_.sufficient_support &&
+          at_rest(candidate))
+        return true;
+    }
+    return false;
+  };
+  // The field stages rank the parts far better than the spectra do: a part whose fit is
+  // convincing is registered at once, the others wait and are registered in the order of
+  // their fit, so a scene whose part ranks tenth by spectrum no longer registers nine wrong
+  // parts first.
+  struct WaitingPart {
+    int part;
+    std::vector<FieldHypothesis> field_poses;
+    double best_fit_mm2;
+  };
+  std::vector<WaitingPart> waiting;
+  double best_fit_mm2_of_all = std::numeric_limits<double>::infinity();
+  for (int part : parts) {
+    if (!resting_poses)
+      for (const ModelBaseView& view : model_base_.views)
+        result.views_examined += view.part_index == part;
+    StageClock::time_point stage = StageClock::now();
+    std::vector<FieldHypothesis> field_poses =
+        resting_poses
+            ? resting_pose_hypotheses(scene_points.all, model_base_, part, part_search_model(part),
+                                      parameters_.search, parameters_.resting)
+            : field_pose_hypotheses(scene_points.all, model_base_, part_search_model(part),
+                                    parameters_.search);
+    result.timings.registration_ms += elapsed_ms(stage);
+    const double best_fit_mm2 = field_poses.empty() ? std::numeric_limits<double>::infinity()
+                                                    : field_poses.front().truncated_mean_square_mm2;
+    best_fit_mm2_of_all = std::min(best_fit_mm2_of_all, best_fit_mm2);
+    // The resting poses' field stages are cheap: every part's are run and the parts
+    // registered in the order of their fit.
+    if (!resting_poses && best_fit_mm2 <= parameters_.convincing_field_fit_mm2) {
+      if (register_part(part, field_poses)) return;
+    } else {
+      waiting.push_back({part, std::move(field_poses), best_fit_mm2});
+    }
+  }
+  std::stable_sort(waiting.begin(), waiting.end(), [](const WaitingPart& a, const WaitingPart& b) {
+    return a.best_fit_mm2 < b.best_fit_mm2;
+  });
+  // As among one part's poses: a part that fits many times worse than the best one cannot
+  // explain the scene as well, and is not registered.
+  const double hopeless_fit_mm2 = parameters_.search.worst_kept_score_mm2(best_fit_mm2_of_all);
+  for (const WaitingPart& part : waiting) {
+    if (part.best_fit_mm2 > hopeless_fit_mm2) break;
+    if (register_part(part.part, part.field_poses)) return;
+  }
+}
+
+}  // namespace cosmos
