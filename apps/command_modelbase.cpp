@@ -136,11 +136,9 @@ void run_info(const std::string& file) {
     for (const ViewCluster& cluster : base.clusters)
       clusters += cluster.part_index == static_cast<int>(p);
     const ModelPart& part = base.parts[p];
-    double coverage = 0;
-    for (const RestingPose& pose : part.resting_poses) coverage += pose.probability;
     std::printf("%-20s %6zu %9zu %15zu %8g %12.2f %9s %13zu %.3f\n", part.name.c_str(), views,
                 clusters, points, part.size_mm, part.diameter_mm, part.symmetric ? "yes" : "no",
-                part.resting_poses.size(), coverage);
+                part.resting_poses.size(), part.resting_coverage());
   }
   std::printf("parameters:\n%s", base.parameters_text.c_str());
 }

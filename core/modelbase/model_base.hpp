@@ -35,6 +35,13 @@ struct ModelPart {
   std::vector<RestingPose> resting_poses;  // most likely first
   // The corners of the part's convex hull: its lowest point in any pose.
   std::vector<Eigen::Vector3d> hull_vertices_mm;
+
+  // The chance the kept resting poses cover: below 1 when unlikely ones were left out.
+  double resting_coverage() const {
+    double coverage = 0;
+    for (const RestingPose& pose : resting_poses) coverage += pose.probability;
+    return coverage;
+  }
 };
 
 struct ModelBaseView {

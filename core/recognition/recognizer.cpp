@@ -69,12 +69,10 @@ Recognizer::Recognizer(const ModelBase& model_base, const CosmosParameters& cosm
     part_search_models_.push_back(build_part_search_model(model_base, part, parameters.field));
   if (parameters_.vote_index.enabled)
     patch_pair_table_ = PatchPairTable(model_base, parameters_.vote_index.key);
-  for (int part = 0; part < static_cast<int>(model_base.parts.size()); ++part) {
-    double coverage = 0;
-    for (const RestingPose& pose : model_base.parts[static_cast<std::size_t>(part)].resting_poses)
-      coverage += pose.probability;
-    if (coverage < parameters_.resting.min_coverage) poorly_covered_parts_.push_back(part);
-  }
+  for (int part = 0; part < static_cast<int>(model_base.parts.size()); ++part)
+    if (model_base.parts[static_cast<std::size_t>(part)].resting_coverage() <
+        parameters_.resting.min_coverage)
+      poorly_covered_parts_.push_back(part);
   size_variants_ = find_size_variants(model_base, parameters_.size_variants);
 }
 

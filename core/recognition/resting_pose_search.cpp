@@ -74,13 +74,10 @@ RestingCheck check_resting(const ModelPart& part, const RigidTransform& T_part_s
     check.lowest_point_mm = std::min(check.lowest_point_mm, T_scene_part.apply(point).z());
   const Eigen::Vector3d up_part = T_part_scene.rotation * Eigen::Vector3d::UnitZ();
   double best_cos = -1.0;
-  double coverage = 0.0;
-  for (const RestingPose& pose : part.resting_poses) {
+  for (const RestingPose& pose : part.resting_poses)
     best_cos = std::max(best_cos, up_part.dot(up_in_part(pose)));
-    coverage += pose.probability;
-  }
   check.tilt_deg = std::acos(std::clamp(best_cos, -1.0, 1.0)) / kDegree;
-  check.covered = coverage >= parameters.min_coverage;
+  check.covered = part.resting_coverage() >= parameters.min_coverage;
   check.touches_belt = std::abs(check.lowest_point_mm) <= parameters.max_height_error_mm;
   check.at_rest =
       check.touches_belt && (!check.covered || check.tilt_deg <= parameters.max_tilt_deg);

@@ -271,6 +271,35 @@ std::string report_html(std::span<const EvaluationRecord> records, const Evaluat
 
 }  // namespace
 
+nlohmann::json tests_json(std::span<const EvaluationRecord> records,
+                          const EvaluationMetrics& metrics) {
+  if (metrics.outcomes.size() != records.size())
+    throw std::invalid_argument("evaluation metrics are not those of the records given");
+  nlohmann::json tests = nlohmann::json::array();
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const EvaluationRecord& record = records[i];
+    const RecordOutcome& outcome = metrics.outcomes[i];
+    tests.push_back({
+        {"test", record.test_index},
+        {"truth", record.truth_name},
+        {"truth_in_model_base", record.truth_in_model_base},
+        {"predicted", record.rejected ? nlohmann::json() : nlohmann::json(record.predicted_name)},
+        {"status", record_status_name(outcome.status)},
+        {"reason", record.rejection_reason},
+        {"recognition_ms", record.recognition_ms},
+        {"pose_searched", record.pose_searched},
+        {"catalog_searched", record.catalog_searched},
+        {"resting_searched", record.resting_searched},
+        {"truth_has_size_variants", record.truth_has_size_variants},
+        {"taken_for_size_variant", record.taken_for_size_variant},
+        {"add_s_over_diameter", outcome.add_s_over_diameter
+                                    ? nlohmann::json(*outcome.add_s_over_diameter)
+                                    : nlohmann::json()},
+    });
+  }
+  return tests;
+}
+
 void write_evaluation_report(const fs::path& out_dir, std::span<const EvaluationRecord> records,
                              const EvaluationMetrics& metrics,
                              std::span<const std::string> part_names) {
@@ -286,6 +315,7 @@ void write_evaluation_report(const fs::path& out_dir, std::span<const Evaluation
   write_png(out_dir / "cluster_rate.png", cluster_rate_image(metrics.cluster_hit_rate_curve));
   write_png(out_dir / "rotation_error_cdf.png", rotation_cdf_image(metrics.rotation_errors_deg));
   write_text(out_dir / "report.html", report_html(records, metrics, part_names));
+  write_text(out_dir / "tests.json", tests_json(records, metrics).dump(1) + "\n");
 }
 
 }  // namespace cosmos

@@ -8,9 +8,16 @@
 //   rotation_error_cdf.png   empirical CDF of the rotation error, correct asymmetric parts.
 //   report.html              self-contained page: the metrics, the three images (relative
 //                            links) and one row per test.
+//   tests.json               one object per test, for scripts (bench/catalog_scaling.sh):
+//                            test, truth, truth_in_model_base, predicted (null when
+//                            rejected), status (record_status_name), reason, recognition_ms,
+//                            pose_searched, catalog_searched, resting_searched,
+//                            truth_has_size_variants, taken_for_size_variant,
+//                            add_s_over_diameter (null where it does not apply).
 // Part labels come from part_names (catalog index -> name), falling back to the names in the
 // records for indices it does not cover.
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <span>
 #include <string>
 
@@ -25,5 +32,9 @@ void write_evaluation_report(const std::filesystem::path& out_dir,
                              std::span<const EvaluationRecord> records,
                              const EvaluationMetrics& metrics,
                              std::span<const std::string> part_names);
+
+// tests.json's array; `metrics` as above.
+nlohmann::json tests_json(std::span<const EvaluationRecord> records,
+                          const EvaluationMetrics& metrics);
 
 }  // namespace cosmos

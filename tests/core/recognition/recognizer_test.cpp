@@ -223,10 +223,8 @@ TEST_F(RecognizerOnRegressionBase, PartsAtRestAreFoundInTheirRestingPosesAndFloa
     // A part whose kept resting poses cover most of the chance is found among them; one that
     // rolls (the coupling: its side is many unlikely hull faces) may need the search over
     // every part.
-    double coverage = 0;
-    for (const RestingPose& pose : base_->parts[static_cast<std::size_t>(part)].resting_poses)
-      coverage += pose.probability;
-    if (coverage >= parameters.resting.min_coverage) {
+    if (base_->parts[static_cast<std::size_t>(part)].resting_coverage() >=
+        parameters.resting.min_coverage) {
       ++covered_scans;
       EXPECT_FALSE(result.catalog_searched) << name << " seed " << seed;
     }

@@ -72,7 +72,7 @@ class EvaluationReport : public ::testing::Test {
   std::vector<Eigen::Vector3d> model_points_;
 };
 
-TEST_F(EvaluationReport, WritesFiveReadableFiles) {
+TEST_F(EvaluationReport, WritesSixReadableFiles) {
   const std::vector<EvaluationRecord> records = {
       record(0, 0, 0, 1.5), record(0, 0, 1, 3.0), record(1, 1, 0, 0.7),
       record(1, 2, 6, 0),   record(2, 2, 2, 8.0), record(2, -1, 14, 0),
@@ -91,6 +91,18 @@ TEST_F(EvaluationReport, WritesFiveReadableFiles) {
     EXPECT_LE(image.rows, 2000) << name;
   }
   EXPECT_EQ(nlohmann::json::parse(read_text(out / "metrics.json")), metrics_json(metrics));
+  // tests.json: one object per test, in order, with the fields scripts read.
+  const nlohmann::json tests = nlohmann::json::parse(read_text(out / "tests.json"));
+  ASSERT_EQ(tests.size(), records.size());
+  EXPECT_EQ(tests, tests_json(records, metrics));
+  EXPECT_EQ(tests[0]["status"], "correct");
+  EXPECT_EQ(tests[0]["predicted"], kPartNames[0]);
+  EXPECT_DOUBLE_EQ(tests[0]["recognition_ms"].get<double>(), 21.5);
+  EXPECT_EQ(tests[3]["status"], "misidentified");
+  EXPECT_TRUE(tests[3]["add_s_over_diameter"].is_null());
+  EXPECT_TRUE(tests[5]["predicted"].is_null());
+  EXPECT_EQ(tests[5]["status"], "false reject");
+  EXPECT_EQ(tests[7]["truth_in_model_base"], false);
 
   const std::string html = read_text(out / "report.html");
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
