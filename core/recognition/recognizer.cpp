@@ -165,7 +165,9 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
     return best && best->inlier_fraction >= parameters_.sufficient_support && at_rest(*best) &&
            seen_fraction(*best) >= parameters_.min_seen_fraction;
   };
-  if (parameters_.resting.search && !explains_scene()) {
+  // Only parts known to rest are searched in their resting poses: a tumbled part lies in none,
+  // and the search only delays the others.
+  if (parameters_.resting.search && parameters_.resting.parts_rest && !explains_scene()) {
     result.resting_searched = true;
     search_candidate_parts(analysis, points, surfaces, result, {}, true);
   }

@@ -17,7 +17,8 @@
 namespace cosmos {
 
 struct RestingSearchParameters {
-  // Search each part's resting poses before the pose search over all its views.
+  // Search each part's resting poses before the pose search over all its views, when the
+  // parts are known to rest (parts_rest below).
   bool search = true;
   // The parts lie on the belt (not propped on each other): a candidate whose lowest point is
   // not on the belt (within max_height_error_mm) neither wins nor rivals.
@@ -38,7 +39,7 @@ struct RestingSearchParameters {
 
   template <class Visitor>
   void visit(Visitor& v) {
-    v("search", search, "search the parts' resting poses before all their views");
+    v("search", search, "with parts_rest: search the resting poses before all the views");
     v("parts_touch_belt", parts_touch_belt, "parts lie on the belt: floating poses cannot win");
     v("parts_rest", parts_rest, "and in their stable poses: leaning ones cannot win either");
     v("max_height_error_mm", max_height_error_mm,
