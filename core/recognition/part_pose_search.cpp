@@ -225,4 +225,21 @@ std::vector<ViewPoseHypothesis> align_view_starts_in_field(
   return distinct_hypotheses(base, best, search, count);
 }
 
+std::vector<FieldHypothesis> quick_field_poses(const RegistrationPoints& scene,
+                                               const ModelBase& base, const PartSearchModel& model,
+                                               const PartPoseSearchParameters& search,
+                                               const CatalogRankParameters& parameters) {
+  const RegistrationPoints aligning = spread_subset(scene, parameters.aligned_points);
+  if (aligning.size() == 0 || model.field.empty()) return {};
+  const RegistrationPoints scoring = spread_subset(aligning, parameters.start_points);
+  std::vector<FieldHypothesis> starts =
+      turned_view_starts(aligning, base, model, search.in_plane_turns);
+  align_and_rescore(scoring, model.field, 0, search.field_truncation_mm, starts);
+  keep_best(starts, static_cast<std::size_t>(parameters.aligned));
+  align_and_rescore(aligning, model.field, parameters.iterations, search.field_truncation_mm,
+                    starts);
+  keep_best(starts, starts.size());
+  return starts;
+}
+
 }  // namespace cosmos

@@ -179,8 +179,8 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
     verify_voted_poses(analysis, points, surfaces, result);
   const std::vector<int> uncovered = rest_searched ? poorly_covered_parts_ : std::vector<int>{};
   if (!explains_scene() && (!rest_searched || !uncovered.empty())) {
-    result.catalog_searched = !rest_searched;
-    search_candidate_parts(analysis, points, surfaces, result, uncovered);
+    result.catalog_searched =
+        search_candidate_parts(analysis, points, surfaces, result, uncovered) && !rest_searched;
     best = best_candidate(result.candidates);
   }
   if (!best) return finish("no candidate view could be registered");

@@ -10,11 +10,13 @@
 //   resting       when no selected view explains the scene: every part's stable resting
 //                 poses turned about the belt's normal (resting_pose_search.hpp), searched
 //                 in the parts' distance fields;
-//   voting        when none of that explains the scene: the scene's CSMP pairs vote
-//                 for (part, pose) over the whole catalog (core/indexing/); the strongest
-//                 poses are verified like selected views, the first voted parts searched
-//                 over all their views, and only when none of that explains the scene does
-//                 the pose search run over every part;
+//   voting        (off by default) when none of that explains the scene: the scene's CSMP
+//                 pairs vote for (part, pose) over the whole catalog (core/indexing/); the
+//                 strongest poses are verified like selected views;
+//   search        when none of that explains the scene: every part's quick field fit
+//                 (part_pose_search.hpp) orders the parts, and the pose search over each
+//                 part's views goes down that order until a part explains the scene and the
+//                 next one, its rival, has been searched too;
 //   registration  initial-pose hypotheses per candidate — the patch-group pose, the principal
 //                 axes (§6.7.2) and turns about the viewing axis (scene and model views are
 //                 both seen from the scanner, so the unknown is mostly that turn) — scored by
@@ -99,6 +101,8 @@ struct RecognitionParameters {
   // cut was never registered, and its scans went to whichever searched part explained them
   // best (a joint or a pinion taken for an anchor), a wrong part rather than a rejection.
   int searched_parts = 1000;
+  // Its order: the parts' quick field fits (part_pose_search.hpp).
+  CatalogRankParameters catalog_rank;
   // The spectral order is a poor guide for the scans that need the search (in the cell, the
   // scene's part often ranks far down), the search's field stages a sharp one: a part whose best
   // field pose fits this well (mean square distance of the scene to the part,
@@ -107,6 +111,10 @@ struct RecognitionParameters {
   // best part's + search.kept_score_margin_mm2. Scenes fit their own part at 0.02-0.16 mm^2,
   // other parts at 2 mm^2 and more.
   double convincing_field_fit_mm2 = 0.5;
+  // Of the others, at most this many are registered: each costs as much as the field stages
+  // of several parts, and a part whose fit ranks below the first few has not explained a
+  // scene its better-fitting rivals did not.
+  int registered_waiting_parts = 3;
   PartPoseSearchParameters search;
   PartDistanceFieldParameters field;
   // Decision thresholds (rejection as unknown part).
@@ -156,8 +164,11 @@ struct RecognitionParameters {
     v("vote_index", vote_index, "votes for (part, pose) over the whole catalog");
     v("resting", resting, "the parts' stable poses on the belt, searched first");
     v("searched_parts", searched_parts, "parts the pose search falls back to", Range{0, 100000});
+    v("catalog_rank", catalog_rank, "the order of the search over every part");
     v("convincing_field_fit_mm2", convincing_field_fit_mm2,
       "a part whose best field pose fits this well is registered at once, mm^2", Range{0, 1e6});
+    v("registered_waiting_parts", registered_waiting_parts,
+      "of the parts that fit less well, at most this many are registered", Range{0, 100000});
     v("search", search, "the pose search over a part's views");
     v("field", field, "the parts' distance fields");
     v("min_inlier_fraction", min_inlier_fraction, "less support: rejected as unknown", Range{0, 1});
@@ -233,9 +244,10 @@ struct RecognitionResult {
   int scene_patches = 0;
   int scene_points = 0;
   int views_examined = 0;  // model views compared with the scene (selected + searched)
-  // The pose search ran over every part of the catalog (neither the selected views, the
-  // resting poses nor the vote index's poses explained the scene). For parts known to rest it
-  // runs only over the parts whose resting poses are poorly known, and this stays false.
+  // The pose search over every part (neither the selected views, the resting poses nor the
+  // vote index's poses explained the scene) ran every part's field stages: no part in the
+  // order of the quick fits explained the scene before. For parts known to rest it runs only
+  // over the parts whose resting poses are poorly known, and this stays false.
   bool catalog_searched = false;
   // The resting poses of every part were searched (the selected views explained nothing).
   bool resting_searched = false;
@@ -272,14 +284,15 @@ class Recognizer {
   RecognitionCandidate verify(const ViewAnalysis& scene, const ScenePoints& scene_points,
                               const SpectralCandidate& selected, ModelSurfaces& surfaces,
                               double& matching_ms, double& registration_ms) const;
-  // The poses the vote index proposes, one candidate per part, verified in vote order; then,
-  // unless one explains the scene, the pose search over the first voted parts' views.
+  // The poses the vote index proposes, one candidate per part, verified in vote order.
   void verify_voted_poses(const ViewAnalysis& scene, const ScenePoints& scene_points,
                           ModelSurfaces& surfaces, RecognitionResult& result) const;
   // The fallback: every view of the candidates' parts (part_pose_search.hpp), or with
-  // `resting_poses` only their resting poses (resting_pose_search.hpp).
-  // `only_parts` not empty: those parts alone, in that order.
-  void search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
+  // `resting_poses` only their resting poses (resting_pose_search.hpp). Over every part (no
+  // `only_parts`), in the order of their quick field fit (catalog_rank). `only_parts` not
+  // empty: those parts alone, in that order. True when every part's field stages ran, false
+  // when a part explained the scene before.
+  bool search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
                               ModelSurfaces& surfaces, RecognitionResult& result,
                               const std::vector<int>& only_parts = {},
                               bool resting_poses = false) const;
@@ -287,6 +300,9 @@ class Recognizer {
   // sunk into it is not the part lying there; known to rest (resting.parts_rest): nor is one
   // tilted off every resting pose of its part.
   bool at_rest(const RecognitionCandidate& candidate) const;
+  // The same for the field stages' poses, before any is registered: those whose lowest point
+  // is farther than resting.field_height_error_mm from the belt are dropped.
+  void drop_floating_poses(int part, std::vector<FieldHypothesis>& field_poses) const;
   RestingCheck check_resting(const RecognitionCandidate& candidate) const;
   // Registers from each start on its view, keeps the pose its view supports best (the
   // candidate's view becomes that one), then judges it against the part's views around it

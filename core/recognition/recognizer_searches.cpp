@@ -1,6 +1,7 @@
 // The recognizer's searches beyond the views §5.2 selects (recognizer.hpp): the poses the vote
 // index proposes, and the field-ranked pose search over a part's views or resting poses.
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "core/indexing/pose_voting.hpp"
@@ -19,13 +20,11 @@ void Recognizer::verify_voted_poses(const ViewAnalysis& scene, const ScenePoints
   const std::span<const VotedPose> voted = voter.vote(scene.view);
   result.timings.selection_ms += elapsed_ms(stage);
   std::vector<RigidTransform> starts;
-  std::vector<int> voted_parts;
   for (std::size_t first = 0; first < voted.size(); ++first) {
     const int part = voted[first].part;
     if (std::any_of(voted.begin(), voted.begin() + static_cast<std::ptrdiff_t>(first),
                     [part](const VotedPose& earlier) { return earlier.part == part; }))
       continue;
-    voted_parts.push_back(part);
     const PartSearchModel& model = part_search_model(part);
     if (model.start_views.empty()) continue;
     // The part's poses as starts on one of its views; aligning them in the part's field moves
@@ -57,25 +56,36 @@ void Recognizer::verify_voted_poses(const ViewAnalysis& scene, const ScenePoints
     result.candidates.push_back(candidate);
     ++result.views_examined;
   }
-  // A voted pose can be too far from the truth to register; the part's votes still rank it
-  // far better than the spectra do.
-  if (voted_parts.size() > static_cast<std::size_t>(parameters_.vote_index.searched_parts))
-    voted_parts.resize(static_cast<std::size_t>(parameters_.vote_index.searched_parts));
-  const RecognitionCandidate* best = best_candidate(result.candidates);
-  if (voted_parts.empty() || (best && best->inlier_fraction >= parameters_.sufficient_support))
-    return;
-  search_candidate_parts(scene, scene_points, surfaces, result, voted_parts);
 }
 
-void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
+bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
                                         ModelSurfaces& surfaces, RecognitionResult& result,
                                         const std::vector<int>& only_parts,
                                         bool resting_poses) const {
-  // Parts in the order of their closest view.
+  // Parts in the order of their closest view, or of their quick field fit.
   std::vector<int> parts = selector_.rank_parts(scene.moments);
   if (parts.size() > static_cast<std::size_t>(parameters_.searched_parts))
     parts.resize(static_cast<std::size_t>(parameters_.searched_parts));
   if (!only_parts.empty()) parts = only_parts;
+  const bool quick_ranked =
+      only_parts.empty() && !resting_poses && parameters_.catalog_rank.enabled;
+  std::vector<std::pair<double, int>> ranked;  // (quick fit, part), best first
+  if (quick_ranked) {
+    const StageClock::time_point stage = StageClock::now();
+    for (int part : parts) {
+      std::vector<FieldHypothesis> quick =
+          quick_field_poses(scene_points.all, model_base_, part_search_model(part),
+                            parameters_.search, parameters_.catalog_rank);
+      drop_floating_poses(part, quick);
+      ranked.emplace_back(quick.empty() ? std::numeric_limits<double>::infinity()
+                                        : quick.front().truncated_mean_square_mm2,
+                          part);
+    }
+    std::stable_sort(ranked.begin(), ranked.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (std::size_t k = 0; k < ranked.size(); ++k) parts[k] = ranked[k].second;
+    result.timings.selection_ms += elapsed_ms(stage);
+  }
   // Registers one part's field poses; true when one explains enough to end the search.
   auto register_part = [&](int part, const std::vector<FieldHypothesis>& field_poses) {
     StageClock::time_point stage = StageClock::now();
@@ -116,7 +126,20 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
   };
   std::vector<WaitingPart> waiting;
   double best_fit_mm2_of_all = std::numeric_limits<double>::infinity();
-  for (int part : parts) {
+  bool every_part = true;
+  // In quick order a part that explains the scene ends the search after the next part, its
+  // rival (part_ambiguity.hpp): a view that two parts explain alike is no proof of either.
+  bool explained = false;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const int part = parts[k];
+    // A part whose quick fit is hopeless beside another part's full fit (the rule below) is
+    // not searched, nor are those after it: the full stages rarely lower a fit that much.
+    if (quick_ranked &&
+        ranked[k].first > parameters_.search.worst_kept_score_mm2(best_fit_mm2_of_all)) {
+      if (explained) return false;
+      every_part = false;
+      break;
+    }
     if (!resting_poses)
       for (const ModelBaseView& view : model_base_.views)
         result.views_examined += view.part_index == part;
@@ -127,14 +150,21 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
                                       parameters_.search, parameters_.resting)
             : field_pose_hypotheses(scene_points.all, model_base_, part_search_model(part),
                                     parameters_.search);
+    if (!resting_poses) drop_floating_poses(part, field_poses);
     result.timings.registration_ms += elapsed_ms(stage);
     const double best_fit_mm2 = field_poses.empty() ? std::numeric_limits<double>::infinity()
                                                     : field_poses.front().truncated_mean_square_mm2;
     best_fit_mm2_of_all = std::min(best_fit_mm2_of_all, best_fit_mm2);
     // The resting poses' field stages are cheap: every part's are run and the parts
-    // registered in the order of their fit.
-    if (!resting_poses && best_fit_mm2 <= parameters_.convincing_field_fit_mm2) {
-      if (register_part(part, field_poses)) return;
+    // registered in the order of their fit. In quick order the first part is the scene's
+    // own nearly always, and is registered whatever its fit; so is the rival after it.
+    const bool convincing = best_fit_mm2 <= parameters_.convincing_field_fit_mm2 ||
+                            (quick_ranked && (k == 0 || explained));
+    if (!resting_poses && convincing) {
+      const bool explains = register_part(part, field_poses);
+      if (explained || (explains && (!quick_ranked || k + 1 == parts.size())))
+        return k + 1 == parts.size();
+      explained = explains;
     } else {
       waiting.push_back({part, std::move(field_poses), best_fit_mm2});
     }
@@ -143,12 +173,27 @@ void Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
     return a.best_fit_mm2 < b.best_fit_mm2;
   });
   // As among one part's poses: a part that fits many times worse than the best one cannot
-  // explain the scene as well, and is not registered.
+  // explain the scene as well, and is not registered; nor are more than
+  // registered_waiting_parts of the others.
   const double hopeless_fit_mm2 = parameters_.search.worst_kept_score_mm2(best_fit_mm2_of_all);
+  int registered = 0;
   for (const WaitingPart& part : waiting) {
-    if (part.best_fit_mm2 > hopeless_fit_mm2) break;
-    if (register_part(part.part, part.field_poses)) return;
+    if (part.best_fit_mm2 > hopeless_fit_mm2 ||
+        registered++ >= parameters_.registered_waiting_parts)
+      break;
+    if (register_part(part.part, part.field_poses)) break;
   }
+  return every_part;
+}
+
+void Recognizer::drop_floating_poses(int part, std::vector<FieldHypothesis>& field_poses) const {
+  const RestingSearchParameters& resting = parameters_.resting;
+  if (!resting.parts_touch_belt && !resting.parts_rest) return;
+  const ModelPart& model_part = model_base_.parts[static_cast<std::size_t>(part)];
+  std::erase_if(field_poses, [&](const FieldHypothesis& hypothesis) {
+    return std::abs(cosmos::check_resting(model_part, hypothesis.T_part_scene, resting)
+                        .lowest_point_mm) > resting.field_height_error_mm;
+  });
 }
 
 }  // namespace cosmos

@@ -29,6 +29,9 @@ struct RestingSearchParameters {
   // contact with the belt alone.
   bool parts_rest = false;
   double max_height_error_mm = 2.0;
+  // The same for the pose search's field poses, before registration moves them the last
+  // millimetres (part_pose_search.hpp): a floating field pose is not registered.
+  double field_height_error_mm = 6.0;
   double max_tilt_deg = 5.0;
   double min_coverage = 0.98;
   int turns = 36;  // about the vertical, per resting pose
@@ -44,6 +47,8 @@ struct RestingSearchParameters {
     v("parts_rest", parts_rest, "and in their stable poses: leaning ones cannot win either");
     v("max_height_error_mm", max_height_error_mm,
       "lowest point farther from the belt: not at rest, mm", Range{0, 1e3});
+    v("field_height_error_mm", field_height_error_mm,
+      "a field pose's lowest point farther from the belt: not registered, mm", Range{0, 1e3});
     v("max_tilt_deg", max_tilt_deg, "farther from every resting pose: not at rest, deg",
       Range{0, 180});
     v("min_coverage", min_coverage, "parts whose poses cover less: held to contact alone",

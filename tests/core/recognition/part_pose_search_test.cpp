@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <memory>
 #include <numbers>
 
@@ -53,6 +54,13 @@ class PartPoseSearch : public ::testing::Test {
     return result;
   }
 
+  static std::vector<PartSearchModel> search_models(const RecognitionParameters& parameters) {
+    std::vector<PartSearchModel> models;
+    for (int part = 0; part < static_cast<int>(base_->parts.size()); ++part)
+      models.push_back(build_part_search_model(*base_, part, parameters.field));
+    return models;
+  }
+
   static inline std::unique_ptr<ModelBase> base_;
   static inline std::unique_ptr<PartCatalog> catalog_;
 };
@@ -61,9 +69,7 @@ TEST_F(PartPoseSearch, FindsTheTruePoseOfRandomPoseScansAndOtherPartsFitWorse) {
   const RecognitionParameters parameters;
   const int parts = static_cast<int>(base_->parts.size());
   ASSERT_EQ(parts, 5);
-  std::vector<PartSearchModel> models;
-  for (int part = 0; part < parts; ++part)
-    models.push_back(build_part_search_model(*base_, part, parameters.field));
+  const std::vector<PartSearchModel> models = search_models(parameters);
   ModelSurfaces surfaces(*base_, ModelSurfaceCacheParameters{});
   for (std::uint64_t seed = 101; seed < 111; ++seed) {
     const int part = static_cast<int>(seed % parts);
@@ -121,9 +127,7 @@ TEST_F(PartPoseSearch, FindsTheTruePoseOfRandomPoseScansAndOtherPartsFitWorse) {
 TEST_F(PartPoseSearch, FieldStagesAloneTellTheScansPartFromTheOthers) {
   const RecognitionParameters parameters;
   const int parts = static_cast<int>(base_->parts.size());
-  std::vector<PartSearchModel> models;
-  for (int part = 0; part < parts; ++part)
-    models.push_back(build_part_search_model(*base_, part, parameters.field));
+  const std::vector<PartSearchModel> models = search_models(parameters);
   int ranked_first = 0, convincing = 0, others_hopeless = 0;
   for (std::uint64_t seed = 101; seed < 111; ++seed) {
     const int part = static_cast<int>(seed % parts);
@@ -151,6 +155,52 @@ TEST_F(PartPoseSearch, FieldStagesAloneTellTheScansPartFromTheOthers) {
   EXPECT_EQ(ranked_first, 10);
   EXPECT_EQ(convincing, 10);
   EXPECT_EQ(others_hopeless, 10);
+}
+
+// The quick stage (CatalogRankParameters) orders the search over every part: on the same
+// scans it puts the scan's own part first or second, its poses best first and no more than it
+// aligns. The regression base has a quarter of the cell's views, so its start views lie twice
+// as far apart and the quick stage's few alignment steps reach the true pose less often than
+// on the cell's base; a scan whose part ranks second costs one more part's search, not its
+// identification.
+TEST_F(PartPoseSearch, QuickFitPutsTheScansOwnPartFirst) {
+  const RecognitionParameters parameters;
+  const int parts = static_cast<int>(base_->parts.size());
+  const std::vector<PartSearchModel> models = search_models(parameters);
+  int ranked_first = 0, ranked_second = 0;
+  for (std::uint64_t seed = 101; seed < 111; ++seed) {
+    const int part = static_cast<int>(seed % parts);
+    const Scan scene = scan(part, seed);
+    std::vector<double> quick_fit_mm2;
+    for (int candidate = 0; candidate < parts; ++candidate) {
+      const std::vector<FieldHypothesis> poses =
+          quick_field_poses(scene.points, *base_, models[static_cast<std::size_t>(candidate)],
+                            parameters.search, parameters.catalog_rank);
+      ASSERT_FALSE(poses.empty()) << seed;
+      ASSERT_LE(poses.size(), static_cast<std::size_t>(parameters.catalog_rank.aligned));
+      for (std::size_t k = 1; k < poses.size(); ++k)
+        EXPECT_LE(poses[k - 1].truncated_mean_square_mm2, poses[k].truncated_mean_square_mm2);
+      quick_fit_mm2.push_back(poses.front().truncated_mean_square_mm2);
+    }
+    const double own = quick_fit_mm2[static_cast<std::size_t>(part)];
+    int better = 0;
+    for (int other = 0; other < parts; ++other)
+      better += other != part && quick_fit_mm2[static_cast<std::size_t>(other)] <= own;
+    std::printf("seed %d part %d: quick fit %.3f mm^2, %d parts fit better\n",
+                static_cast<int>(seed), part, own, better);
+    ranked_first += better == 0;
+    ranked_second += better <= 1;
+  }
+  EXPECT_GE(ranked_first, 7);
+  EXPECT_GE(ranked_second, 9);
+}
+
+TEST_F(PartPoseSearch, QuickFitOfAnEmptySceneHasNoPoses) {
+  const RecognitionParameters parameters;
+  const PartSearchModel model = build_part_search_model(*base_, 0, parameters.field);
+  EXPECT_TRUE(quick_field_poses(RegistrationPoints{}, *base_, model, parameters.search,
+                                parameters.catalog_rank)
+                  .empty());
 }
 
 // Verification's starts (turns about one selected view's axis) from a view about 30 degrees

@@ -159,6 +159,7 @@ TEST_F(RecognizerOnRegressionBase, ReportsItsBestCandidatesPoseAndRepeatsItself)
 // scene's CSMP pairs voted for.
 TEST_F(RecognizerOnRegressionBase, TheVoteIndexFindsThePartAndPoseWithoutSearchingEveryPart) {
   RecognitionParameters parameters;
+  parameters.vote_index.enabled = true;  // off by default
   parameters.searched_parts = 0;
   parameters.selection.best_clusters = 1;
   parameters.selection.best_views = 1;
