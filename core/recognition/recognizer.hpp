@@ -95,13 +95,14 @@ struct RecognitionParameters {
   VoteIndexParameters vote_index;
   // Before them, the parts' resting poses; and whether a part must rest to be recognized.
   RestingSearchParameters resting;
-  // When none of them reaches it either: the pose search over every view of
-  // up to `searched_parts` parts (SpectralViewSelector::rank_parts, closest single view
-  // first), until one reaches it. Every part of any base: a part the spectra rank below the
-  // cut was never registered, and its scans went to whichever searched part explained them
-  // best (a joint or a pinion taken for an anchor), a wrong part rather than a rejection.
+  // When none of them reaches it either: the pose search over every view of up to
+  // `searched_parts` parts (the first by SpectralViewSelector::rank_parts), until one reaches
+  // it. Every part of any base: a part the spectra rank below the cut was never registered,
+  // and its scans went to whichever searched part explained them best (a joint or a pinion
+  // taken for an anchor), a wrong part rather than a rejection.
   int searched_parts = 1000;
-  // Its order: the parts' quick field fits (part_pose_search.hpp).
+  // Its order: the parts' quick field fits (part_pose_search.hpp); with it off, the spectral
+  // order.
   CatalogRankParameters catalog_rank;
   // The spectral order is a poor guide for the scans that need the search (in the cell, the
   // scene's part often ranks far down), the search's field stages a sharp one: a part whose best
