@@ -173,13 +173,13 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
     return a.best_fit_mm2 < b.best_fit_mm2;
   });
   // As among one part's poses: a part that fits many times worse than the best one cannot
-  // explain the scene as well, and is not registered; nor are more than
-  // registered_waiting_parts of the others.
+  // explain the scene as well, and is not registered; nor, past the resting poses' search,
+  // are more than registered_waiting_parts of the others.
   const double hopeless_fit_mm2 = parameters_.search.worst_kept_score_mm2(best_fit_mm2_of_all);
   int registered = 0;
   for (const WaitingPart& part : waiting) {
     if (part.best_fit_mm2 > hopeless_fit_mm2 ||
-        registered++ >= parameters_.registered_waiting_parts)
+        (!resting_poses && registered++ >= parameters_.registered_waiting_parts))
       break;
     if (register_part(part.part, part.field_poses)) break;
   }
