@@ -5,6 +5,8 @@
 # build-fuzz/fuzz/crashes/<harness>/. Each harness's corpus grows in build-fuzz/fuzz/corpus/.
 # Prints per harness: executions, coverage (libFuzzer's cov: edges), corpus size.
 # The mutations follow COSMOS_FUZZ_SEED (default 1), so a finding can be reproduced by rerunning.
+# COSMOS_FUZZ_RUNS=N also ends each harness after N executions (whichever comes first, N or
+# SECONDS), so a long run for a number of executions frees its core as soon as it has them.
 #   scripts/fuzz.sh [SECONDS] [HARNESS...]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -41,6 +43,7 @@ fuzz_one() {  # HARNESS
   case $1 in cell_config | hardware_config | part_catalog) max_len=24576 ;; esac
   local rc=0
   "$build_dir/fuzz/fuzz_$1" "$corpus" -max_total_time="$seconds" -seed="${COSMOS_FUZZ_SEED:-1}" \
+    -runs="${COSMOS_FUZZ_RUNS:--1}" \
     -max_len="$max_len" -timeout=10 \
     -rss_limit_mb=2048 -artifact_prefix="$crashes/" -print_final_stats=1 > "$log" 2>&1 || rc=$?
   echo "$rc" > "$log.status"

@@ -1,6 +1,7 @@
 #include "core/recognition/part_pose_search.hpp"
 
 #include <algorithm>
+#include <initializer_list>
 
 #include "core/modelbase/model_surface.hpp"
 #include "core/recognition/pose_hypotheses.hpp"
@@ -8,26 +9,32 @@
 namespace cosmos {
 namespace {
 
-// Best first; ties keep generation order (views in base order, turns by angle).
-void keep_best(std::vector<FieldHypothesis>& hypotheses, std::size_t count) {
-  std::stable_sort(hypotheses.begin(), hypotheses.end(),
-                   [](const FieldHypothesis& a, const FieldHypothesis& b) {
-                     return a.truncated_mean_square_mm2 < b.truncated_mean_square_mm2;
-                   });
-  if (hypotheses.size() > count) hypotheses.resize(count);
-}
+// One stage of the field search: every hypothesis `iterations` alignment steps in the field
+// (none: scored as it is) on `points`, then the best `keep` of them.
+struct FieldStage {
+  const RegistrationPoints& points;
+  int iterations = 0;
+  std::size_t keep = 0;
+};
 
-// Every hypothesis `iterations` alignment steps in the field (none: as it is), then its score
-// on `points`.
-void align_and_rescore(const RegistrationPoints& points, const PartDistanceField& field,
-                       int iterations, double truncation_mm,
-                       std::vector<FieldHypothesis>& hypotheses) {
-  for (FieldHypothesis& hypothesis : hypotheses) {
-    if (iterations > 0)
-      hypothesis.T_part_scene = align_in_distance_field(points, field, hypothesis.T_part_scene,
-                                                        iterations, truncation_mm);
-    hypothesis.truncated_mean_square_mm2 =
-        field_truncated_mean_square_mm2(points, field, hypothesis.T_part_scene, truncation_mm);
+// The stages in turn (each on fewer hypotheses, most of them on more points): best first at the
+// end; ties keep generation order (views in base order, turns by angle).
+void run_field_stages(const PartDistanceField& field, double truncation_mm,
+                      std::initializer_list<FieldStage> stages,
+                      std::vector<FieldHypothesis>& hypotheses) {
+  for (const FieldStage& stage : stages) {
+    for (FieldHypothesis& hypothesis : hypotheses) {
+      if (stage.iterations > 0)
+        hypothesis.T_part_scene = align_in_distance_field(
+            stage.points, field, hypothesis.T_part_scene, stage.iterations, truncation_mm);
+      hypothesis.truncated_mean_square_mm2 = field_truncated_mean_square_mm2(
+          stage.points, field, hypothesis.T_part_scene, truncation_mm);
+    }
+    std::stable_sort(hypotheses.begin(), hypotheses.end(),
+                     [](const FieldHypothesis& a, const FieldHypothesis& b) {
+                       return a.truncated_mean_square_mm2 < b.truncated_mean_square_mm2;
+                     });
+    if (hypotheses.size() > stage.keep) hypotheses.resize(stage.keep);
   }
 }
 
@@ -127,18 +134,17 @@ std::vector<FieldHypothesis> rank_field_starts(const RegistrationPoints& scene,
                                                const PartPoseSearchParameters& parameters) {
   const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
   if (scoring.size() == 0 || field.empty()) return {};
-  const double truncation_mm = parameters.field_truncation_mm;
   // The first stages on a sparser subset still: most starts are far off, and which few
   // hundred are not shows on fewer points.
   const RegistrationPoints sparse = spread_subset(scoring, parameters.start_scoring_points);
   // Against the whole part, in stages: every start as it is, the best after one alignment
   // step, the best of those after a few more.
-  align_and_rescore(sparse, field, 0, truncation_mm, starts);
-  keep_best(starts, static_cast<std::size_t>(parameters.field_candidates));
-  align_and_rescore(sparse, field, 1, truncation_mm, starts);
-  keep_best(starts, static_cast<std::size_t>(parameters.field_aligned));
-  align_and_rescore(scoring, field, parameters.field_iterations, truncation_mm, starts);
-  keep_best(starts, static_cast<std::size_t>(parameters.refined_hypotheses));
+  run_field_stages(field, parameters.field_truncation_mm,
+                   {{sparse, 0, static_cast<std::size_t>(parameters.field_candidates)},
+                    {sparse, 1, static_cast<std::size_t>(parameters.field_aligned)},
+                    {scoring, parameters.field_iterations,
+                     static_cast<std::size_t>(parameters.refined_hypotheses)}},
+                   starts);
   return starts;
 }
 
@@ -207,14 +213,13 @@ std::vector<ViewPoseHypothesis> align_view_starts_in_field(
   if (scoring.size() == 0 || model.field.empty() || starts.empty()) return best;
   const ModelBaseView& start_view = base.views[static_cast<std::size_t>(view)];
   const RigidTransform T_part_view = start_view.T_scanner_part.inverse();
-  const double truncation_mm = parameters.field_truncation_mm;
   std::vector<FieldHypothesis> hypotheses;
   for (const RigidTransform& T_model_scene : starts)
     hypotheses.push_back({T_part_view * T_model_scene, 0.0});
-  align_and_rescore(scoring, model.field, 0, truncation_mm, hypotheses);
-  keep_best(hypotheses, static_cast<std::size_t>(parameters.aligned_starts));
-  align_and_rescore(scoring, model.field, parameters.field_iterations, truncation_mm, hypotheses);
-  keep_best(hypotheses, hypotheses.size());
+  run_field_stages(model.field, parameters.field_truncation_mm,
+                   {{scoring, 0, static_cast<std::size_t>(parameters.aligned_starts)},
+                    {scoring, parameters.field_iterations, hypotheses.size()}},
+                   hypotheses);
   for (const FieldHypothesis& hypothesis : hypotheses) {
     const int nearest = nearest_view(base, start_view.part_index, hypothesis.T_part_scene);
     best.push_back(
@@ -234,11 +239,10 @@ std::vector<FieldHypothesis> quick_field_poses(const RegistrationPoints& scene,
   const RegistrationPoints scoring = spread_subset(aligning, parameters.start_points);
   std::vector<FieldHypothesis> starts =
       turned_view_starts(aligning, base, model, search.in_plane_turns);
-  align_and_rescore(scoring, model.field, 0, search.field_truncation_mm, starts);
-  keep_best(starts, static_cast<std::size_t>(parameters.aligned));
-  align_and_rescore(aligning, model.field, parameters.iterations, search.field_truncation_mm,
-                    starts);
-  keep_best(starts, starts.size());
+  run_field_stages(model.field, search.field_truncation_mm,
+                   {{scoring, 0, static_cast<std::size_t>(parameters.aligned)},
+                    {aligning, parameters.iterations, starts.size()}},
+                   starts);
   return starts;
 }
 
