@@ -10,7 +10,8 @@
 //                            links) and one row per test.
 //   tests.json               one object per test, for scripts (bench/catalog_scaling.sh):
 //                            test, truth, truth_in_model_base, predicted (null when
-//                            rejected), status (record_status_name), reason, recognition_ms,
+//                            rejected), status (record_status_name), reason, recognition_ms
+//                            and its features_ms, matching_ms and registration_ms,
 //                            pose_searched, catalog_searched, resting_searched,
 //                            truth_has_size_variants, taken_for_size_variant,
 //                            add_s_over_diameter (null where it does not apply).

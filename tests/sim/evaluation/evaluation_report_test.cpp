@@ -47,6 +47,8 @@ EvaluationRecord record(int truth, int predicted, int cluster_rank, double rotat
           .toRotationMatrix();
   r.t_estimated_mm = {0.5, 0, 0};
   r.recognition_ms = 20 + rotation_error_deg;
+  r.features_ms = 12;
+  r.registration_ms = 6 + rotation_error_deg;
   return r;
 }
 
@@ -98,6 +100,8 @@ TEST_F(EvaluationReport, WritesSixReadableFiles) {
   EXPECT_EQ(tests[0]["status"], "correct");
   EXPECT_EQ(tests[0]["predicted"], kPartNames[0]);
   EXPECT_DOUBLE_EQ(tests[0]["recognition_ms"].get<double>(), 21.5);
+  EXPECT_DOUBLE_EQ(tests[0]["features_ms"].get<double>(), 12);
+  EXPECT_DOUBLE_EQ(tests[0]["registration_ms"].get<double>(), 7.5);
   EXPECT_EQ(tests[3]["status"], "misidentified");
   EXPECT_TRUE(tests[3]["add_s_over_diameter"].is_null());
   EXPECT_TRUE(tests[5]["predicted"].is_null());
