@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <initializer_list>
+#include <limits>
 
 #include "core/modelbase/model_surface.hpp"
 #include "core/recognition/pose_hypotheses.hpp"
@@ -10,7 +11,8 @@ namespace cosmos {
 namespace {
 
 // One stage of the field search: every hypothesis `iterations` alignment steps in the field
-// (none: scored as it is) on `points`, then the best `keep` of them.
+// (none: scored as it is) on `points`, then the best `keep` of them (kKeepAll: all, sorted).
+constexpr std::size_t kKeepAll = std::numeric_limits<std::size_t>::max();
 struct FieldStage {
   const RegistrationPoints& points;
   int iterations = 0;
@@ -218,7 +220,7 @@ std::vector<ViewPoseHypothesis> align_view_starts_in_field(
     hypotheses.push_back({T_part_view * T_model_scene, 0.0});
   run_field_stages(model.field, parameters.field_truncation_mm,
                    {{scoring, 0, static_cast<std::size_t>(parameters.aligned_starts)},
-                    {scoring, parameters.field_iterations, hypotheses.size()}},
+                    {scoring, parameters.field_iterations, kKeepAll}},
                    hypotheses);
   for (const FieldHypothesis& hypothesis : hypotheses) {
     const int nearest = nearest_view(base, start_view.part_index, hypothesis.T_part_scene);
@@ -241,7 +243,7 @@ std::vector<FieldHypothesis> quick_field_poses(const RegistrationPoints& scene,
       turned_view_starts(aligning, base, model, search.in_plane_turns);
   run_field_stages(model.field, search.field_truncation_mm,
                    {{scoring, 0, static_cast<std::size_t>(parameters.aligned)},
-                    {aligning, parameters.iterations, starts.size()}},
+                    {aligning, parameters.iterations, kKeepAll}},
                    starts);
   return starts;
 }

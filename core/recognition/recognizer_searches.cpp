@@ -178,9 +178,9 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
   const double hopeless_fit_mm2 = parameters_.search.worst_kept_score_mm2(best_fit_mm2_of_all);
   int registered = 0;
   for (const WaitingPart& part : waiting) {
-    if (part.best_fit_mm2 > hopeless_fit_mm2 ||
-        (!resting_poses && registered++ >= parameters_.registered_waiting_parts))
-      break;
+    if (part.best_fit_mm2 > hopeless_fit_mm2) break;
+    if (!resting_poses && registered >= parameters_.registered_waiting_parts) break;
+    ++registered;
     if (register_part(part.part, part.field_poses)) break;
   }
   return every_part;
