@@ -290,9 +290,12 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
   SharedStatus shared;
   SpscRing<CompletedPose> poses(
       static_cast<std::size_t>(std::max(settings.threads.pose_queue_slots, 1)));
-  SpscRing<Profile> recorded(
-      static_cast<std::size_t>(std::max(settings.threads.profile_ring_slots, 1)),
-      [&source](Profile& slot) { source.reserve(slot); });
+  // Only a cell that publishes its profiles queues them: otherwise the ring's slots, each a
+  // whole profile reserved up front, would be resident memory nothing ever reads.
+  const int recorded_slots =
+      settings.publishing.publish_profiles ? std::max(settings.threads.profile_ring_slots, 1) : 1;
+  SpscRing<Profile> recorded(static_cast<std::size_t>(recorded_slots),
+                             [&source](Profile& slot) { source.reserve(slot); });
   std::thread recognizer(run_recognizer, std::ref(loop), std::cref(recognition), std::ref(poses),
                          std::ref(shared), std::cref(settings));
   std::thread publishing(run_publisher, std::ref(loop), std::ref(publisher), std::ref(poses),

@@ -44,7 +44,9 @@ struct CellThreadSettings {
   template <class Visitor>
   void visit(Visitor& v) {
     v.fields(thread);
-    v("profile_ring_slots", profile_ring_slots, "recorded profiles queued for publishing",
+    v("profile_ring_slots", profile_ring_slots,
+      "recorded profiles queued for publishing (only with lcm.publish_profiles; each a "
+      "whole profile, 2.6 kB at 640 points)",
       Range{1, 1 << 20});
     v("pose_queue_slots", pose_queue_slots, "poses queued for the publisher", Range{1, 4096});
     v("recognizer_threads", recognizer_threads,

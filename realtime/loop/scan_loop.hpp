@@ -113,8 +113,11 @@ struct PartQueueSettings {
   // The row pool shared by the builders: row_blocks blocks of row_block_rows full-width rows
   // each (a row takes 67 bytes per column between its first and last sample). A part holds
   // the blocks its rows fill until the recognizer is done with it; a part whose next row
-  // finds no block left is dropped and counted like one that finds no builder.
-  int row_blocks = 96;
+  // finds no block left is dropped and counted like one that finds no builder. The default
+  // is about three times the most blocks a dense belt (parts 30 mm apart) and an overloaded
+  // hour-long soak held at once: the pool is resident from the start, so each block more is
+  // memory the cell holds whatever the belt carries.
+  int row_blocks = 48;
   int row_block_rows = 16;
   // A part is recognized in the rows after its end, while the tracker waits out
   // link_gap_rows before it completes it (speculative recognition): once nothing can join it
