@@ -70,8 +70,9 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
   };
   PieceJoiner joiner(context);
   // Per builder: where its blob's recognition stands. A part the loop sent ahead of its
-  // completion (speculative) is recognized from a copy of what the loop knew of it then; at
-  // completion that result holds if the part is still the same, else it is recognized again.
+  // completion (speculative) is recognized from a copy of what the loop knew of it then, its
+  // builder's pipeline finished by the worker; at completion that result holds if the part is
+  // still the same, else it is recognized again.
   enum class Stage : std::uint8_t {
     kNone,
     kAheadQueued,
@@ -94,8 +95,11 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
       [&](int job) {
         if (settings.recognizer_delay_ms > 0)
           std::this_thread::sleep_for(std::chrono::milliseconds(settings.recognizer_delay_ms));
-        if (job >= kAhead)
+        if (job >= kAhead) {
+          // The loop left the builder's pipeline to this worker (ScanLoop::speculate).
+          loop.builder(job - kAhead).cosmos.finish();
           return recognize_blob(ahead[static_cast<std::size_t>(job - kAhead)], context, 0);
+        }
         return recognize_blob(loop.builder(job), context, 0);
       },
       status.recognizer_wake);

@@ -165,7 +165,7 @@ std::vector<JoinedRecognition> PieceJoiner::add(BlobRecognition blob, const Part
   Piece current;
   current.points_loop_mm = std::move(blob.points_loop_mm);
   current.first_profile = builder.first_profile;
-  current.last_profile = builder.first_profile + builder.cosmos.rows() - 1;
+  current.last_profile = builder.first_profile + builder.rows_added - 1;
   current.recognized = any_recognized;
   current.parts = parts;
   bool drop_current = false;

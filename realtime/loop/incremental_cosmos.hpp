@@ -47,6 +47,11 @@ class IncrementalCosmos {
   void release_rows() { rows_store_.clear(); }
 
   int rows() const { return rows_; }
+  int max_rows() const { return max_rows_; }
+  // Rows below a pixel that its fit may read: a whole window, since a crease window is
+  // shifted by up to half of one (local_surface_fit.hpp). A row is fitted only once they
+  // have arrived, so it never reads a row of an earlier part.
+  int fit_reach_rows() const { return 2 * (parameters_.fit.window_size / 2); }
   // Rows whose COSMOS is final, [0, final_rows()): stored, and never written again.
   int final_rows() const { return classified_rows_; }
   int width() const { return width_; }
@@ -72,10 +77,6 @@ class IncrementalCosmos {
   static int fit_window_rows(const CosmosParameters& parameters);
 
  private:
-  // Rows below a pixel that its fit may read: a whole window, since a crease window is
-  // shifted by up to half of one (local_surface_fit.hpp). A row is fitted only once they
-  // have arrived, so it never reads a row of an earlier part.
-  int fit_reach_rows() const { return 2 * (parameters_.fit.window_size / 2); }
   // The window row of part row `row`.
   int in_window(int row) const { return row - window_first_row_; }
   void make_room_in_window();

@@ -212,7 +212,7 @@ void ScanLoop::complete(const TrackedPart& part) {
   while (!completed_.try_push(index)) {
     if (!settings_.wait_for_recognizer) {
       report_lost({LostPartReason::kQueueFull, builder.first_profile,
-                   builder.first_profile + builder.cosmos.rows() - 1, builder.first_encoder_ticks,
+                   builder.first_profile + builder.rows_added - 1, builder.first_encoder_ticks,
                    builder.last_data_encoder_ticks, builder.last_data_t_us, builder.column_min,
                    builder.column_max, part.max_z_mm});
       free_builder(index);
@@ -246,22 +246,35 @@ void ScanLoop::speculate() {
     const auto part = std::find_if(open.begin(), open.end(), [&builder](const TrackedPart& p) {
       return p.id == builder.part_id;
     });
-    // Only a part that no run can join outright any more, that is no speck, whose last row
-    // with data is final in its builder, and that shares no row with another open part (which
-    // could still merge with it when either completes, part_tracker.hpp).
+    // Only a part that no run can join outright any more, that is no speck, and that shares
+    // no row with another open part (which could still merge with it when either completes,
+    // part_tracker.hpp).
+    const int reach = builder.cosmos.fit_reach_rows();
     if (part == open.end() ||
-        row_index_ - part->last_row <= settings_.tracking.hard_link_gap_rows + 1 ||
-        part->pixels < settings_.tracking.min_pixels ||
-        builder.cosmos.final_rows() <= part->last_row - builder.first_row)
+        row_index_ - part->last_row <= std::max(settings_.tracking.hard_link_gap_rows + 1, reach) ||
+        part->pixels < settings_.tracking.min_pixels)
       continue;
     const bool beside_another =
         std::any_of(open.begin(), open.end(), [&part](const TrackedPart& p) {
           return p.id != part->id && p.first_row <= part->last_row + 1;
         });
     if (beside_another) continue;
+    // Its pipeline is then finished as the end of an image would finish it: the rows below
+    // blank. No row within the fit's reach below its last with data may hold a sample (of a
+    // part that starts there), for then the fits of its last rows would have read it. Further
+    // down no fit of its rows reads, and the blank rows in between hold no valid fit, so
+    // neither the links nor the smoothing carry anything up across them.
+    const int after_last = static_cast<int>(part->last_row + 1 - builder.first_row);
+    bool blank_below = true;
+    for (int r = after_last; r < after_last + reach && blank_below; ++r) {
+      const PartRow row = builder.cosmos.row(r);
+      blank_below = row.column_end == row.column_begin;
+    }
+    if (!blank_below) continue;
     describe(builder, *part);
     if (!speculative_.try_push(SpeculativePart{index, builder.built()})) continue;
     speculation_sent_[k] = speculation_running_[k] = 1;
+    builder.frozen = true;
   }
 }
 
@@ -286,6 +299,8 @@ void ScanLoop::start_parts(const RowStamp& stamp) {
     builder.first_profile = stamp.profile;
     builder.first_row = row_index_;
     speculation_sent_[static_cast<std::size_t>(index)] = 0;
+    builder.frozen = false;
+    builder.rows_added = 0;
     builder.last_data_profile = stamp.profile;
     builder.last_profile = stamp.profile;
     builder.first_encoder_ticks = stamp.encoder_ticks;
@@ -297,6 +312,17 @@ void ScanLoop::start_parts(const RowStamp& stamp) {
 
 bool ScanLoop::add_row_to(int index, const RowStamp& stamp) {
   PartBuilder& builder = *builders_[static_cast<std::size_t>(index)];
+  if (builder.frozen) {
+    // A recognizer worker may be finishing its pipeline: the row (blank for it, speculate())
+    // is counted as the pipeline would have taken it, up to its max_rows.
+    if (builder.rows_added >= builder.cosmos.max_rows()) {
+      builder.truncated = true;
+      return true;
+    }
+    ++builder.rows_added;
+    builder.last_profile = stamp.profile;
+    return true;
+  }
   AddRowResult added = builder.cosmos.add_row(row_loop_.data());
   // Unpaced, the blocks of the parts at the recognizer are waited for (as builders are): what
   // is lost must not depend on how fast the recognizer was.
@@ -324,6 +350,7 @@ bool ScanLoop::add_row_to(int index, const RowStamp& stamp) {
     free_builder(index);
     return false;
   }
+  builder.rows_added = builder.cosmos.rows();
   const PartRow row = builder.cosmos.row(builder.cosmos.rows() - 1);
   const std::vector<std::int64_t>& labels = tracker_.row_labels();
   const int last_column = width() - 1;

@@ -93,6 +93,12 @@ struct PartBuilder {
   std::int64_t tracked_rows = 0;  // rows from its first to its last data (all, when truncated)
   bool truncated = false;         // longer than max_rows: rows dropped
   std::int64_t completed_ns = 0;  // monotonic clock when the tracker completed it
+  // Rows given to it, up to its builder's max_rows: cosmos.rows(), and the rows counted
+  // after it was frozen.
+  int rows_added = 0;
+  // Sent ahead of its completion (ScanLoop::speculate): its pipeline is the recognizer
+  // worker's to finish, and the rows after it are only counted (they are empty for it).
+  bool frozen = false;
 
   bool owns(std::int64_t id) const;
   // What recognition reads of it: its rows up to its last with data, its extent and stamps.
@@ -121,9 +127,11 @@ struct PartQueueSettings {
   int row_block_rows = 16;
   // A part is recognized in the rows after its end, while the tracker waits out
   // link_gap_rows before it completes it (speculative recognition): once nothing can join it
-  // outright and no other part beside it could merge with it, its final rows go to a
-  // recognizer worker. At completion the result is used when the part is still the same
-  // (else it is recognized again), so the poses are the same either way, only earlier.
+  // outright, no other part beside it could merge with it and the rows within the fit's
+  // reach after its end are empty, its builder goes to a recognizer worker, which finishes
+  // its pipeline as the end of the image would. At completion the result is used when the
+  // part is still the same (else it is recognized again), so the poses are the same either
+  // way, only earlier.
   bool speculative_recognition = true;
   // Parts lost for want of a builder or queue slot, queued for their ERROR poses: fixed
   // capacity (the hot path never allocates); beyond it a loss is only counted.
@@ -169,7 +177,9 @@ struct ScanLoopSettings {
 };
 
 // A part handed to the recognizer before the tracker completed it (speculative recognition):
-// its builder, still the acquisition thread's, and what recognition reads of it.
+// its builder, whose pipeline the worker finishes (IncrementalCosmos::finish) before it
+// reads the rows, and what recognition reads of it. The acquisition thread no longer touches
+// that pipeline; it only counts the builder's rows until the tracker completes the part.
 struct SpeculativePart {
   int builder = -1;
   BuiltPart built;
