@@ -69,6 +69,7 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
     status.publisher_wake.notify();
   };
   PieceJoiner joiner(context);
+  int blobs_since_trim = 0;
   // Per builder: where its blob's recognition stands. A part the loop sent ahead of its
   // completion (speculative) is recognized from a copy of what the loop knew of it then, its
   // builder's pipeline finished by the worker; at completion that result holds if the part is
@@ -177,7 +178,10 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
       std::vector<JoinedRecognition> ready = joiner.add(std::move(blob), loop.builder(done));
       loop.returned().try_push(done);  // room for every builder: never full
       for (JoinedRecognition& joined : ready) publish(std::move(joined));
-      return_free_heap_pages();
+      if (++blobs_since_trim >= settings.threads.heap_trim_blobs) {
+        return_free_heap_pages();
+        blobs_since_trim = 0;
+      }
       progressed = true;
     }
     if (progressed) continue;

@@ -40,6 +40,12 @@ struct CellThreadSettings {
   // fraction of a core, so on two cores a second worker uses what it leaves; each worker in
   // use adds its recognition's working memory to the cell's peak.
   int recognizer_threads = 2;
+  // Blobs recognized between two trims of the heap (heap_policy.hpp). A trim gives the free
+  // pages of the recognitions back to the system, and the next recognition faults its working
+  // memory in anew, page by page: trimming after every blob keeps the memory flattest but puts
+  // those faults on every part's latency path. Between trims the pages of the largest recent
+  // recognitions stay resident (tens of MB).
+  int heap_trim_blobs = 16;
 
   template <class Visitor>
   void visit(Visitor& v) {
@@ -53,6 +59,10 @@ struct CellThreadSettings {
       "blobs recognized at once, each on its own thread; poses are published in the order "
       "the parts completed whatever the count",
       Range{1, 64});
+    v("heap_trim_blobs", heap_trim_blobs,
+      "blobs recognized between two trims of the heap's free pages (1: after each; more "
+      "keeps recent recognitions' pages, tens of MB, and spares the next ones their faults)",
+      Range{1, 1 << 20});
   }
 };
 
