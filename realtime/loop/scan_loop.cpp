@@ -204,6 +204,10 @@ void ScanLoop::complete(const TrackedPart& part) {
   }
   PartBuilder& builder = *builders_[static_cast<std::size_t>(index)];
   describe(builder, part);
+  // A frozen part cannot take data again (speculate()); should it, the rows its pipeline did
+  // not take are reported as a truncated part's unscanned rest, not lost.
+  if (builder.frozen && builder.last_data_row - builder.first_row >= builder.cosmos.rows())
+    builder.truncated = true;
   builder.soft_link_of = part.soft_link_of;
   builder.has_soft_successor = part.has_soft_successor;
   builder.completed_ns = monotonic_now_ns();
