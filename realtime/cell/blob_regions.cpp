@@ -7,7 +7,7 @@
 
 namespace cosmos {
 
-Remaining remaining_of(const RangeImage& image) {
+Remaining remaining_of(const RangeImage& image, const std::vector<std::uint8_t>* excluded) {
   Remaining out;
   const int width = image.width();
   const int height = image.height();
@@ -16,8 +16,9 @@ Remaining remaining_of(const RangeImage& image) {
   for (int row = 0; row < height; ++row) {
     for (int column = 0; column < width; ++column) {
       const float z = image.z_mm(column, row);
-      if (std::isnan(z)) continue;
-      out.mask[static_cast<std::size_t>(row) * width + column] = 1;
+      const std::size_t pixel = static_cast<std::size_t>(row) * width + column;
+      if (std::isnan(z) || (excluded && (*excluded)[pixel])) continue;
+      out.mask[pixel] = 1;
       ++out.pixels;
       out.centroid_mm += Eigen::Vector3d(image.x_mm(column), image.y_mm(row), z);
       out.first_row = std::min(out.first_row, row);

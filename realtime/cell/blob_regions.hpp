@@ -20,7 +20,10 @@ struct Remaining {
   int first_row = 0;
   int last_row = -1;
 };
-Remaining remaining_of(const RangeImage& image);
+// With `excluded` (one flag per pixel), only the pixels it does not flag: what remains of the
+// image once those are taken away, without a new image.
+Remaining remaining_of(const RangeImage& image,
+                       const std::vector<std::uint8_t>* excluded = nullptr);
 
 // The image's surface in its frame, every other pixel each way.
 std::vector<Eigen::Vector3d> sampled_points(const RangeImage& image);

@@ -1,9 +1,10 @@
 // What the scene loop measures of a blob's region: its pixels, interior area, centroid and
-// rows; the necks where touching parts meet.
+// rows, also with pixels taken away by a mask; the necks where touching parts meet.
 #include "realtime/cell/blob_regions.hpp"
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <vector>
 
 namespace cosmos {
@@ -38,6 +39,29 @@ TEST(BlobRegions, RemainingCountsPixelsInteriorCentroidAndRows) {
   EXPECT_EQ(remaining.first_row, 2);
   EXPECT_EQ(remaining.last_row, 5);
   EXPECT_EQ(sampled_points(image).size(), 2u * 3u);  // rows 2, 4; columns 4, 6, 8
+}
+
+TEST(BlobRegions, RemainingWithoutExcludedPixelsIsThatOfTheImageWithoutThem) {
+  RangeImage image(20, 10, 0.5, 0.5);
+  for (int row = 2; row < 8; ++row)
+    for (int column = 4; column < 12; ++column) image.z_mm(column, row) = 3.0f;
+  // The left half of the block taken away, by a mask or from the image itself.
+  std::vector<std::uint8_t> excluded(20 * 10, 0);
+  RangeImage without = image;
+  for (int row = 0; row < 10; ++row)
+    for (int column = 0; column < 8; ++column) {
+      excluded[static_cast<std::size_t>(row) * 20 + column] = 1;
+      without.z_mm(column, row) = std::numeric_limits<float>::quiet_NaN();
+    }
+  const Remaining masked = remaining_of(image, &excluded);
+  const Remaining cut = remaining_of(without);
+  EXPECT_EQ(masked.mask, cut.mask);
+  EXPECT_EQ(masked.pixels, 6 * 4);
+  EXPECT_DOUBLE_EQ(masked.interior_mm2, cut.interior_mm2);
+  EXPECT_DOUBLE_EQ(masked.interior_mm2, 4 * 2 * 0.25);  // the inner 4 x 2 pixels
+  EXPECT_EQ(masked.centroid_mm, cut.centroid_mm);
+  EXPECT_EQ(masked.first_row, 2);
+  EXPECT_EQ(masked.last_row, 7);
 }
 
 TEST(BlobRegions, TouchingPartsAreCutAtTheirNeckEitherWay) {
