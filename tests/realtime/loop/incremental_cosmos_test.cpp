@@ -6,11 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <random>
 
 #include "core/representation/cosmos_pipeline.hpp"
+#include "tests/realtime/loop/identical_rows.hpp"
 
 namespace cosmos {
 namespace {
@@ -170,30 +170,10 @@ void build(IncrementalCosmos& builder, const RangeImage& part) {
   builder.finish();
 }
 
-template <class T>
-int differing_planes(const T* a, const T* b, int n) {
-  return std::memcmp(a, b, static_cast<std::size_t>(n) * sizeof(T)) != 0 ? 1 : 0;
-}
-
 // Every plane of every row, bit for bit.
 void expect_identical_rows(const IncrementalCosmos& a, const IncrementalCosmos& b) {
   ASSERT_EQ(a.rows(), b.rows());
-  int differences = 0;
-  for (int r = 0; r < a.rows(); ++r) {
-    const PartRow x = a.row(r), y = b.row(r);
-    ASSERT_EQ(x.column_begin, y.column_begin) << r;
-    ASSERT_EQ(x.column_end, y.column_end) << r;
-    const int n = x.column_end - x.column_begin;
-    differences +=
-        differing_planes(x.z_mm, y.z_mm, n) + differing_planes(x.fitted_z_mm, y.fitted_z_mm, n) +
-        differing_planes(x.valid, y.valid, n) + differing_planes(x.same_side, y.same_side, n) +
-        differing_planes(x.label, y.label, n) + differing_planes(x.shape_index, y.shape_index, n) +
-        differing_planes(x.curvedness_per_mm, y.curvedness_per_mm, n) +
-        differing_planes(x.area_mm2, y.area_mm2, n);
-    for (int c = 0; c < kFrameComponents; ++c)
-      differences += differing_planes(x.frame[c], y.frame[c], n);
-  }
-  EXPECT_EQ(differences, 0);
+  testing::expect_identical_rows(a, b, a.rows());
 }
 
 TEST(IncrementalCosmos, ABuilderReusedAfterALongPartAndAShortOneEqualsAFreshOne) {

@@ -7,13 +7,12 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <string>
 
 #include "realtime/cell/blob_recognition.hpp"
 #include "tests/common/allocation_counter.hpp"
+#include "tests/realtime/loop/identical_rows.hpp"
 #include "tests/realtime/loop/pitched_sheet.hpp"
 
 namespace cosmos {
@@ -147,29 +146,6 @@ void make_tapered_profile(Profile& profile, std::uint64_t seq, int k) {
   make_profile(profile, seq, k >= 0 && k < 30, 40.0 - 0.8 * std::abs(k - 15));
 }
 
-// Every plane of rows [0, rows) of two builders, compared bit for bit.
-void expect_same_rows(const IncrementalCosmos& a, const IncrementalCosmos& b, int rows) {
-  for (int r = 0; r < rows; ++r) {
-    const PartRow x = a.row(r), y = b.row(r);
-    ASSERT_EQ(x.column_begin, y.column_begin) << "row " << r;
-    ASSERT_EQ(x.column_end, y.column_end) << "row " << r;
-    const std::size_t n = static_cast<std::size_t>(x.column_end - x.column_begin);
-    const auto same = [n](const auto* p, const auto* q) {
-      return std::equal(p, p + n, q,
-                        [](auto u, auto v) { return std::memcmp(&u, &v, sizeof u) == 0; });
-    };
-    EXPECT_TRUE(same(x.fitted_z_mm, y.fitted_z_mm)) << "row " << r;
-    for (int c = 0; c < kFrameComponents; ++c)
-      EXPECT_TRUE(same(x.frame[c], y.frame[c])) << "row " << r << ", component " << c;
-    EXPECT_TRUE(same(x.shape_index, y.shape_index)) << "row " << r;
-    EXPECT_TRUE(same(x.curvedness_per_mm, y.curvedness_per_mm)) << "row " << r;
-    EXPECT_TRUE(same(x.area_mm2, y.area_mm2)) << "row " << r;
-    EXPECT_TRUE(same(x.valid, y.valid)) << "row " << r;
-    EXPECT_TRUE(same(x.same_side, y.same_side)) << "row " << r;
-    EXPECT_TRUE(same(x.label, y.label)) << "row " << r;
-  }
-}
-
 // A 30-row part sent ahead and finished by the worker, against a twin loop that built it
 // through to its completion: the same part, and the same planes bit for bit. With
 // `follower_gap` > 0 a second part starts that many blank rows after it (beyond the fit's
@@ -222,7 +198,7 @@ void expect_sent_ahead_as_completed(int follower_gap) {
     const PartRow follower_row = twin_built.cosmos.row(30 + follower_gap);
     ASSERT_GT(follower_row.column_end - follower_row.column_begin, 100);
   }
-  expect_same_rows(frozen, twin_built.cosmos, 30);
+  testing::expect_identical_rows(frozen, twin_built.cosmos, 30);
   SpeculativePart later;  // once per part
   while (loop.speculative().try_pop(later)) EXPECT_NE(later.built.part_id, ahead.built.part_id);
 }
