@@ -198,10 +198,9 @@ class SceneRecognition {
       // pixels (the very pixels the region's view would hold): most single parts leave too
       // little, and their recognition then ends without analysing the rest anew, which costs
       // a segmentation on the part's latency path.
-      if (unexplained_mm2(blob_.image, remaining_of(blob_.image, &excluded)) < min_unexplained_mm2_)
-        return {};
+      remaining = remaining_of(blob_.image, &excluded);
+      if (unexplained_mm2(blob_.image, remaining) < min_unexplained_mm2_) return {};
       view = extract_part_view(built_, context_, &excluded);
-      remaining = remaining_of(view.image);
       if (static_cast<int>(blob_.parts.size()) >= parameters_.max_parts_per_blob) {
         // What remains is reported, not recognized: the blob has used its recognitions.
         PartRecognition rest = blob_.parts.back();

@@ -206,7 +206,8 @@ void ScanLoop::complete(const TrackedPart& part) {
   describe(builder, part);
   // A frozen part cannot take data again (speculate()); should it, the rows its pipeline did
   // not take are reported as a truncated part's unscanned rest, not lost.
-  if (builder.frozen && builder.last_data_row - builder.first_row >= builder.cosmos.rows())
+  if (speculation_sent_[static_cast<std::size_t>(index)] &&
+      builder.last_data_row - builder.first_row >= builder.cosmos.rows())
     builder.truncated = true;
   builder.soft_link_of = part.soft_link_of;
   builder.has_soft_successor = part.has_soft_successor;
@@ -278,7 +279,6 @@ void ScanLoop::speculate() {
     describe(builder, *part);
     if (!speculative_.try_push(SpeculativePart{index, builder.built()})) continue;
     speculation_sent_[k] = speculation_running_[k] = 1;
-    builder.frozen = true;
   }
 }
 
@@ -303,7 +303,6 @@ void ScanLoop::start_parts(const RowStamp& stamp) {
     builder.first_profile = stamp.profile;
     builder.first_row = row_index_;
     speculation_sent_[static_cast<std::size_t>(index)] = 0;
-    builder.frozen = false;
     builder.rows_added = 0;
     builder.last_data_profile = stamp.profile;
     builder.last_profile = stamp.profile;
@@ -316,7 +315,7 @@ void ScanLoop::start_parts(const RowStamp& stamp) {
 
 bool ScanLoop::add_row_to(int index, const RowStamp& stamp) {
   PartBuilder& builder = *builders_[static_cast<std::size_t>(index)];
-  if (builder.frozen) {
+  if (speculation_sent_[static_cast<std::size_t>(index)]) {
     // A recognizer worker may be finishing its pipeline: the row (blank for it, speculate())
     // is counted as the pipeline would have taken it, up to its max_rows.
     if (builder.rows_added >= builder.cosmos.max_rows()) {

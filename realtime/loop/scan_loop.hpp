@@ -94,11 +94,9 @@ struct PartBuilder {
   bool truncated = false;         // longer than max_rows: rows dropped
   std::int64_t completed_ns = 0;  // monotonic clock when the tracker completed it
   // Rows given to it, up to its builder's max_rows: cosmos.rows(), and the rows counted
-  // after it was frozen.
+  // once it was sent ahead of its completion (ScanLoop::speculate), when its pipeline became
+  // the recognizer worker's to finish.
   int rows_added = 0;
-  // Sent ahead of its completion (ScanLoop::speculate): its pipeline is the recognizer
-  // worker's to finish, and the rows after it are only counted (they are empty for it).
-  bool frozen = false;
 
   bool owns(std::int64_t id) const;
   // What recognition reads of it: its rows up to its last with data, its extent and stamps.
@@ -283,8 +281,9 @@ class ScanLoop {
   SpscRing<LostPart> lost_;
   SpscRing<SpeculativePart> speculative_;
   SpscRing<int> speculated_;
-  // Per builder: its part went to speculative recognition; a worker may read it (the loop
-  // frees it only after); it was freed meanwhile, and goes back once no worker reads it.
+  // Per builder: its part went to speculative recognition (its pipeline is then frozen: the
+  // worker finishes it, add_row_to only counts rows); a worker may read it (the loop frees it
+  // only after); it was freed meanwhile, and goes back once no worker reads it.
   std::vector<std::uint8_t> speculation_sent_, speculation_running_, free_when_speculated_;
   std::vector<UnbuiltPart> unbuilt_;     // capacity: the tracker's max_open_parts
   std::vector<RowStamp> row_stamps_;     // ring over the last rows, by input row
