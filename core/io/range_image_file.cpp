@@ -14,11 +14,13 @@
 #include <opencv2/core.hpp>
 #include <opencv2/core/utils/logger.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <vector>
 
 #include "core/input_error.hpp"
+#include "core/io/image_header.hpp"
 
 namespace cosmos {
 namespace {
@@ -136,6 +138,20 @@ bool has_signature_of(ImageFormat format, std::ifstream& file) {
   return little || big;
 }
 
+// A decoder allocates what the header claims before it finds the data missing: a few crafted
+// bytes declaring a billion pixels took gigabytes. The reader refuses such a header itself.
+void check_declared_size(ImageFormat format, const fs::path& image_path) {
+  const std::optional<ImageDimensions> declared = format == ImageFormat::kTiff
+                                                      ? read_tiff_dimensions(image_path)
+                                                      : read_pfm_dimensions(image_path);
+  if (declared && declared->pixels() > kMaxRangeImagePixels) {
+    fail(image_path, "declares " + std::to_string(declared->width) + " x " +
+                         std::to_string(declared->height) +
+                         " pixels, more than a range image may have (" +
+                         std::to_string(kMaxRangeImagePixels) + ")");
+  }
+}
+
 cv::Mat load_image(const fs::path& image_path) {
   std::error_code error;
   if (!fs::exists(image_path, error)) fail(image_path, "no such file");
@@ -147,6 +163,7 @@ cv::Mat load_image(const fs::path& image_path) {
     fail(image_path, std::string("unreadable: not a ") +
                          (format == ImageFormat::kTiff ? "TIFF" : "PFM") +
                          " file (its first bytes are not that format's header)");
+  check_declared_size(format, image_path);
   cv::Mat image;
   try {
     QuietOpenCv quiet;

@@ -35,7 +35,8 @@ inline void write_handmade_tiff(const std::filesystem::path& path, int width, in
   const std::uint32_t data_bytes = static_cast<std::uint32_t>(width) * height * samples *
                                    static_cast<std::uint32_t>(bits_per_sample) / 8;
 
-  bytes.insert(bytes.end(), {'I', 'I', 42, 0});
+  put16('I' | ('I' << 8));  // little-endian
+  put16(42);
   put32(kIfdOffset);
   put16(kEntries);
   auto entry = [&](std::uint16_t tag, std::uint16_t type, std::uint32_t count,
@@ -83,6 +84,45 @@ inline void write_handmade_pfm(const std::filesystem::path& path, int width, int
   for (int i = 0; i < width * height * channels; ++i) {
     file.write(reinterpret_cast<const char*>(&value), sizeof value);
   }
+}
+
+// Only a TIFF's header and first IFD, with ImageWidth and ImageLength and no pixel data: what
+// a crafted file claiming any size looks like. Classic or BigTIFF, either byte order; the
+// dimensions as SHORT when they fit (as writers do), else LONG.
+inline void write_tiff_header_only(const std::filesystem::path& path, std::uint32_t width,
+                                   std::uint32_t height, bool big_endian, bool bigtiff) {
+  std::vector<std::uint8_t> bytes;
+  auto put = [&](std::uint64_t v, int count) {
+    for (int i = 0; i < count; ++i) {
+      const int shift = 8 * (big_endian ? count - 1 - i : i);
+      bytes.push_back(static_cast<std::uint8_t>((v >> shift) & 0xff));
+    }
+  };
+  const int offset_bytes = bigtiff ? 8 : 4;
+  bytes.push_back(big_endian ? 'M' : 'I');
+  bytes.push_back(big_endian ? 'M' : 'I');
+  put(bigtiff ? 43 : 42, 2);
+  if (bigtiff) {
+    put(8, 2);
+    put(0, 2);
+  }
+  put(bigtiff ? 16 : 8, offset_bytes);  // the first IFD follows the header
+  put(3, bigtiff ? 8 : 2);
+  auto entry = [&](std::uint16_t tag, std::uint32_t value) {
+    const bool fits_short = value <= 0xffff;
+    put(tag, 2);
+    put(fits_short ? 3 : 4, 2);
+    put(1, offset_bytes);
+    put(value, fits_short ? 2 : 4);
+    put(0, offset_bytes - (fits_short ? 2 : 4));
+  };
+  entry(254, 0);  // NewSubfileType, so the dimensions are not the first entry
+  entry(256, width);
+  entry(257, height);
+  put(0, offset_bytes);
+  std::ofstream file(path, std::ios::binary);
+  file.write(reinterpret_cast<const char*>(bytes.data()),
+             static_cast<std::streamsize>(bytes.size()));
 }
 
 inline void write_text_file(const std::filesystem::path& path, const std::string& text) {

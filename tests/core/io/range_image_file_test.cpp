@@ -3,7 +3,6 @@
 #include "core/io/range_image_file.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -14,6 +13,7 @@
 
 #include "core/input_error.hpp"
 #include "sim/analytic_surface.hpp"
+#include "tests/common/scratch_directory_test.hpp"
 #include "tests/sim/handmade_image_files.hpp"
 
 namespace cosmos {
@@ -22,19 +22,8 @@ namespace {
 namespace fs = std::filesystem;
 using testing::TiffSampleFormat;
 
-class RangeImageFile : public ::testing::Test {
+class RangeImageFile : public testing::ScratchDirectoryTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("cosmos_range_image_file_" + std::string(info->name()) +
-                                        "_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path file(const std::string& name) const { return dir_ / name; }
-
   // A small image whose values exercise sign, magnitude, subnormals and NaN positions.
   static RangeImage sample_image() {
     RangeImage image(7, 5, 0.25, 0.375);
@@ -72,8 +61,6 @@ class RangeImageFile : public ::testing::Test {
       }
     }
   }
-
-  fs::path dir_;
 };
 
 void expect_bit_identical(const RangeImage& a, const RangeImage& b) {
@@ -190,6 +177,21 @@ TEST_F(RangeImageFile, AnotherFormatUnderTheExtensionIsRefusedBeforeDecoding) {
   fs::copy_file(file("real.pfm"), file("renamed.tiff"));
   write_sidecar(file("renamed.tiff"), "pixel_size_mm: [1, 1]\n");
   expect_rejected(file("renamed.tiff"), {"renamed.tiff", "not a TIFF file"});
+}
+
+TEST_F(RangeImageFile, HeaderClaimingTooManyPixelsIsRefusedBeforeDecoding) {
+  // Decoded, a header declaring about a billion pixels made OpenCV allocate 4 GB before it
+  // found the data missing.
+  testing::write_text_file(file("huge.pfm"), "Pf\n32768 32683\n-1.0\n");
+  write_sidecar(file("huge.pfm"), "pixel_size_mm: [1, 1]\n");
+  expect_rejected(file("huge.pfm"), {"huge.pfm", "32768 x 32683", "more than"});
+  testing::write_tiff_header_only(file("huge.tiff"), 40000, 30000, true, false);
+  write_sidecar(file("huge.tiff"), "pixel_size_mm: [1, 1]\n");
+  expect_rejected(file("huge.tiff"), {"huge.tiff", "40000 x 30000", "more than"});
+  // At the limit itself the header passes; the missing data is what is reported.
+  testing::write_tiff_header_only(file("edge.tiff"), 4096, 4096, false, false);
+  write_sidecar(file("edge.tiff"), "pixel_size_mm: [1, 1]\n");
+  expect_rejected(file("edge.tiff"), {"edge.tiff", "unreadable"});
 }
 
 TEST_F(RangeImageFile, ThreeChannelImagesAreRejected) {
