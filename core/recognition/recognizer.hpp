@@ -116,6 +116,12 @@ struct RecognitionParameters {
   // of several parts, and a part whose fit ranks below the first few has not explained a
   // scene its better-fitting rivals did not.
   int registered_waiting_parts = 3;
+  // In all, convincing or waiting, at most this many parts are registered (besides the rival
+  // of a part that explained the scene): a small or partial scene (a feature its shadow cut
+  // off a part, a part's piece floating above the belt) fits convincingly in nearly every
+  // part's field, and registering each made a scene that no part explains the costliest of
+  // all, with the part that does explain it nearly always among the first few in quick order.
+  int registered_parts = 6;
   PartPoseSearchParameters search;
   PartDistanceFieldParameters field;
   // Decision thresholds (rejection as unknown part).
@@ -170,6 +176,9 @@ struct RecognitionParameters {
       "a part whose best field pose fits this well is registered at once, mm^2", Range{0, 1e6});
     v("registered_waiting_parts", registered_waiting_parts,
       "of the parts that fit less well, at most this many are registered", Range{0, 100000});
+    v("registered_parts", registered_parts,
+      "parts the search registers in all, at most (besides an explaining part's rival)",
+      Range{1, 100000});
     v("search", search, "the pose search over a part's views");
     v("field", field, "the parts' distance fields");
     v("min_inlier_fraction", min_inlier_fraction, "less support: rejected as unknown", Range{0, 1});

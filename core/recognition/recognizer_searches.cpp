@@ -87,7 +87,9 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
     result.timings.selection_ms += elapsed_ms(stage);
   }
   // Registers one part's field poses; true when one explains enough to end the search.
+  int parts_registered = 0;
   auto register_part = [&](int part, const std::vector<FieldHypothesis>& field_poses) {
+    ++parts_registered;
     StageClock::time_point stage = StageClock::now();
     const std::vector<ViewPoseHypothesis> hypotheses = register_field_hypotheses(
         scene_points.all, model_base_, part, part_search_model(part), field_poses,
@@ -130,8 +132,17 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
   // In quick order a part that explains the scene ends the search after the next part, its
   // rival (part_ambiguity.hpp): a view that two parts explain alike is no proof of either.
   bool explained = false;
+  // The budget of registrations (registered_parts) holds for the search over views; the
+  // rival of a part that explained the scene is searched whatever it.
+  const auto budget_spent = [&] {
+    return !resting_poses && parts_registered >= parameters_.registered_parts;
+  };
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const int part = parts[k];
+    if (budget_spent() && !explained) {
+      every_part = false;
+      break;
+    }
     // A part whose quick fit is hopeless beside another part's full fit (the rule below) is
     // not searched, nor are those after it: the full stages rarely lower a fit that much.
     if (quick_ranked &&
@@ -180,6 +191,7 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
   for (const WaitingPart& part : waiting) {
     if (part.best_fit_mm2 > hopeless_fit_mm2) break;
     if (!resting_poses && registered >= parameters_.registered_waiting_parts) break;
+    if (budget_spent()) break;
     ++registered;
     if (register_part(part.part, part.field_poses)) break;
   }

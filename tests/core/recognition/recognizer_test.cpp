@@ -280,6 +280,37 @@ TEST_F(RecognizerOnRegressionBase, RejectsAPartTheBaseDoesNotHold) {
   }
 }
 
+// The parts the search over every part registered for a recognition.
+int parts_registered_by_search(const RecognitionResult& result) {
+  std::vector<int> parts;
+  for (const RecognitionCandidate& candidate : result.candidates)
+    if (candidate.from_pose_search &&
+        std::find(parts.begin(), parts.end(), candidate.part) == parts.end())
+      parts.push_back(candidate.part);
+  return static_cast<int>(parts.size());
+}
+
+TEST_F(RecognizerOnRegressionBase, TheSearchRegistersAtMostItsBudgetOfParts) {
+  // The bunny is in no part of the base: nothing explains its scans, so without a budget the
+  // search registers every part whose field fits convincingly or ranks among the waiting.
+  RecognitionParameters unbounded;
+  unbounded.registered_parts = 100;
+  RecognitionParameters bounded;
+  bounded.registered_parts = 2;
+  const Recognizer all(*base_, CosmosParameters{}, unbounded);
+  const Recognizer budget(*base_, CosmosParameters{}, bounded);
+  int most_registered = 0;
+  for (std::uint64_t seed : {51, 52, 53}) {
+    const RangeImage image = scan("bunny", seed);
+    const RecognitionResult without = all.recognize(image);
+    const RecognitionResult with = budget.recognize(image);
+    most_registered = std::max(most_registered, parts_registered_by_search(without));
+    EXPECT_LE(parts_registered_by_search(with), 2) << seed;
+    EXPECT_EQ(with.status, RecognitionStatus::kRejected) << seed;
+  }
+  EXPECT_GT(most_registered, 2);
+}
+
 TEST_F(RecognizerOnRegressionBase, AScanWithoutDataIsRejectedWithItsReason) {
   const RecognitionResult empty = recognizer_->recognize(RangeImage{});
   EXPECT_EQ(empty.status, RecognitionStatus::kRejected);
