@@ -109,6 +109,9 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
   };
   for (;;) {
     const std::uint32_t seen = status.recognizer_wake.epoch();
+    // Read before the completed parts are drained: every blob that starts before it is then
+    // in completed_order or already joined (ScanLoop::unfinished_from_profile).
+    const std::int64_t unfinished_from_profile = loop.unfinished_from_profile();
     // Parts the loop dropped are reported too (ERROR poses): none passes unannounced.
     LostPart lost;
     while (loop.lost_parts().try_pop(lost))
@@ -182,6 +185,14 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
         return_free_heap_pages();
         blobs_since_trim = 0;
       }
+      progressed = true;
+    }
+    // Held pieces go out as soon as no blob still to come can join them.
+    std::int64_t unjoined_from_profile = unfinished_from_profile;
+    for (const int waiting : completed_order)
+      unjoined_from_profile = std::min(unjoined_from_profile, loop.builder(waiting).first_profile);
+    for (JoinedRecognition& joined : joiner.release_settled(unjoined_from_profile)) {
+      publish(std::move(joined));
       progressed = true;
     }
     if (progressed) continue;

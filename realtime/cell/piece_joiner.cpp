@@ -186,13 +186,7 @@ std::vector<JoinedRecognition> PieceJoiner::add(BlobRecognition blob, const Part
     if (drop) {
       piece = held_.erase(piece);
     } else if (++piece->blobs_waited > kBlobsToWait) {
-      if (piece->shadow) {
-        // Nearby held pieces none of which was recognized, alone or together: one part.
-        for (auto other = std::next(piece); other != held_.end();)
-          other = other->shadow && near(*piece, *other) ? held_.erase(other) : std::next(other);
-      }
-      release(*piece, out);
-      piece = held_.erase(piece);
+      piece = release_held(piece, out);
     } else {
       ++piece;
     }
@@ -233,16 +227,29 @@ std::vector<JoinedRecognition> PieceJoiner::add(BlobRecognition blob, const Part
   return out;
 }
 
+std::list<PieceJoiner::Piece>::iterator PieceJoiner::release_held(
+    std::list<Piece>::iterator piece, std::vector<JoinedRecognition>& out) {
+  if (piece->shadow) {
+    // Nearby held pieces none of which was recognized, alone or together: one part.
+    for (auto other = std::next(piece); other != held_.end();)
+      other = other->shadow && near(*piece, *other) ? held_.erase(other) : std::next(other);
+  }
+  release(*piece, out);
+  return held_.erase(piece);
+}
+
+std::vector<JoinedRecognition> PieceJoiner::release_settled(std::int64_t unfinished_from_profile) {
+  std::vector<JoinedRecognition> out;
+  for (auto piece = held_.begin(); piece != held_.end();)
+    piece = piece->last_profile + kReachProfiles < unfinished_from_profile
+                ? release_held(piece, out)
+                : std::next(piece);
+  return out;
+}
+
 std::vector<JoinedRecognition> PieceJoiner::finish() {
   std::vector<JoinedRecognition> out;
-  while (!held_.empty()) {
-    Piece piece = std::move(held_.front());
-    held_.pop_front();
-    if (piece.shadow)
-      for (auto other = held_.begin(); other != held_.end();)
-        other = other->shadow && near(piece, *other) ? held_.erase(other) : std::next(other);
-    release(piece, out);
-  }
+  while (!held_.empty()) release_held(held_.begin(), out);
   return out;
 }
 

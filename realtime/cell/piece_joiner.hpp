@@ -37,6 +37,11 @@ class PieceJoiner {
   // A recognized blob (the builder it came from, still held); returns what is now final,
   // in order (part_seq still to be assigned by the publisher of the poses).
   std::vector<JoinedRecognition> add(BlobRecognition blob, const PartBuilder& builder);
+  // The held pieces that no blob still to be added can join any more: every blob that starts
+  // before `unfinished_from_profile` has been added (ScanLoop::unfinished_from_profile, and
+  // none of the completed blobs still being recognized starts earlier). A piece waits for
+  // the blobs near it, not for a count of blobs: on a sparse belt a count took seconds.
+  std::vector<JoinedRecognition> release_settled(std::int64_t unfinished_from_profile);
   // End of stream: everything still held.
   std::vector<JoinedRecognition> finish();
 
@@ -70,6 +75,10 @@ class PieceJoiner {
   bool recognize_together(const Piece& piece, const PartBuilder& builder,
                           std::vector<JoinedRecognition>& out);
   void release(Piece& piece, std::vector<JoinedRecognition>& out);
+  // Releases a held piece and takes it out of held_ (a shadow piece with the other shadow
+  // pieces near it: one part none of them was recognized as); returns the next held piece.
+  std::list<Piece>::iterator release_held(std::list<Piece>::iterator piece,
+                                          std::vector<JoinedRecognition>& out);
   // Surface a blob's recognized parts left unexplained (BlobRecognition::remnants): not
   // reported when a part recognized earlier explains it, else held for the blobs to come.
   // Returns which of the blob's parts were taken (held or dropped).

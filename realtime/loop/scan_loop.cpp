@@ -1,6 +1,7 @@
 #include "realtime/loop/scan_loop.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <thread>
 
 #include "firmware_bridge/kernel_timestamp.hpp"
@@ -371,6 +372,12 @@ void ScanLoop::add_row(const float* z_mm, const std::uint8_t* belt, const RowSta
   for (std::size_t k = 0; k < open_builders_.size();)
     k += add_row_to(open_builders_[k], stamp) ? 1 : 0;
   speculate();
+  std::int64_t unfinished_from = stamp.profile + 1;
+  for (const int index : open_builders_)
+    unfinished_from =
+        std::min(unfinished_from, builders_[static_cast<std::size_t>(index)]->first_profile);
+  // Unbuilt parts are reported as lost, never recognized: they hold nothing back.
+  unfinished_from_profile_.store(unfinished_from, std::memory_order_release);
   ++row_index_;
 }
 
@@ -416,6 +423,9 @@ void ScanLoop::flush() {
     ++row_index_;
   }
   input_index_ = row_index_;
+  if (tracker_.open_parts().empty())
+    unfinished_from_profile_.store(std::numeric_limits<std::int64_t>::max(),
+                                   std::memory_order_release);
 }
 
 }  // namespace cosmos

@@ -223,6 +223,14 @@ class ScanLoop {
   // Parts dropped for want of a builder or a queue slot, each to be reported as an ERROR
   // pose by the recognizer's thread (report_lost_part, part_recognition.hpp).
   SpscRing<LostPart>& lost_parts() { return lost_; }
+  // The source's profile index from which blobs may still be to come: the first profile of
+  // the oldest open part, or the next profile when none is open (the largest index once
+  // flush() has completed every part). Every part that started before it has completed and
+  // is in completed() (or was lost) by the time this value is published, so the recognizer
+  // that reads it before draining completed() knows every blob that starts earlier.
+  std::int64_t unfinished_from_profile() const {
+    return unfinished_from_profile_.load(std::memory_order_acquire);
+  }
   PartBuilder& builder(int index) { return *builders_[static_cast<std::size_t>(index)]; }
   int builder_count() const { return static_cast<int>(builders_.size()); }
   const RowBlockPool& row_pool() const { return row_pool_; }
@@ -292,6 +300,7 @@ class ScanLoop {
   std::vector<std::uint8_t> belt_seen_;  // conditioned, belt column order: belt measured
   std::int64_t input_index_ = 0;         // the next profile's row
   std::int64_t row_index_ = 0;           // the next row to the tracker and the builders
+  std::atomic<std::int64_t> unfinished_from_profile_{0};
   ScanLoopCounters counters_;
 };
 

@@ -1,5 +1,6 @@
-// Held pieces: shadow pieces (softly linked blobs with nothing recognized in them) wait a few
-// blobs for the part they may belong to; nearby shadow pieces that are not recognized, alone
+// Held pieces: shadow pieces (softly linked blobs with nothing recognized in them) wait for
+// the part they may belong to, a few blobs at most and no longer than a blob that can join
+// them may still come; nearby shadow pieces that are not recognized, alone
 // or together, are one part and are reported once, by the first of them. Three of them held
 // together is the case where releasing the first erases the other two from the held list
 // while the first is still being released.
@@ -46,6 +47,7 @@ class PieceJoinerTest : public ::testing::Test {
                                                   std::int64_t part_seq) {
     PartBuilder builder(CosmosParameters{}, kImageSide, kImageSide, kGridMm, pool_);
     builder.first_profile = first_profile;
+    builder.rows_added = kImageSide;
     builder.soft_link_of = part_seq - 1;
     builder.has_soft_successor = true;
     BlobRecognition blob;
@@ -108,6 +110,31 @@ TEST_F(PieceJoinerTest, AShadowPieceFarFromTheOthersIsReportedOnItsOwn) {
   const std::vector<JoinedRecognition> rest = joiner.finish();
   ASSERT_EQ(rest.size(), 1U);
   EXPECT_EQ(rest[0].recognition.pose.part_seq, 4);
+}
+
+TEST_F(PieceJoinerTest, APieceGoesOutOnceNoBlobStillToComeCanJoinIt) {
+  PieceJoiner joiner(context_);
+  EXPECT_TRUE(add_shadow_piece(joiner, 100, 1).empty());  // profiles 100-105
+  // A blob may still start within the joiner's reach (100 profiles) after its last profile.
+  EXPECT_TRUE(joiner.release_settled(150).empty());
+  EXPECT_TRUE(joiner.release_settled(205).empty());
+  const std::vector<JoinedRecognition> released = joiner.release_settled(206);
+  ASSERT_EQ(released.size(), 1U);
+  EXPECT_EQ(released[0].recognition.pose.part_seq, 1);
+  EXPECT_TRUE(joiner.finish().empty());
+}
+
+TEST_F(PieceJoinerTest, SettledShadowPiecesNearEachOtherAreReportedOnce) {
+  PieceJoiner joiner(context_);
+  EXPECT_TRUE(add_shadow_piece(joiner, 100, 1).empty());
+  EXPECT_TRUE(add_shadow_piece(joiner, 140, 2).empty());
+  EXPECT_TRUE(add_shadow_piece(joiner, 5000, 3).empty());
+  const std::vector<JoinedRecognition> released = joiner.release_settled(1000);
+  ASSERT_EQ(released.size(), 1U);
+  EXPECT_EQ(released[0].recognition.pose.part_seq, 1);
+  const std::vector<JoinedRecognition> rest = joiner.finish();
+  ASSERT_EQ(rest.size(), 1U);
+  EXPECT_EQ(rest[0].recognition.pose.part_seq, 3);
 }
 
 TEST_F(PieceJoinerTest, PiecesWaitingTheirBlobsAreHeldTillTheEnd) {

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "realtime/cell/blob_recognition.hpp"
@@ -265,6 +266,34 @@ TEST(ScanLoop, ABuilderAWorkerMayStillReadIsFreedOnlyOnceItsSpeculationEnds) {
   loop.speculated().try_push(ahead.builder);
   belt(1);
   EXPECT_EQ(loop.row_pool().blocks_in_use(), 0);
+}
+
+TEST(ScanLoop, BlobsMayStillComeFromTheOldestOpenPartsFirstProfile) {
+  ScanLoop loop{ScanLoopSettings{}};
+  Profile profile;
+  std::uint64_t seq = 0;
+  const auto feed = [&](int rows, bool part) {
+    for (int k = 0; k < rows; ++k) {
+      make_profile(profile, seq++, part, 40.0);
+      loop.process(profile);
+      decline_speculation(loop);
+    }
+  };
+  feed(10, false);
+  EXPECT_EQ(loop.unfinished_from_profile(), 10);  // nothing open: the next profile
+  feed(30, true);                                 // a part from profile 10
+  EXPECT_EQ(loop.unfinished_from_profile(), 10);
+  feed(50, false);  // still open: the tracker waits out link_gap_rows
+  EXPECT_EQ(loop.unfinished_from_profile(), 10);
+  int index = -1;
+  EXPECT_FALSE(loop.completed().try_pop(index));
+  feed(50, false);
+  // Completed, and in completed() before the value moved past it.
+  ASSERT_TRUE(loop.completed().try_pop(index));
+  EXPECT_EQ(loop.builder(index).first_profile, 10);
+  EXPECT_EQ(loop.unfinished_from_profile(), static_cast<std::int64_t>(seq));
+  loop.flush();
+  EXPECT_EQ(loop.unfinished_from_profile(), std::numeric_limits<std::int64_t>::max());
 }
 
 TEST(ScanLoop, TakingAndGivingBackRowBlocksAllocatesNothing) {
