@@ -26,6 +26,9 @@ namespace {
 constexpr auto kIdleWait = std::chrono::microseconds(200);
 // The longest an idle recognizer sleeps before it looks again without being woken.
 constexpr std::int64_t kRecognizerIdleNs = 50'000'000;
+// While the joiner holds pieces: they go out as the belt moves on, not when a part completes,
+// so the recognizer looks more often (2 ms is 5 profiles at the default line rate).
+constexpr std::int64_t kHoldingIdleNs = 2'000'000;
 
 struct CompletedPose {
   PartRecognition recognition;
@@ -200,7 +203,7 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
         loop.completed().empty() && loop.lost_parts().empty() && completed_order.empty() &&
         loop.speculative().empty() && ahead_queue.empty())
       break;
-    status.recognizer_wake.wait(seen, kRecognizerIdleNs);
+    status.recognizer_wake.wait(seen, joiner.holding() ? kHoldingIdleNs : kRecognizerIdleNs);
   }
   for (JoinedRecognition& joined : joiner.finish()) publish(std::move(joined));
   status.recognizer_done.store(true, std::memory_order_release);

@@ -42,6 +42,7 @@ class PieceJoiner {
   // none of the completed blobs still being recognized starts earlier). A piece waits for
   // the blobs near it, not for a count of blobs: on a sparse belt a count took seconds.
   std::vector<JoinedRecognition> release_settled(std::int64_t unfinished_from_profile);
+  bool holding() const { return !held_.empty(); }
   // End of stream: everything still held.
   std::vector<JoinedRecognition> finish();
 
