@@ -110,6 +110,18 @@ class SceneRecognition {
     explained_.assign(pixel_count(), 0);
   }
 
+  const std::vector<Eigen::Vector3d>& points_loop_mm() const { return blob_.points_loop_mm; }
+
+  // The blob, not recognized: a piece of the part recognized after it.
+  BlobRecognition piece_of_successor() {
+    RecognitionResult result;
+    result.reason = "a piece of the part after it";
+    Unrecognized piece{recognition_of(std::move(result), built_, context_, next_seq()),
+                       remaining_of(whole_->image), whole_->image};
+    report(piece, false);
+    return std::move(blob_);
+  }
+
   BlobRecognition run() {
     std::optional<Unrecognized> rest = recognize_region(nothing_outside(), 0, std::move(whole_));
     if (rest && !take_apart_at_necks(*rest)) report(*rest, any_recognized());
@@ -343,6 +355,20 @@ BlobRecognition recognize_blob(PartBuilder& builder, const PartRecognitionContex
                                std::int64_t part_seq) {
   builder.cosmos.finish();
   BlobRecognition blob = recognize_blob(builder.built(), context, part_seq);
+  for (PartRecognition& part : blob.parts) mark_stream_fault(part, builder, context);
+  return blob;
+}
+
+BlobRecognition recognize_blob_unless_explained(PartBuilder& builder,
+                                                const PartRecognitionContext& context,
+                                                const std::vector<PartInLoop>& successor_parts,
+                                                std::size_t successor_points,
+                                                std::int64_t part_seq) {
+  builder.cosmos.finish();
+  SceneRecognition scene(builder.built(), context, part_seq);
+  const bool explained = scene.points_loop_mm().size() < successor_points &&
+                         piece_explained_by(scene.points_loop_mm(), successor_parts, context);
+  BlobRecognition blob = explained ? scene.piece_of_successor() : scene.run();
   for (PartRecognition& part : blob.parts) mark_stream_fault(part, builder, context);
   return blob;
 }

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "realtime/cell/part_recognition.hpp"
+#include "realtime/cell/piece_explained.hpp"
 
 namespace cosmos {
 
@@ -46,6 +47,19 @@ BlobRecognition recognize_blob(const BuiltPart& built, const PartRecognitionCont
 // (mark_stream_fault).
 BlobRecognition recognize_blob(PartBuilder& builder, const PartRecognitionContext& context,
                                std::int64_t part_seq);
+
+// A leading piece: a completed builder whose successor, a blob the tracker linked to it
+// softly across a gap its shadow can explain, is recognized already. When one of the
+// successor's parts explains most of the piece and the piece is the smaller of the two (the
+// joiner would then drop the piece whatever it was recognized as, piece_joiner.hpp), it is
+// not recognized: it comes out as a rejection the joiner drops. A shadow-cut feature in
+// front of a part (an elephant's trunk tip) is too small to be recognized and floats above the
+// belt, and its failed recognition was the costliest of a cell's. Otherwise: recognize_blob.
+BlobRecognition recognize_blob_unless_explained(PartBuilder& builder,
+                                                const PartRecognitionContext& context,
+                                                const std::vector<PartInLoop>& successor_parts,
+                                                std::size_t successor_points,
+                                                std::int64_t part_seq);
 
 // The ERROR pose of a part the loop dropped, at the centre of its tracked extent.
 PartRecognition report_lost_part(const LostPart& lost, const PartRecognitionContext& context,

@@ -91,14 +91,29 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
   std::vector<std::optional<BlobRecognition>> results(builders);
   std::deque<int> ahead_queue;      // speculative parts waiting for a worker
   std::deque<int> completed_order;  // completed builders, oldest first
-  // Jobs: a builder index, or kAhead plus it for a speculative one. A blob's recognition
-  // depends on its rows alone; its part_seq is given in order by publish().
+  // A leading piece (a blob with a soft successor, part_tracker.hpp) waits for its successor's
+  // recognition, and is then recognized only when none of the successor's parts explains it
+  // (recognize_blob_unless_explained); per builder: whether it waits, and the successor's
+  // recognized parts and surface size once known.
+  std::vector<std::uint8_t> awaits_successor(builders, 0);
+  std::vector<std::vector<PartInLoop>> successor_parts(builders);
+  std::vector<std::size_t> successor_points(builders, 0);
+  // Jobs: a builder index; kAhead plus it for a speculative one; kAfterSuccessor plus it for
+  // a leading piece whose successor is recognized. A blob's recognition depends on its rows
+  // (and a leading piece's on its successor's) alone; its part_seq is given in order by
+  // publish().
   constexpr int kAhead = 1 << 20;
+  constexpr int kAfterSuccessor = 2 << 20;
   OrderedWorkers<BlobRecognition> workers(
       settings.threads.recognizer_threads,
       [&](int job) {
         if (settings.recognizer_delay_ms > 0)
           std::this_thread::sleep_for(std::chrono::milliseconds(settings.recognizer_delay_ms));
+        if (job >= kAfterSuccessor) {
+          const auto k = static_cast<std::size_t>(job - kAfterSuccessor);
+          return recognize_blob_unless_explained(loop.builder(job - kAfterSuccessor), context,
+                                                 successor_parts[k], successor_points[k], 0);
+        }
         if (job >= kAhead) {
           // The loop left the builder's pipeline to this worker (ScanLoop::speculate).
           loop.builder(job - kAhead).cosmos.finish();
@@ -109,6 +124,15 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
       status.recognizer_wake);
   const auto end_ahead = [&](int index) {
     while (!loop.speculated().try_push(index)) std::this_thread::sleep_for(kIdleWait);
+  };
+  // The completed blob the tracker linked softly to `piece` as its continuation, or -1.
+  const auto successor_of = [&](int piece) {
+    const PartBuilder& leading = loop.builder(piece);
+    for (const int later : completed_order) {
+      const std::int64_t link = loop.builder(later).soft_link_of;
+      if (later != piece && link >= 0 && leading.owns(link)) return later;
+    }
+    return -1;
   };
   for (;;) {
     const std::uint32_t seen = status.recognizer_wake.epoch();
@@ -128,7 +152,12 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
       ahead_queue.push_back(early.builder);
     }
     int index = -1;
-    while (loop.completed().try_pop(index)) completed_order.push_back(index);
+    while (loop.completed().try_pop(index)) {
+      completed_order.push_back(index);
+      const PartBuilder& completed = loop.builder(index);
+      awaits_successor[static_cast<std::size_t>(index)] =
+          completed.has_soft_successor && !completed.truncated;
+    }
     // Completed parts first (they are on the latency path), oldest first.
     for (const int done : completed_order) {
       const auto k = static_cast<std::size_t>(done);
@@ -148,6 +177,28 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
           stage[k] = Stage::kNone;
         }
       }
+      if (stage[k] == Stage::kNone && awaits_successor[k]) {
+        // Its successor started before it completed: it is in completed_order, still open,
+        // or gone (merged into another part, lost) once every part that started by then has
+        // completed; then the piece is recognized as any blob.
+        const int successor = successor_of(done);
+        if (successor >= 0 && stage[static_cast<std::size_t>(successor)] == Stage::kReady &&
+            workers.can_submit()) {
+          const BlobRecognition& after = *results[static_cast<std::size_t>(successor)];
+          successor_parts[k].clear();
+          for (const PartRecognition& part : after.parts)
+            if (part.pose.status == PoseStatus::kOk)
+              successor_parts[k].push_back({part.result.part, part.result.T_scanner_part});
+          successor_points[k] = after.points_loop_mm.size();
+          workers.submit(done + kAfterSuccessor);
+          stage[k] = Stage::kRunning;
+          awaits_successor[k] = 0;
+          status.blobs_recognized_at_completion.fetch_add(1, std::memory_order_relaxed);
+          continue;
+        }
+        if (successor >= 0 || unfinished_from_profile <= loop.builder(done).last_profile) continue;
+        awaits_successor[k] = 0;
+      }
       if (stage[k] == Stage::kNone && workers.can_submit()) {
         workers.submit(done);
         stage[k] = Stage::kRunning;
@@ -163,8 +214,10 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
     bool progressed = false;
     while (auto finished = workers.take_oldest()) {
       progressed = true;
-      const bool early_job = finished->job >= kAhead;
-      const int job = early_job ? finished->job - kAhead : finished->job;
+      const bool early_job = finished->job >= kAhead && finished->job < kAfterSuccessor;
+      const int job = finished->job >= kAfterSuccessor ? finished->job - kAfterSuccessor
+                      : early_job                      ? finished->job - kAhead
+                                                       : finished->job;
       const auto k = static_cast<std::size_t>(job);
       results[k] = std::move(finished->result);
       stage[k] = early_job ? Stage::kAheadDone : Stage::kReady;

@@ -5,6 +5,8 @@
 #include <iterator>
 #include <utility>
 
+#include "realtime/cell/piece_explained.hpp"
+
 namespace cosmos {
 namespace {
 
@@ -12,8 +14,6 @@ namespace {
 // it completes within a few blobs (side-by-side parts complete in between).
 constexpr int kBlobsToWait = 3;
 constexpr std::size_t kRecentParts = 8;
-// Most of the piece lies on the part's surface: it is that part's.
-constexpr double kExplainedFraction = 0.5;
 // Profiles between a piece and the part it may belong to at most: the longest shadow the
 // tracker links across (its link_gap_rows), at the default 0.4 mm belt step.
 constexpr std::int64_t kReachProfiles = 100;
@@ -120,19 +120,10 @@ bool PieceJoiner::explained_by_recent(const Piece& piece) const {
 
 bool PieceJoiner::explained_by(const std::vector<Eigen::Vector3d>& points,
                                const std::vector<Recognized>& parts) const {
-  if (points.empty()) return false;
-  for (const Recognized& part : parts) {
-    const PartDistanceField& field = context_.recognizer->part_search_model(part.part).field;
-    const RigidTransform T_part_loop = part.T_loop_part.inverse();
-    std::size_t on_surface = 0;
-    for (const Eigen::Vector3d& point : points)
-      on_surface +=
-          field.distance_mm(T_part_loop.apply(point)) <= context_.blob.explained_distance_mm ? 1
-                                                                                             : 0;
-    if (static_cast<double>(on_surface) >= kExplainedFraction * static_cast<double>(points.size()))
-      return true;
-  }
-  return false;
+  std::vector<PartInLoop> placed;
+  placed.reserve(parts.size());
+  for (const Recognized& part : parts) placed.push_back({part.part, part.T_loop_part});
+  return piece_explained_by(points, placed, context_);
 }
 
 std::vector<std::uint8_t> PieceJoiner::hold_remnants(BlobRecognition& blob,

@@ -2,7 +2,8 @@
 // to 0 (touching end to end) and pairs side by side across the belt. No part passes
 // unreported: poses plus rejections equal the parts placed; and parts a few millimetres apart
 // are identified (the tracker's shadow geometry keeps them apart, scene-level recognition
-// takes touching ones apart).
+// takes touching ones apart). A leading piece that its successor's part explains is not
+// recognized on its own.
 #include "realtime/cell/blob_recognition.hpp"
 
 #include <gtest/gtest.h>
@@ -147,6 +148,65 @@ TEST_F(BlobRecognition, PartsTouchingEndToEndGetOnePoseEach) {
   EXPECT_EQ(outcome.repeated, 0) << outcome.text;
   EXPECT_GE(outcome.identified, 11) << outcome.text;
   EXPECT_EQ(outcome.wrong, 0) << outcome.text;
+}
+
+// One seeded part through a fresh loop, to its completion: the loop's builder index.
+int scan_one_part(ScanLoop& loop, const testing::RegressionRecognizer& world, std::uint64_t seed) {
+  SimulatedSourceSettings one;
+  one.parts = 1;
+  one.seed = seed;
+  SimulatedSource source(world.catalog, ScannerParameters{}, one);
+  EXPECT_EQ(source.start(), SourceStatus::kOk);
+  Profile profile;
+  source.reserve(profile);
+  SpeculativePart ahead;
+  while (source.next(profile) == SourceStatus::kOk) {
+    loop.process(profile);
+    while (loop.speculative().try_pop(ahead)) loop.speculated().try_push(ahead.builder);
+  }
+  loop.flush();
+  int index = -1;
+  EXPECT_TRUE(loop.completed().try_pop(index));
+  return index;
+}
+
+TEST_F(BlobRecognition, ALeadingPieceThatItsSuccessorsPartExplainsIsNotRecognized) {
+  PartRecognitionContext context;
+  context.recognizer = &world_->recognizer;
+  context.model_base = &world_->base;
+  context.catalog_index_of_base_part.assign(world_->base.parts.size(), -1);
+  ScanLoop first{ScanLoopSettings{}};
+  const cosmos::BlobRecognition alone =
+      recognize_blob(first.builder(scan_one_part(first, *world_, 5)), context, 0);
+  ASSERT_EQ(alone.parts.size(), 1U);
+  ASSERT_EQ(alone.parts[0].pose.status, PoseStatus::kOk) << alone.parts[0].pose.reason;
+  const std::vector<PartInLoop> successor{
+      {alone.parts[0].result.part, alone.parts[0].result.T_scanner_part}};
+  const std::size_t points = alone.points_loop_mm.size();
+  // The same surface as the successor's part placed there, and a larger successor: a piece.
+  ScanLoop second{ScanLoopSettings{}};
+  const cosmos::BlobRecognition piece = recognize_blob_unless_explained(
+      second.builder(scan_one_part(second, *world_, 5)), context, successor, points + 1, 0);
+  ASSERT_EQ(piece.parts.size(), 1U);
+  EXPECT_EQ(piece.parts[0].pose.status, PoseStatus::kRejected);
+  EXPECT_EQ(piece.parts[0].pose.reason, "a piece of the part after it");
+  EXPECT_EQ(piece.points_loop_mm.size(), points);
+  // A successor no larger than the piece: the piece is recognized as any blob.
+  ScanLoop third{ScanLoopSettings{}};
+  const cosmos::BlobRecognition larger = recognize_blob_unless_explained(
+      third.builder(scan_one_part(third, *world_, 5)), context, successor, points, 0);
+  ASSERT_EQ(larger.parts.size(), 1U);
+  EXPECT_EQ(larger.parts[0].pose.status, PoseStatus::kOk);
+  EXPECT_EQ(larger.parts[0].result.part, alone.parts[0].result.part);
+  // Nor is a part another part does not explain taken for a piece of it.
+  const std::vector<PartInLoop> elsewhere{
+      {successor[0].part, RigidTransform{Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, 500)} *
+                              successor[0].T_loop_part}};
+  ScanLoop fourth{ScanLoopSettings{}};
+  const cosmos::BlobRecognition own = recognize_blob_unless_explained(
+      fourth.builder(scan_one_part(fourth, *world_, 5)), context, elsewhere, points + 1, 0);
+  ASSERT_EQ(own.parts.size(), 1U);
+  EXPECT_EQ(own.parts[0].pose.status, PoseStatus::kOk);
 }
 
 }  // namespace
