@@ -152,6 +152,22 @@ void BM_FallbackPoseSearchOnePart(benchmark::State& state) {
 }
 BENCHMARK(BM_FallbackPoseSearchOnePart)->Unit(benchmark::kMillisecond)->Iterations(5);
 
+// The quick field fit that orders the search over every part (catalog_rank), for every part
+// of the base: the one cost of a search that grows with the catalog whatever the scan.
+void BM_QuickFieldFitEveryPart(benchmark::State& state) {
+  const RecognitionScanSet* fixture = ready_scan_set(state);
+  if (!fixture) return;
+  const RecognitionParameters& parameters = fixture->parameters();
+  const int parts = static_cast<int>(fixture->base().parts.size());
+  over_scans(state, *fixture, [&](const TestScan& scan) {
+    for (int part = 0; part < parts; ++part)
+      benchmark::DoNotOptimize(quick_field_poses(scan.scene_points, fixture->base(),
+                                                 fixture->recognizer().part_search_model(part),
+                                                 parameters.search, parameters.catalog_rank));
+  });
+}
+BENCHMARK(BM_QuickFieldFitEveryPart)->Unit(benchmark::kMillisecond)->Iterations(20);
+
 void report_outcomes(benchmark::State& state, const RecognitionScanSet& fixture) {
   int identified = 0, fell_back = 0;
   for (const TestScan& scan : fixture.scans()) {

@@ -24,19 +24,45 @@ struct FieldStage {
 void run_field_stages(const PartDistanceField& field, double truncation_mm,
                       std::initializer_list<FieldStage> stages,
                       std::vector<FieldHypothesis>& hypotheses) {
+  std::vector<double> kept_scores;  // a max-heap of the best `keep` scores so far
+  std::vector<std::size_t> order;
+  std::vector<FieldHypothesis> kept;
   for (const FieldStage& stage : stages) {
+    const std::size_t keep = std::min(stage.keep, hypotheses.size());
+    // A stage that only scores keeps the best few of many: a start whose partial sum already
+    // exceeds the keep-th best score so far cannot be among them and is scored no further.
+    const bool abandon = stage.iterations == 0 && keep > 0 && keep < hypotheses.size();
+    kept_scores.clear();
     for (FieldHypothesis& hypothesis : hypotheses) {
       if (stage.iterations > 0)
         hypothesis.T_part_scene = align_in_distance_field(
             stage.points, field, hypothesis.T_part_scene, stage.iterations, truncation_mm);
+      const double bound = abandon && kept_scores.size() == keep
+                               ? kept_scores.front()
+                               : std::numeric_limits<double>::infinity();
       hypothesis.truncated_mean_square_mm2 = field_truncated_mean_square_mm2(
-          stage.points, field, hypothesis.T_part_scene, truncation_mm);
+          stage.points, field, hypothesis.T_part_scene, truncation_mm, bound);
+      if (!abandon || hypothesis.truncated_mean_square_mm2 > bound) continue;
+      kept_scores.push_back(hypothesis.truncated_mean_square_mm2);
+      std::push_heap(kept_scores.begin(), kept_scores.end());
+      if (kept_scores.size() > keep) {
+        std::pop_heap(kept_scores.begin(), kept_scores.end());
+        kept_scores.pop_back();
+      }
     }
-    std::stable_sort(hypotheses.begin(), hypotheses.end(),
-                     [](const FieldHypothesis& a, const FieldHypothesis& b) {
-                       return a.truncated_mean_square_mm2 < b.truncated_mean_square_mm2;
-                     });
-    if (hypotheses.size() > stage.keep) hypotheses.resize(stage.keep);
+    // The best `keep` by score, ties in generation order (a stable sort's order), moved once.
+    order.resize(hypotheses.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    const auto better = [&hypotheses](std::size_t a, std::size_t b) {
+      const double score_a = hypotheses[a].truncated_mean_square_mm2;
+      const double score_b = hypotheses[b].truncated_mean_square_mm2;
+      return score_a < score_b || (score_a == score_b && a < b);
+    };
+    std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(keep), order.end(),
+                      better);
+    kept.clear();
+    for (std::size_t k = 0; k < keep; ++k) kept.push_back(hypotheses[order[k]]);
+    hypotheses.swap(kept);
   }
 }
 

@@ -179,14 +179,19 @@ double PartDistanceField::interpolate(const Eigen::Vector3d& point_part_mm,
 
 double field_truncated_mean_square_mm2(const RegistrationPoints& scene,
                                        const PartDistanceField& field,
-                                       const RigidTransform& T_part_scene, double truncation_mm) {
+                                       const RigidTransform& T_part_scene, double truncation_mm,
+                                       double abandon_above_mm2) {
   if (scene.size() == 0) return truncation_mm * truncation_mm;
   const double limit2 = truncation_mm * truncation_mm;
+  // The terms are never negative, so a partial sum past this bounds the mean from below (the
+  // relative margin covers the rounding of the product and of the final division).
+  const double abandon_sum = abandon_above_mm2 * scene.size() * (1 + 1e-9);
   Eigen::Vector3d unused;
   double sum = 0;
   for (int i = 0; i < scene.size(); ++i) {
     const double d = field.sample<false>(T_part_scene.apply(scene.position_mm.col(i)), unused);
     sum += std::min(d * d, limit2);
+    if (sum > abandon_sum) return sum / (i + 1);
   }
   return sum / scene.size();
 }

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "core/parameter_visitor.hpp"
@@ -66,7 +67,7 @@ class PartDistanceField {
   template <bool kGradient>
   double sample(const Eigen::Vector3d& point_part_mm, Eigen::Vector3d& gradient) const;
   friend double field_truncated_mean_square_mm2(const RegistrationPoints&, const PartDistanceField&,
-                                                const RigidTransform&, double);
+                                                const RigidTransform&, double, double);
   friend double field_fraction_within(const RegistrationPoints&, const PartDistanceField&,
                                       const RigidTransform&, double);
   friend RigidTransform align_in_distance_field(const RegistrationPoints&, const PartDistanceField&,
@@ -82,9 +83,13 @@ class PartDistanceField {
 
 // Mean over the scene points of min(d^2, truncation^2), d their distance to the part surface
 // under T_part_scene.
-double field_truncated_mean_square_mm2(const RegistrationPoints& scene,
-                                       const PartDistanceField& field,
-                                       const RigidTransform& T_part_scene, double truncation_mm);
+// With `abandon_above_mm2`, the sum stops once the mean is sure to exceed it: the value
+// returned is then some value above it, not the mean (a search that keeps the best few poses
+// needs no more of the others; the kept ones' values are the same to the last bit).
+double field_truncated_mean_square_mm2(
+    const RegistrationPoints& scene, const PartDistanceField& field,
+    const RigidTransform& T_part_scene, double truncation_mm,
+    double abandon_above_mm2 = std::numeric_limits<double>::infinity());
 
 // The fraction of the scene points within `distance_mm` of the part surface under
 // T_part_scene.

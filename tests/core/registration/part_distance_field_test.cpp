@@ -109,6 +109,23 @@ TEST(PartDistanceField, TruncatedMeanSquareIsSmallOnTheSurfaceAndCappedFarFromIt
   EXPECT_DOUBLE_EQ(field_truncated_mean_square_mm2(scene, field, far, 10.0), 100.0);
 }
 
+// A score asked to stop above a bound is the exact mean when the mean is within it (to the
+// last bit), and some value above the bound when it is not.
+TEST(PartDistanceField, ABoundedScoreIsExactWithinItsBoundAndAboveItOtherwise) {
+  const PartDistanceField field(relief_points(0.5), {.voxel_mm = kVoxelMm, .margin_mm = 12});
+  const RegistrationPoints scene = as_scene(relief_points(3.0));
+  const RigidTransform lifted{Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, 4)};
+  const double mean_mm2 = field_truncated_mean_square_mm2(scene, field, lifted, 10.0);
+  ASSERT_GT(mean_mm2, 4.0);
+  EXPECT_EQ(field_truncated_mean_square_mm2(scene, field, lifted, 10.0, mean_mm2), mean_mm2);
+  EXPECT_EQ(field_truncated_mean_square_mm2(scene, field, lifted, 10.0, 2 * mean_mm2), mean_mm2);
+  for (double bound_mm2 : {0.0, 1.0, 0.5 * mean_mm2}) {
+    const double abandoned = field_truncated_mean_square_mm2(scene, field, lifted, 10.0, bound_mm2);
+    EXPECT_GT(abandoned, bound_mm2) << bound_mm2;
+    EXPECT_NE(abandoned, mean_mm2) << bound_mm2;
+  }
+}
+
 // Half the scene moved 6 mm off the surface: half of it is within the gate's 2 mm, so the
 // gate at 0.5 just passes it, and at 0.6 not; all of it moved off fails.
 TEST(PartDistanceField, FractionWithinCountsThePointsNearTheSurface) {
