@@ -329,8 +329,44 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
                     percent(result.ambiguity.discriminating_share) + " % of it");
     }
   }
+  RecognitionCandidate refined = *best;
+  if (refine_free_motion(points, surfaces, refined)) {
+    result.free_motion_refined = true;
+    result.T_scanner_part = (refined.T_model_scene.inverse() * view.T_scanner_part).normalized();
+    result.score = refined.score;
+    result.registration_rms_mm = refined.rms_mm;
+    result.inlier_fraction = refined.inlier_fraction;
+  }
   result.status = RecognitionStatus::kOk;
   return finish("");
+}
+
+bool Recognizer::refine_free_motion(const ScenePoints& scene_points, ModelSurfaces& surfaces,
+                                    RecognitionCandidate& candidate) const {
+  if (!parameters_.free_motion.enabled) return false;
+  const RegistrationPoints& model = surfaces.points(candidate.view);
+  RegistrationParameters fine = parameters_.registration;
+  fine.max_iterations = parameters_.fine_registration_iterations;
+  // One more pass from the registered pose tells which motion its inliers leave free.
+  const RegistrationResult registered =
+      register_views(scene_points.all, model, candidate.T_model_scene, fine);
+  bool moved = false;
+  const RigidTransform start =
+      search_free_motion(scene_points.coarse, model, registered, parameters_.registration,
+                         parameters_.support.inlier_distance_mm, parameters_.free_motion, moved);
+  if (!moved) return false;
+  const RegistrationResult again = register_views(scene_points.all, model, start, fine);
+  if (again.status == RegistrationStatus::kInvalidInput) return false;
+  const PartSupport support =
+      measure_part_support(scene_points.all, model_base_, candidate.view, again.T_model_scene,
+                           parameters_.registration, parameters_.support, surfaces);
+  if (!(support.inlier_fraction > candidate.inlier_fraction)) return false;
+  candidate.T_model_scene = again.T_model_scene;
+  candidate.rms_mm = support.rms_mm;
+  candidate.inlier_fraction = support.inlier_fraction;
+  candidate.score =
+      candidate_score(support.inlier_fraction, support.rms_mm, candidate.goodness, parameters_);
+  return true;
 }
 
 RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene, const ScenePoints& scene_points,

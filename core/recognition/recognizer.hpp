@@ -51,6 +51,7 @@
 #include "core/recognition/resting_pose_search.hpp"
 #include "core/recognition/size_variants.hpp"
 #include "core/recognition/surface_seen.hpp"
+#include "core/registration/free_motion_search.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/registration/view_registration.hpp"
 #include "core/representation/cosmos_pipeline.hpp"
@@ -143,6 +144,8 @@ struct RecognitionParameters {
   SizeVariantParameters size_variants;
   // The model surfaces a recognition keeps unpacked at once (model_surface.hpp).
   ModelSurfaceCacheParameters surfaces;
+  // The winner's pose along the motion its registration left free (free_motion_search.hpp).
+  FreeMotionSearchParameters free_motion;
 
   template <class Visitor>
   void visit(Visitor& v) {
@@ -193,6 +196,7 @@ struct RecognitionParameters {
     v("ambiguity", ambiguity, "rejection as ambiguous between two parts (§5.3.6, §5.4)");
     v("size_variants", size_variants, "one shape at several sizes: told apart by the fit");
     v("surfaces", surfaces, "the model surfaces a recognition keeps unpacked");
+    v("free_motion", free_motion, "the winner's pose along the motion registration left free");
   }
 };
 
@@ -229,6 +233,9 @@ struct RecognitionResult {
   int view = -1;       // ModelBase::views index of the winner
   // The part of the best registered candidate, also when it was rejected (-1: none registered).
   int best_candidate_part = -1;
+  // The winner's pose was moved along the motion its registration left free
+  // (free_motion_search.hpp): it explains more of the scene there.
+  bool free_motion_refined = false;
   double score = 0;
   double spectral_distance = 0;
   double registration_rms_mm = 0;
@@ -319,6 +326,11 @@ class Recognizer {
   // (part_support.hpp).
   void register_candidate(const ScenePoints& scene_points,
                           const std::vector<ViewPoseHypothesis>& starts, ModelSurfaces& surfaces,
+                          RecognitionCandidate& candidate) const;
+  // The winner moved along the motion its registration left free (free_motion_search.hpp)
+  // and registered again; kept (in `candidate`) when its part explains more of the scene.
+  // True when it moved.
+  bool refine_free_motion(const ScenePoints& scene_points, ModelSurfaces& surfaces,
                           RecognitionCandidate& candidate) const;
 
   const ModelBase& model_base_;

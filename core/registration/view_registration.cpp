@@ -95,6 +95,11 @@ struct Increment {
   RigidTransform T_new_old;
   double rotation_rad = 0.0;
   double centroid_shift_mm = 0.0;  // how far the inliers' centroid moves
+  // RegistrationResult's weakest motion, of this pass.
+  Eigen::Matrix<double, 6, 1> weakest_motion = Eigen::Matrix<double, 6, 1>::Zero();
+  double lever_mm = 1.0;
+  double weakest_constraint = 0.0;
+  Eigen::Vector3d centroid_mm = Eigen::Vector3d::Zero();
 };
 
 // Step (ii): d_s after a small motion (omega about the centroid c, then tau) is, to first
@@ -130,6 +135,10 @@ SolveStatus solve_increment(const std::vector<Correspondence>& inliers, Incremen
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eigen(scale.asDiagonal() * H *
                                                                          scale.asDiagonal());
   const double min_constraint = kMinMeanConstraint * total_weight;
+  increment.weakest_motion = eigen.eigenvectors().col(0);
+  increment.lever_mm = 1.0 / scale(0);
+  increment.weakest_constraint = eigen.eigenvalues()(0) / total_weight;
+  increment.centroid_mm = centroid;
   int weak_directions = 0;
   for (int k = 0; k < 6; ++k) weak_directions += eigen.eigenvalues()(k) > min_constraint ? 0 : 1;
   if (weak_directions == 6) return SolveStatus::kUnconstrained;
@@ -206,6 +215,10 @@ RegistrationResult register_views(const RegistrationPoints& scene, const Registr
     Increment increment;
     const SolveStatus solved = solve_increment(inliers, increment);
     planar = solved == SolveStatus::kPlanar;
+    result.weakest_motion = increment.weakest_motion;
+    result.weakest_lever_mm = increment.lever_mm;
+    result.weakest_constraint = increment.weakest_constraint;
+    result.twist_centre_mm = increment.centroid_mm;
     if (solved == SolveStatus::kUnconstrained) {
       result.status = RegistrationStatus::kDegenerate;
       break;

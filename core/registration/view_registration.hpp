@@ -107,6 +107,16 @@ struct RegistrationResult {
   int inliers = 0;
   int iterations = 0;
   long intersection_steps = 0;  // total correspondence work spent
+  // The last pass's least constrained motion (§6.8): a small rotation omega about
+  // twist_centre_mm then a translation tau, in the model frame, as (omega, tau) with the
+  // rotation scaled by the inliers' RMS lever arm (so that both halves are in mm of surface
+  // motion), unit length; and how much the inliers constrain it (the smallest eigenvalue of
+  // the scaled normal equations over their total weight). A surface of revolution leaves the
+  // turn about its axis nearly free: the step leaves it at whatever the start made it.
+  Eigen::Matrix<double, 6, 1> weakest_motion = Eigen::Matrix<double, 6, 1>::Zero();
+  double weakest_lever_mm = 1.0;
+  double weakest_constraint = 0.0;
+  Eigen::Vector3d twist_centre_mm = Eigen::Vector3d::Zero();
 };
 
 RegistrationResult register_views(const RegistrationPoints& scene, const RegistrationPoints& model,
