@@ -350,12 +350,11 @@ bool Recognizer::refine_free_motion(const ScenePoints& scene_points, ModelSurfac
   // One more pass from the registered pose tells which motion its inliers leave free.
   const RegistrationResult registered =
       register_views(scene_points.all, model, candidate.T_model_scene, fine);
-  bool moved = false;
-  const RigidTransform start =
+  const std::optional<RigidTransform> start =
       search_free_motion(scene_points.coarse, model, registered, parameters_.registration,
-                         parameters_.support.inlier_distance_mm, parameters_.free_motion, moved);
-  if (!moved) return false;
-  const RegistrationResult again = register_views(scene_points.all, model, start, fine);
+                         parameters_.support.inlier_distance_mm, parameters_.free_motion);
+  if (!start) return false;
+  const RegistrationResult again = register_views(scene_points.all, model, *start, fine);
   if (again.status == RegistrationStatus::kInvalidInput) return false;
   const PartSupport support =
       measure_part_support(scene_points.all, model_base_, candidate.view, again.T_model_scene,

@@ -6,16 +6,16 @@
 
 namespace cosmos {
 
-RigidTransform search_free_motion(const RegistrationPoints& scene, const RegistrationPoints& model,
-                                  const RegistrationResult& registered,
-                                  const RegistrationParameters& registration,
-                                  double inlier_distance_mm,
-                                  const FreeMotionSearchParameters& parameters, bool& moved) {
-  moved = false;
+std::optional<RigidTransform> search_free_motion(const RegistrationPoints& scene,
+                                                 const RegistrationPoints& model,
+                                                 const RegistrationResult& registered,
+                                                 const RegistrationParameters& registration,
+                                                 double inlier_distance_mm,
+                                                 const FreeMotionSearchParameters& parameters) {
   const RigidTransform& T_registered = registered.T_model_scene;
   if (!parameters.enabled || registered.status == RegistrationStatus::kInvalidInput ||
       !(registered.weakest_constraint < parameters.max_constraint))
-    return T_registered;
+    return std::nullopt;
   RegistrationParameters strict = registration;
   strict.max_correspondence_distance_mm = inlier_distance_mm;
   const auto explained = [&](const RigidTransform& T) {
@@ -69,8 +69,7 @@ RigidTransform search_free_motion(const RegistrationPoints& scene, const Registr
       best = T;
     }
   }
-  if (best_fraction < registered_fraction + parameters.min_gain) return T_registered;
-  moved = true;
+  if (best_fraction < registered_fraction + parameters.min_gain) return std::nullopt;
   return best;
 }
 

@@ -11,6 +11,8 @@
 // and the position that explains the most scene points on the matched view is kept when it
 // explains clearly more than the registered one; the registration is then run again from
 // it.
+#include <optional>
+
 #include "core/parameter_visitor.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/registration/view_registration.hpp"
@@ -46,12 +48,12 @@ struct FreeMotionSearchParameters {
 
 // The position along `registered`'s weakest motion that explains the most of `scene` on
 // `model` (points within `inlier_distance_mm`, one correspondence pass each), when it
-// explains at least min_gain more than registered.T_model_scene does; else that pose.
-// `moved` tells which.
-RigidTransform search_free_motion(const RegistrationPoints& scene, const RegistrationPoints& model,
-                                  const RegistrationResult& registered,
-                                  const RegistrationParameters& registration,
-                                  double inlier_distance_mm,
-                                  const FreeMotionSearchParameters& parameters, bool& moved);
+// explains at least min_gain more than registered.T_model_scene does; else none.
+std::optional<RigidTransform> search_free_motion(const RegistrationPoints& scene,
+                                                 const RegistrationPoints& model,
+                                                 const RegistrationResult& registered,
+                                                 const RegistrationParameters& registration,
+                                                 double inlier_distance_mm,
+                                                 const FreeMotionSearchParameters& parameters);
 
 }  // namespace cosmos

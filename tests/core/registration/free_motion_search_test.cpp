@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "core/range_image.hpp"
 #include "core/registration/registration_points.hpp"
@@ -71,11 +72,10 @@ TEST(FreeMotionSearch, FindsTheTurnAboutABarrelsAxisThatRegistrationLeftFree) {
   // than the default bound (set for whole parts' views) lets through.
   FreeMotionSearchParameters search;
   search.max_constraint = 0.02;
-  bool moved = false;
-  const RigidTransform found =
-      search_free_motion(scene, model, registered, registration, 0.2, search, moved);
-  ASSERT_TRUE(moved);
-  const RegistrationResult again = register_views(scene, model, found, registration);
+  const std::optional<RigidTransform> found =
+      search_free_motion(scene, model, registered, registration, 0.2, search);
+  ASSERT_TRUE(found.has_value());
+  const RegistrationResult again = register_views(scene, model, *found, registration);
   // The scene turned by +12 degrees about x: registered onto the model it turns back.
   const Eigen::AngleAxisd turn(again.T_model_scene.rotation);
   EXPECT_NEAR(turn.angle() / kDeg, 12.0, 1.5);
@@ -94,19 +94,17 @@ TEST(FreeMotionSearch, LeavesAConstrainedPoseOrADisabledSearchAlone) {
       register_views(scene, model, RigidTransform{}, RegistrationParameters{});
   FreeMotionSearchParameters constrained_only;
   constrained_only.max_constraint = 0;  // nothing is free enough to search
-  bool moved = true;
-  const RigidTransform kept = search_free_motion(scene, model, registered, RegistrationParameters{},
-                                                 0.2, constrained_only, moved);
-  EXPECT_FALSE(moved);
-  EXPECT_TRUE(kept.rotation.isApprox(registered.T_model_scene.rotation));
+  EXPECT_FALSE(
+      search_free_motion(scene, model, registered, RegistrationParameters{}, 0.2, constrained_only)
+          .has_value());
   // Already at the truth: no position explains more.
-  search_free_motion(scene, model, registered, RegistrationParameters{}, 0.2,
-                     FreeMotionSearchParameters{}, moved);
-  EXPECT_FALSE(moved);
+  EXPECT_FALSE(search_free_motion(scene, model, registered, RegistrationParameters{}, 0.2,
+                                  FreeMotionSearchParameters{})
+                   .has_value());
   FreeMotionSearchParameters off;
   off.enabled = false;
-  search_free_motion(scene, model, registered, RegistrationParameters{}, 0.2, off, moved);
-  EXPECT_FALSE(moved);
+  EXPECT_FALSE(
+      search_free_motion(scene, model, registered, RegistrationParameters{}, 0.2, off).has_value());
 }
 
 }  // namespace
