@@ -1,5 +1,7 @@
 #include "core/recognition/part_ambiguity.hpp"
 
+#include <algorithm>
+
 namespace cosmos {
 
 PartAmbiguity judge_part_ambiguity(const RegistrationPoints& scene, const ModelBase& base,
@@ -21,10 +23,15 @@ PartAmbiguity judge_part_ambiguity(const RegistrationPoints& scene, const ModelB
     judgement.winner_only_points += by_winner && !by_rival;
     judgement.rival_only_points += by_rival && !by_winner;
   }
-  const int discriminating = judgement.winner_only_points + judgement.rival_only_points;
-  judgement.discriminating_fraction = static_cast<double>(discriminating) / scene.size();
+  const auto contradicted = [&parameters](const PlacedCandidate& placed) {
+    return std::max(0.0, 1 - placed.seen_fraction - parameters.contradiction_floor);
+  };
+  const double scene_points = scene.size();
+  const double for_winner = judgement.winner_only_points / scene_points + contradicted(rival);
+  const double for_rival = judgement.rival_only_points / scene_points + contradicted(winner);
+  judgement.discriminating_fraction = for_winner + for_rival;
   judgement.discriminating_share =
-      discriminating > 0 ? static_cast<double>(judgement.winner_only_points) / discriminating : 0;
+      judgement.discriminating_fraction > 0 ? for_winner / judgement.discriminating_fraction : 0;
   judgement.ambiguous = judgement.discriminating_share < parameters.min_discriminating_share ||
                         judgement.discriminating_fraction < parameters.min_discriminating_fraction;
   return judgement;

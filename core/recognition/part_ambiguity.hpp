@@ -8,12 +8,17 @@
 // sends the part to the manual bin.
 //
 // Two parts that explain a scene almost equally (support and residual after registration,
-// ch. 6) are told apart only where the two placed parts differ: the scene points that one of
-// them explains (within support.inlier_distance_mm of its surface, part_support.hpp) and the
-// other does not. The points both explain say nothing about which part it is, so they are
-// left out: the winner stands when it explains at least min_discriminating_share of the
-// discriminating points and they are at least min_discriminating_fraction of the scene; else
-// the scene is rejected as ambiguous between the two parts rather than guessed.
+// ch. 6) are told apart only where the two placed parts differ, both ways. One way, the scene
+// points that one of them explains (within support.inlier_distance_mm of its surface,
+// part_support.hpp) and the other does not; the points both explain say nothing about which
+// part it is, so they are left out. The other way, each part's own placed surface that the
+// scene contradicts (surface_seen.hpp: where the scanner saw belt or a lower surface): a plate
+// explains every point of a bracket's face, but puts surface where the bracket has none. Each
+// part's evidence is the share of the scene only it explains plus the share of the other's
+// surface the scene contradicts beyond contradiction_floor: the winner stands when it has at least
+// min_discriminating_share of the evidence and the evidence is at least
+// min_discriminating_fraction; else the scene is rejected as ambiguous between the two parts
+// rather than guessed.
 //
 // Symmetry: candidates of one part are never rivals, whatever their poses. A part declared
 // symmetric fits its scene equally in every pose its symmetry maps onto itself (the matching
@@ -39,6 +44,14 @@ struct PartAmbiguityParameters {
   double examined_score_margin = 0.1;
   double min_discriminating_share = 0.6;
   double min_discriminating_fraction = 0.03;
+  // A part's placed view is contradicted this much even in its true pose (its silhouette a
+  // pixel off, the degrees between the matched view and the scene's viewing direction, a
+  // registration a little off): only what is contradicted beyond it is evidence.
+  double contradiction_floor = 0.15;
+  // Of the candidates within examined_score_margin of the best score, one whose two-way fit
+  // (the share of the scene it explains times the share of its view seen) is better by this
+  // wins instead: a smaller difference is registration noise between near-identical parts.
+  double two_way_fit_margin = 0.1;
   // Verification stops at the first view that explains sufficient_support of the scene; then
   // up to this many further selected views, each of a part not verified yet, are verified so
   // that the winner has a rival to be compared with.
@@ -52,27 +65,35 @@ struct PartAmbiguityParameters {
     v("examined_score_margin", examined_score_margin,
       "a rival part scoring within this of the winner is examined (§5.3.6)", Range{0, 1});
     v("min_discriminating_share", min_discriminating_share,
-      "of the scene points only one of the two explains, the winner's share at least", Range{0, 1});
+      "of the evidence telling the two apart, the winner's share at least", Range{0, 1});
     v("min_discriminating_fraction", min_discriminating_fraction,
-      "those points, of all the scene's, at least; else ambiguous", Range{0, 1});
+      "the evidence (scene share one explains, view share contradicted) at least", Range{0, 1});
+    v("contradiction_floor", contradiction_floor,
+      "a placed view's contradicted share below this is no evidence", Range{0, 1});
+    v("two_way_fit_margin", two_way_fit_margin,
+      "a close candidate fitting this much better both ways wins instead", Range{0, 1});
     v("rival_verifications", rival_verifications,
       "views of other parts verified after a sufficient one", Range{0, 1000});
     v("search_rival_part", search_rival_part, "the rival part's views searched before comparing");
   }
 };
 
-// One placed part: its candidate's view (ModelBase::views) and T_model_scene onto it.
+// One placed part: its candidate's view (ModelBase::views), T_model_scene onto it, and the
+// fraction of that view the scene shows there (SurfaceSeen::seen_fraction).
 struct PlacedCandidate {
   int view = -1;
   RigidTransform T_model_scene;
+  double seen_fraction = 1;
 };
 
 struct PartAmbiguity {
   bool ambiguous = false;
-  int winner_only_points = 0;          // scene points the winner explains and the rival does not
-  int rival_only_points = 0;           // and the other way round
-  double discriminating_share = 1;     // winner_only / (winner_only + rival_only)
-  double discriminating_fraction = 0;  // (winner_only + rival_only) / scene points
+  int winner_only_points = 0;  // scene points the winner explains and the rival does not
+  int rival_only_points = 0;   // and the other way round
+  // The winner's evidence over both parts' (winner_only / scene points + the rival's
+  // contradicted fraction, and the other way round), and their sum.
+  double discriminating_share = 1;
+  double discriminating_fraction = 0;
 };
 
 // The comparison above, on `scene` (the recognizer's control points). Only called for a

@@ -125,7 +125,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   const std::vector<SpectralCandidate> selected = selector_.select(analysis.moments);
   result.timings.selection_ms = elapsed_ms(stage);
 
-  ScenePoints points{std::move(scene_points.points), {}};
+  ScenePoints points{std::move(scene_points.points), {}, scene};
   points.coarse = spread_subset(points.all, parameters_.coarse_points);
   ModelSurfaces surfaces(model_base_, parameters_.surfaces);
   std::size_t next = 0;
@@ -133,9 +133,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
     result.candidates.push_back(verify(analysis, points, selected[next++], surfaces,
                                        result.timings.matching_ms, result.timings.registration_ms));
     ++result.views_examined;
-    if (result.candidates.back().registered &&
-        result.candidates.back().inlier_fraction >= parameters_.sufficient_support)
-      break;
+    if (explains_scene(result.candidates.back())) break;
   }
   // A view that explains enough ends verification, but the decision needs the best other part
   // to compare with (part_ambiguity.hpp): the next selected views of parts not verified yet.
@@ -154,20 +152,16 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   }
   // A candidate is only as good as its placed surface is seen in the scene (surface_seen.hpp):
   // one that puts surface where the scanner saw none explains the scene's points by chance.
-  const auto seen_fraction = [&](const RecognitionCandidate& candidate) {
-    return measure_surface_seen(scene, surfaces.points(candidate.view), candidate.T_model_scene,
-                                parameters_.surface_seen)
-        .seen_fraction();
+  const auto seen_fraction = [](const RecognitionCandidate& candidate) {
+    return candidate.seen_fraction;
   };
-  const RecognitionCandidate* best = best_candidate(result.candidates);
-  const auto explains_scene = [&] {
-    best = best_candidate(result.candidates);
-    return best && best->inlier_fraction >= parameters_.sufficient_support && at_rest(*best) &&
-           seen_fraction(*best) >= parameters_.min_seen_fraction;
+  const auto explained = [&] {
+    return std::any_of(result.candidates.begin(), result.candidates.end(),
+                       [&](const RecognitionCandidate& c) { return explains_scene(c); });
   };
   // Only parts known to rest are searched in their resting poses: a tumbled part lies in none,
   // and the search only delays the others.
-  if (parameters_.resting.search && parameters_.resting.parts_rest && !explains_scene()) {
+  if (parameters_.resting.search && parameters_.resting.parts_rest && !explained()) {
     result.resting_searched = true;
     search_candidate_parts(analysis, points, surfaces, result, {}, true);
   }
@@ -175,19 +169,20 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   // add poses the decision refuses, except for the parts whose resting poses are not known
   // well enough to refuse a lean.
   const bool rest_searched = parameters_.resting.parts_rest && result.resting_searched;
-  if (!explains_scene() && parameters_.vote_index.enabled && !rest_searched)
+  if (!explained() && parameters_.vote_index.enabled && !rest_searched)
     verify_voted_poses(analysis, points, surfaces, result);
   const std::vector<int> uncovered = rest_searched ? poorly_covered_parts_ : std::vector<int>{};
-  if (!explains_scene() && (!rest_searched || !uncovered.empty())) {
+  if (!explained() && (!rest_searched || !uncovered.empty())) {
     result.catalog_searched =
         search_candidate_parts(analysis, points, surfaces, result, uncovered) && !rest_searched;
-    best = best_candidate(result.candidates);
   }
+  const RecognitionCandidate* best = best_candidate(result.candidates);
   if (!best) return finish("no candidate view could be registered");
 
-  // The winner is the best candidate whose surface is seen; the rival the best such
-  // candidate of another part (part_ambiguity.hpp). Among the sizes of one shape the two-way
-  // fit chooses (size_variants.hpp).
+  // The winner is chosen among the candidates whose surface is seen by score and by the
+  // two-way fit (the share of the scene it explains times the share of its surface the scene
+  // shows), among the sizes of one shape by the fit alone (size_variants.hpp); the rival is
+  // the best such candidate of another part (part_ambiguity.hpp).
   const RecognitionCandidate* rival = nullptr;
   const RecognitionCandidate* winner = nullptr;
   bool best_at_rest = true;
@@ -195,7 +190,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
     const std::vector<int>& family = size_variants_[static_cast<std::size_t>(part)];
     return std::binary_search(family.begin(), family.end(), other);
   };
-  const auto size_fit = [&](const RecognitionCandidate& candidate) {
+  const auto two_way_fit = [&](const RecognitionCandidate& candidate) {
     return candidate.inlier_fraction * seen_fraction(candidate);
   };
   const auto qualifies = [&](const RecognitionCandidate& candidate) {
@@ -207,30 +202,44 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
     result.seen_fraction = seen_fraction(*best);
     best_at_rest = at_rest(*best);
     const std::vector<const RecognitionCandidate*> ranked = ranked_candidates(result.candidates);
-    for (const RecognitionCandidate* candidate : ranked)
-      if (qualifies(*candidate)) {
+    // Of the qualifying candidates within examined_score_margin of the best, one that fits
+    // better both ways (the scene's points on its surface, its surface where the scene is) by
+    // two_way_fit_margin wins instead. A part that contains the scene (a plate under a
+    // bracket's face) explains its points as well as the scene's own part, and puts surface
+    // where the scanner saw the belt.
+    const RecognitionCandidate* top = nullptr;
+    for (const RecognitionCandidate* candidate : ranked) {
+      if (!qualifies(*candidate)) continue;
+      if (!top) top = winner = candidate;
+      if (top->score - candidate->score < parameters_.ambiguity.examined_score_margin &&
+          two_way_fit(*candidate) > two_way_fit(*winner) + parameters_.ambiguity.two_way_fit_margin)
         winner = candidate;
-        break;
-      }
+    }
     if (winner && parameters_.size_variants.search &&
         !size_variants_[static_cast<std::size_t>(winner->part)].empty()) {
       const int family_part = winner->part;
-      double best_fit = size_fit(*winner);
+      double best_fit = two_way_fit(*winner);
       for (const RecognitionCandidate* candidate : ranked)
         if (is_size_variant(family_part, candidate->part) && qualifies(*candidate) &&
-            size_fit(*candidate) > best_fit) {
-          best_fit = size_fit(*candidate);
+            two_way_fit(*candidate) > best_fit) {
+          best_fit = two_way_fit(*candidate);
           winner = candidate;
         }
     }
     if (!winner) return;
     result.seen_fraction = seen_fraction(*winner);
-    for (const RecognitionCandidate* candidate : ranked)
-      if (candidate->part != winner->part && qualifies(*candidate)) {
-        rival = candidate;
-        result.runner_up_seen_fraction = seen_fraction(*candidate);
-        break;
-      }
+    // The best other size of the winner's shape, when one qualifies, is its rival: the two
+    // are told apart by their two-way fits, which a third part scoring higher cannot settle.
+    for (bool sizes_only : {true, false}) {
+      for (const RecognitionCandidate* candidate : ranked)
+        if (candidate->part != winner->part && qualifies(*candidate) &&
+            (!sizes_only || is_size_variant(winner->part, candidate->part))) {
+          rival = candidate;
+          break;
+        }
+      if (rival) break;
+    }
+    if (rival) result.runner_up_seen_fraction = seen_fraction(*rival);
   };
   choose();
   // A rival only verified on one selected view may have registered far from its best pose;
@@ -304,18 +313,18 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   // points alone) cannot see: a larger size explains a smaller one's scene as well.
   const bool sizes_told_apart =
       rival && is_size_variant(best->part, rival->part) && parameters_.size_variants.search &&
-      size_fit(*best) - size_fit(*rival) >= parameters_.size_variants.fit_margin;
+      two_way_fit(*best) - two_way_fit(*rival) >= parameters_.size_variants.fit_margin;
   if (rival && is_size_variant(best->part, rival->part)) {
-    result.size_fit = size_fit(*best);
-    result.runner_up_size_fit = size_fit(*rival);
+    result.size_fit = two_way_fit(*best);
+    result.runner_up_size_fit = two_way_fit(*rival);
   }
   if (rival && !sizes_told_apart &&
       best->score - rival->score < parameters_.ambiguity.examined_score_margin) {
     result.ambiguity_examined = true;
-    result.ambiguity =
-        judge_part_ambiguity(points.all, model_base_, {best->view, best->T_model_scene},
-                             {rival->view, rival->T_model_scene}, parameters_.registration,
-                             parameters_.support, parameters_.ambiguity, surfaces);
+    result.ambiguity = judge_part_ambiguity(
+        points.all, model_base_, {best->view, best->T_model_scene, best->seen_fraction},
+        {rival->view, rival->T_model_scene, rival->seen_fraction}, parameters_.registration,
+        parameters_.support, parameters_.ambiguity, surfaces);
     if (result.ambiguity.ambiguous) {
       result.part = -1;
       const auto percent = [](double fraction) {
@@ -325,8 +334,8 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
                     model_base_.parts[static_cast<std::size_t>(best->part)].name + " and " +
                     model_base_.parts[static_cast<std::size_t>(rival->part)].name + ": " +
                     percent(result.ambiguity.discriminating_fraction) +
-                    " % of the surface tells them apart, the first explains " +
-                    percent(result.ambiguity.discriminating_share) + " % of it");
+                    " % of scene and surfaces tell them apart, " +
+                    percent(result.ambiguity.discriminating_share) + " % of it for the first");
     }
   }
   RecognitionCandidate refined = *best;
@@ -396,6 +405,11 @@ RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene, const ScenePo
   return candidate;
 }
 
+bool Recognizer::explains_scene(const RecognitionCandidate& candidate) const {
+  return candidate.registered && candidate.inlier_fraction >= parameters_.sufficient_support &&
+         candidate.seen_fraction >= parameters_.min_seen_fraction && at_rest(candidate);
+}
+
 bool Recognizer::at_rest(const RecognitionCandidate& candidate) const {
   const RestingSearchParameters& resting = parameters_.resting;
   if (!resting.parts_rest && !resting.parts_touch_belt) return true;
@@ -461,6 +475,10 @@ void Recognizer::register_candidate(const ScenePoints& scene_points,
   candidate.inlier_fraction = support.inlier_fraction;
   candidate.score =
       candidate_score(support.inlier_fraction, support.rms_mm, candidate.goodness, parameters_);
+  candidate.seen_fraction =
+      measure_surface_seen(scene_points.image, surfaces.points(candidate.view),
+                           candidate.T_model_scene, parameters_.surface_seen)
+          .seen_fraction();
 }
 
 }  // namespace cosmos

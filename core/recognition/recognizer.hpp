@@ -137,7 +137,7 @@ struct RecognitionParameters {
   // parts that explained 75-80 % of a mechanical part's scene showed 10-20 % of their own
   // surface; correct ones nearly always more than half.
   SurfaceSeenParameters surface_seen;
-  double min_seen_fraction = 0.3;
+  double min_seen_fraction = 0.4;
   // Rejection as ambiguous between two parts (§5.3.6, §5.4).
   PartAmbiguityParameters ambiguity;
   // One shape at several sizes (size_variants.hpp).
@@ -212,6 +212,8 @@ struct RecognitionCandidate {
   double rms_mm = 0;
   double inlier_fraction = 0;
   double score = 0;  // the decision's figure of merit, in [0, 1]
+  // How much of the matched view, placed, the scene shows (surface_seen.hpp).
+  double seen_fraction = 0;
   RigidTransform T_model_scene;
   bool from_pose_search = false;     // proposed by the fallback search, not by §5.2 selection
   bool from_vote_index = false;      // proposed by the vote index (core/indexing/)
@@ -292,11 +294,16 @@ class Recognizer {
   const PatchPairTable& patch_pair_table() const { return patch_pair_table_; }
 
  private:
-  // The scene's control points, and the spread subset of coarse_points taken once.
+  // The scene's control points, the spread subset of coarse_points taken once, and the
+  // scene's image, where a placed candidate's surface is looked up (surface_seen.hpp).
   struct ScenePoints {
     RegistrationPoints all;
     RegistrationPoints coarse;
+    const RangeImage& image;
   };
+  // The candidate reaches sufficient_support, at rest, and could win (min_seen_fraction):
+  // no other part is likely to explain the scene better, so the search may end.
+  bool explains_scene(const RecognitionCandidate& candidate) const;
 
   RecognitionCandidate verify(const ViewAnalysis& scene, const ScenePoints& scene_points,
                               const SpectralCandidate& selected, ModelSurfaces& surfaces,

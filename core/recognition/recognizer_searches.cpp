@@ -111,9 +111,7 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
       result.timings.registration_ms += elapsed_ms(stage);
       result.candidates.push_back(candidate);
       // As in verification: a pose that explains this much of the scene ends the search.
-      if (candidate.registered && candidate.inlier_fraction >= parameters_.sufficient_support &&
-          at_rest(candidate))
-        return true;
+      if (explains_scene(candidate)) return true;
     }
     return false;
   };

@@ -259,7 +259,7 @@ std::string report_html(std::span<const EvaluationRecord> records, const Evaluat
                  : html_escape(record.runner_up_name) + format(" (%.3f", record.runner_up_score) +
                        format(", %.2f seen)", record.runner_up_seen_fraction) +
                        (record.ambiguity_examined
-                            ? format("; %.2f of the scene tells them apart, ",
+                            ? format("; %.2f of scene and surfaces tell them apart, ",
                                      record.discriminating_fraction) +
                                   format("%.2f of it is the winner's", record.discriminating_share)
                             : std::string()))

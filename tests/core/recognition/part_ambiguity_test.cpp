@@ -19,6 +19,7 @@
 #include "sim/part_catalog.hpp"
 #include "sim/part_pose.hpp"
 #include "sim/part_scan.hpp"
+#include "tests/common/plane_view_points.hpp"
 
 namespace cosmos {
 namespace {
@@ -47,6 +48,46 @@ RangeImage scan(const PartEntry& entry, std::uint64_t seed) {
   scanner.seed = seed;
   return scan_single_part(load_mesh(entry.mesh_path, entry.size_mm), entry.name,
                           random_rotation(seed), scanner, ConditioningParameters{});
+}
+
+// Two parts whose placed views are one plane explain every point of a scene on it alike: only
+// the surface each puts where the scene contradicts it tells them apart. Evidence for each:
+// the scene only it explains (none here) plus the share of the other's view contradicted
+// beyond the floor (0.15 by default).
+TEST(PartAmbiguity, PartsThatExplainTheSceneAlikeAreToldApartByTheSurfaceTheSceneContradicts) {
+  ModelBase base;
+  base.parts = {{"plate", "plate.off", 24, 24, false, {}, {}},
+                {"bracket", "bracket.off", 24, 24, false, {}, {}}};
+  for (int part : {0, 1}) {
+    ModelBaseView view;
+    view.part_index = part;
+    view.registration = testing::plane_view_points(-6.0);
+    base.views.push_back(view);
+  }
+  const RegistrationPoints scene = testing::plane_view_points(-6.0);
+  ModelSurfaces surfaces(base, ModelSurfaceCacheParameters{});
+  const auto judge = [&](double winner_seen, double rival_seen) {
+    return judge_part_ambiguity(scene, base, {0, RigidTransform::identity(), winner_seen},
+                                {1, RigidTransform::identity(), rival_seen},
+                                RegistrationParameters{}, PartSupportParameters{},
+                                PartAmbiguityParameters{}, surfaces);
+  };
+  // The winner's view seen at 95 %, the rival's at 45 %: 0.4 of evidence against none.
+  const PartAmbiguity decided = judge(0.95, 0.45);
+  EXPECT_EQ(decided.winner_only_points, 0);
+  EXPECT_EQ(decided.rival_only_points, 0);
+  EXPECT_NEAR(decided.discriminating_fraction, 0.4, 1e-12);
+  EXPECT_NEAR(decided.discriminating_share, 1.0, 1e-12);
+  EXPECT_FALSE(decided.ambiguous);
+  // The other way round the winner has the weaker evidence (0.05 against 0.25)...
+  const PartAmbiguity weaker = judge(0.6, 0.8);
+  EXPECT_NEAR(weaker.discriminating_fraction, 0.3, 1e-12);
+  EXPECT_NEAR(weaker.discriminating_share, 0.05 / 0.3, 1e-12);
+  EXPECT_TRUE(weaker.ambiguous);
+  // ... and views contradicted within the floor are no evidence at all.
+  const PartAmbiguity alike = judge(0.9, 0.86);
+  EXPECT_EQ(alike.discriminating_fraction, 0.0);
+  EXPECT_TRUE(alike.ambiguous);
 }
 
 TEST(PartAmbiguity, APartAndItsSlightlyScaledCopyAreRejectedAsAmbiguousNotGuessed) {

@@ -12,24 +12,15 @@
 
 #include "core/modelbase/model_surface.hpp"
 #include "core/registration/registration_points.hpp"
+#include "tests/common/plane_view_points.hpp"
 
 namespace cosmos {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr double kPlaneHeightMm = 5.0;
+using testing::kPlaneHeightMm;
+using testing::plane_view_points;
 
-// The plane z = 5 mm seen over x in [x0, x0 + 13] mm, y in [-10, 10] mm (0.5 mm pixels): its
-// control points cover x in [x0 + 1, x0 + 12] (the 5x5 windows stay inside).
-RegistrationPoints plane_view_points(double x0_mm) {
-  RangeImage image(27, 41, 0.5, 0.5);
-  image.origin_x_mm = x0_mm;
-  image.origin_y_mm = -10.0;
-  for (float& z : image.z_mm.values()) z = static_cast<float>(kPlaneHeightMm);
-  RegistrationPointParameters parameters;
-  parameters.z_noise_sigma_mm = 0.02;
-  return build_registration_points(image, parameters).points;
-}
+constexpr double kDeg = std::numbers::pi / 180.0;
 
 Eigen::Vector3d direction_at_deg(double angle_deg) {
   return {std::sin(angle_deg * kDeg), 0.0, std::cos(angle_deg * kDeg)};
