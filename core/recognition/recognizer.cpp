@@ -406,8 +406,13 @@ RecognitionCandidate Recognizer::verify(const ViewAnalysis& scene, const ScenePo
 }
 
 bool Recognizer::explains_scene(const RecognitionCandidate& candidate) const {
+  // A part with other sizes in the base has all of them searched once it wins
+  // (size_variants.hpp); searching on would only find a near size's marginally better pose.
+  const double min_seen = size_variants_[static_cast<std::size_t>(candidate.part)].empty()
+                              ? parameters_.sufficient_seen_fraction
+                              : parameters_.min_seen_fraction;
   return candidate.registered && candidate.inlier_fraction >= parameters_.sufficient_support &&
-         candidate.seen_fraction >= parameters_.min_seen_fraction && at_rest(candidate);
+         candidate.seen_fraction >= min_seen && at_rest(candidate);
 }
 
 bool Recognizer::at_rest(const RecognitionCandidate& candidate) const {

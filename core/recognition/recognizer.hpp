@@ -90,6 +90,11 @@ struct RecognitionParameters {
   // it the pose search runs too, so a mechanical part whose flat faces another explains at
   // 60-80 % gets the chance to be explained better by its own views.
   double sufficient_support = 0.9;
+  // ... and whose matched view the scene shows at least this much of (surface_seen.hpp): a
+  // scene that is a subset of a larger part (a bracket's face, which every plate and channel
+  // contains) is explained one way by many parts, and ending there left the scene's own part
+  // unregistered.
+  double sufficient_seen_fraction = 0.75;
   PartSupportParameters support;  // what counts as explained scene surface
   // When no selected view reaches sufficient_support: the poses the catalog-wide vote index
   // proposes, verified like selected views.
@@ -170,6 +175,8 @@ struct RecognitionParameters {
       Range{0, 1000});
     v("sufficient_support", sufficient_support, "verification stops at this part support",
       Range{0, 1});
+    v("sufficient_seen_fraction", sufficient_seen_fraction,
+      "... with this much of its matched view seen in the scene", Range{0, 1});
     v("support", support, "what counts as explained scene surface");
     v("vote_index", vote_index, "votes for (part, pose) over the whole catalog");
     v("resting", resting, "the parts' stable poses on the belt, searched first");
@@ -301,8 +308,9 @@ class Recognizer {
     RegistrationPoints coarse;
     const RangeImage& image;
   };
-  // The candidate reaches sufficient_support, at rest, and could win (min_seen_fraction):
-  // no other part is likely to explain the scene better, so the search may end.
+  // The candidate reaches sufficient_support, at rest, with sufficient_seen_fraction of its
+  // view seen (min_seen_fraction for a part with other sizes): no other part is likely to
+  // explain the scene better, so the search may end.
   bool explains_scene(const RecognitionCandidate& candidate) const;
 
   RecognitionCandidate verify(const ViewAnalysis& scene, const ScenePoints& scene_points,
