@@ -200,7 +200,7 @@ CellWorld::SimulatedTruth CellWorld::simulated_truth_of(const PartRecognition& r
     const TriangleMesh mesh = load_mesh(entry->mesh_path, entry->size_mm);
     std::vector<Eigen::Vector3d> points_mm;
     for (const Eigen::Vector3f& vertex : mesh.vertices) points_mm.push_back(vertex.cast<double>());
-    add_s = std::make_unique<AddSDistance>(points_mm);
+    add_s = std::make_unique<AddSDistance>(points_mm, mesh);
   }
   const RigidPose true_pose{placed->T_belt_part.rotation(), placed->T_belt_part.translation()};
   truth.add_s_mm = add_s->add_s_mm(true_pose, {T_belt_part.rotation, T_belt_part.translation_mm});

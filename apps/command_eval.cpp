@@ -24,6 +24,7 @@
 #include "core/io/model_base_file.hpp"
 #include "core/io/recorded_parameters.hpp"
 #include "scanner/scanner_config.hpp"
+#include "sim/evaluation/add_s_distance.hpp"
 #include "sim/evaluation/evaluation_confusions.hpp"
 #include "sim/evaluation/evaluation_report.hpp"
 #include "sim/evaluation/evaluation_scans.hpp"
@@ -139,14 +140,14 @@ void run(const EvalOptions& options) {
   const std::vector<EvaluationRecord> records =
       run_tests(plan, parts, scanner, conditioning, recognizer, base, options.threads);
 
-  std::vector<std::vector<Eigen::Vector3d>> points_by_catalog(catalog.parts.size());
+  std::vector<std::unique_ptr<AddSDistance>> add_s_by_catalog(catalog.parts.size());
   for (const EvaluationPart& part : parts)
-    points_by_catalog[static_cast<std::size_t>(part.catalog_index)] = part.model_points_mm;
-  const EvaluationMetrics metrics =
-      compute_metrics(records, [&](int part) -> std::span<const Eigen::Vector3d> {
-        if (part < 0 || part >= static_cast<int>(points_by_catalog.size())) return {};
-        return points_by_catalog[static_cast<std::size_t>(part)];
-      });
+    add_s_by_catalog[static_cast<std::size_t>(part.catalog_index)] =
+        std::make_unique<AddSDistance>(part.model_points_mm, part.mesh);
+  const EvaluationMetrics metrics = compute_metrics(records, [&](int part) -> const AddSDistance* {
+    if (part < 0 || part >= static_cast<int>(add_s_by_catalog.size())) return nullptr;
+    return add_s_by_catalog[static_cast<std::size_t>(part)].get();
+  });
   std::vector<std::string> names;
   for (const PartEntry& entry : catalog.parts) names.push_back(entry.name);
   write_evaluation_report(options.out, records, metrics, names);

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "sim/embree_triangle_geometry.hpp"
+
 namespace cosmos {
 namespace {
 
@@ -54,31 +56,8 @@ void EmbreeScene::check(const char* operation) const {
 }
 
 int EmbreeScene::add_mesh(const TriangleMesh& mesh) {
-  if (mesh.triangles.empty())
-    throw std::invalid_argument("EmbreeScene::add_mesh: mesh has no triangles");
-  const auto vertex_count = static_cast<int>(mesh.vertices.size());
-  for (const Eigen::Vector3i& triangle : mesh.triangles) {
-    if (triangle.minCoeff() < 0 || triangle.maxCoeff() >= vertex_count) {
-      throw std::invalid_argument("EmbreeScene::add_mesh: triangle index out of range");
-    }
-  }
-  RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-  // rtcSetNewGeometryBuffer pads the buffers as Embree's vector loads require.
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                               RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                               mesh.vertices.size()));
-  auto* indices = static_cast<unsigned*>(
-      rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                              3 * sizeof(unsigned), mesh.triangles.size()));
+  RTCGeometry geometry = new_triangle_geometry(device_, mesh, "EmbreeScene::add_mesh");
   check("rtcSetNewGeometryBuffer");
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-    for (int k = 0; k < 3; ++k) vertices[3 * v + static_cast<std::size_t>(k)] = mesh.vertices[v](k);
-  }
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    for (int k = 0; k < 3; ++k)
-      indices[3 * t + static_cast<std::size_t>(k)] = static_cast<unsigned>(mesh.triangles[t](k));
-  }
-  rtcCommitGeometry(geometry);
   RTCScene scene = rtcNewScene(device_);
   // Watertight intersection: a ray through a shared edge or vertex of the tessellation must
   // hit one of the triangles, not slip through to the belt.

@@ -150,11 +150,6 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
     ++result.views_examined;
     ++rivals;
   }
-  // A candidate is only as good as its placed surface is seen in the scene (surface_seen.hpp):
-  // one that puts surface where the scanner saw none explains the scene's points by chance.
-  const auto seen_fraction = [](const RecognitionCandidate& candidate) {
-    return candidate.seen_fraction;
-  };
   const auto explained = [&] {
     return std::any_of(result.candidates.begin(), result.candidates.end(),
                        [&](const RecognitionCandidate& c) { return explains_scene(c); });
@@ -191,15 +186,17 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
     return std::binary_search(family.begin(), family.end(), other);
   };
   const auto two_way_fit = [&](const RecognitionCandidate& candidate) {
-    return candidate.inlier_fraction * seen_fraction(candidate);
+    return candidate.inlier_fraction * candidate.seen_fraction;
   };
+  // A candidate is only as good as its placed surface is seen in the scene (surface_seen.hpp):
+  // one that puts surface where the scanner saw none explains the scene's points by chance.
   const auto qualifies = [&](const RecognitionCandidate& candidate) {
-    return at_rest(candidate) && seen_fraction(candidate) >= parameters_.min_seen_fraction;
+    return at_rest(candidate) && candidate.seen_fraction >= parameters_.min_seen_fraction;
   };
   const auto choose = [&] {
     winner = rival = nullptr;
     best = best_candidate(result.candidates);
-    result.seen_fraction = seen_fraction(*best);
+    result.seen_fraction = best->seen_fraction;
     best_at_rest = at_rest(*best);
     const std::vector<const RecognitionCandidate*> ranked = ranked_candidates(result.candidates);
     // Of the qualifying candidates within examined_score_margin of the best, one that fits
@@ -227,7 +224,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
         }
     }
     if (!winner) return;
-    result.seen_fraction = seen_fraction(*winner);
+    result.seen_fraction = winner->seen_fraction;
     // The best other size of the winner's shape, when one qualifies, is its rival: the two
     // are told apart by their two-way fits, which a third part scoring higher cannot settle.
     for (bool sizes_only : {true, false}) {
@@ -239,7 +236,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
         }
       if (rival) break;
     }
-    if (rival) result.runner_up_seen_fraction = seen_fraction(*rival);
+    if (rival) result.runner_up_seen_fraction = rival->seen_fraction;
   };
   choose();
   // A rival only verified on one selected view may have registered far from its best pose;

@@ -19,6 +19,11 @@ AddSDistance::AddSDistance(std::span<const Eigen::Vector3d> model_points_mm)
   build(0, static_cast<int>(points_mm_.size()));
 }
 
+AddSDistance::AddSDistance(std::span<const Eigen::Vector3d> model_points_mm,
+                           const TriangleMesh& mesh)
+    : points_mm_(model_points_mm.begin(), model_points_mm.end()),
+      surface_(std::make_unique<const MeshSurfaceDistance>(mesh)) {}
+
 // Splits [begin, end) at its middle along the axis of largest extent, so that every point
 // before the middle is <= the middle point on that axis and every point after it is >=.
 void AddSDistance::build(int begin, int end) {
@@ -60,6 +65,7 @@ void AddSDistance::search(int begin, int end, const Eigen::Vector3d& query_mm,
 }
 
 double AddSDistance::nearest_squared_mm2(const Eigen::Vector3d& query_mm) const {
+  if (surface_) return surface_->nearest_squared_mm2(query_mm);
   double best_mm2 = std::numeric_limits<double>::infinity();
   search(0, static_cast<int>(points_mm_.size()), query_mm, best_mm2);
   return best_mm2;

@@ -5,10 +5,19 @@
 //   ADD-S = mean_p min_q | (R_t p + t_t) - (R_e q + t_e) |
 // ADD-S is the symmetric-safe one: a pose that maps the part onto itself (a ring turned by
 // its symmetry angle) has ADD-S 0 but a large ADD. Points are in the part frame, mm.
+//
+// With the part's mesh, q ranges over its surface rather than over the points: a coarse CAD
+// mesh of a surface of revolution has a few rings of vertices, and a turn about its axis that
+// maps the surface onto itself moves each vertex between two of a ring's, which the
+// vertex-to-vertex form counts as error (up to half the ring's spacing).
 #include <Eigen/Core>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
+
+#include "sim/mesh.hpp"
+#include "sim/mesh_surface_distance.hpp"
 
 namespace cosmos {
 
@@ -24,12 +33,14 @@ struct RigidPose {
 class AddSDistance {
  public:
   explicit AddSDistance(std::span<const Eigen::Vector3d> model_points_mm);
+  // The mean over `model_points_mm` of the distance to the nearest point of `mesh`'s surface.
+  AddSDistance(std::span<const Eigen::Vector3d> model_points_mm, const TriangleMesh& mesh);
 
   // mm; 0 when there are no model points.
   double add_s_mm(const RigidPose& truth, const RigidPose& estimate) const;
 
-  // Squared distance (mm^2) from `query_mm` (part frame) to the nearest model point;
-  // +infinity when there are none.
+  // Squared distance (mm^2) from `query_mm` (part frame) to the nearest model point, or to
+  // the nearest surface point when built with the mesh; +infinity when there are none.
   double nearest_squared_mm2(const Eigen::Vector3d& query_mm) const;
 
  private:
@@ -38,6 +49,7 @@ class AddSDistance {
 
   std::vector<Eigen::Vector3d> points_mm_;  // in k-d tree order
   std::vector<std::uint8_t> split_axis_;    // per point: the axis it splits its range on
+  std::unique_ptr<const MeshSurfaceDistance> surface_;
 };
 
 // Plain ADD (point p against its own image), mm; 0 when there are no model points.

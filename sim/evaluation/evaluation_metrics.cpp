@@ -3,7 +3,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -40,30 +39,6 @@ nlohmann::json to_json(const std::optional<double>& value) {
 nlohmann::json to_json(const Median95& value) {
   return {{"median", to_json(value.median)}, {"p95", to_json(value.p95)}};
 }
-
-// ADD-S of a correct record, with one k-d tree per part built on first use.
-class AddSByPart {
- public:
-  explicit AddSByPart(const ModelPointsLookup& lookup) : lookup_(lookup) {}
-
-  double add_s_mm(const EvaluationRecord& record) {
-    auto found = trees_.find(record.truth_part);
-    if (found == trees_.end()) {
-      const std::span<const Eigen::Vector3d> points = lookup_(record.truth_part);
-      if (points.empty())
-        throw std::invalid_argument("no model points for part " +
-                                    std::to_string(record.truth_part) + " (" + record.truth_name +
-                                    ")");
-      found = trees_.emplace(record.truth_part, AddSDistance(points)).first;
-    }
-    return found->second.add_s_mm({record.R_true, record.t_true_mm},
-                                  {record.R_estimated, record.t_estimated_mm});
-  }
-
- private:
-  const ModelPointsLookup& lookup_;
-  std::map<int, AddSDistance> trees_;
-};
 
 }  // namespace
 
@@ -104,9 +79,8 @@ double rotation_angle_deg(const Eigen::Matrix3d& R_a, const Eigen::Matrix3d& R_b
 }
 
 EvaluationMetrics compute_metrics(std::span<const EvaluationRecord> records,
-                                  const ModelPointsLookup& model_points_per_part) {
+                                  const AddSLookup& add_s_per_part) {
   EvaluationMetrics metrics;
-  AddSByPart add_s(model_points_per_part);
   int correct = 0, view_selection_hits = 0, add_s_hits_10pct = 0, add_s_hits_2pct = 0;
   int false_rejects = 0, unknown_rejects = 0, largest_rank = -1, taken_for_size_variant = 0;
   double fraction_db_sum = 0;
@@ -143,7 +117,13 @@ EvaluationMetrics compute_metrics(std::span<const EvaluationRecord> records,
       }
       outcome.translation_error_mm = (record.t_true_mm - record.t_estimated_mm).norm();
       translation_errors_mm.push_back(*outcome.translation_error_mm);
-      outcome.add_s_mm = add_s.add_s_mm(record);
+      const AddSDistance* add_s = add_s_per_part(record.truth_part);
+      if (add_s == nullptr)
+        throw std::invalid_argument("no ADD-S measure for part " +
+                                    std::to_string(record.truth_part) + " (" + record.truth_name +
+                                    ")");
+      outcome.add_s_mm = add_s->add_s_mm({record.R_true, record.t_true_mm},
+                                         {record.R_estimated, record.t_estimated_mm});
       outcome.add_s_over_diameter = *outcome.add_s_mm / record.diameter_mm;
       if (*outcome.add_s_over_diameter < 0.10) ++add_s_hits_10pct;
       if (*outcome.add_s_over_diameter < 0.02) ++add_s_hits_2pct;

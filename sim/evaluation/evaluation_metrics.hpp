@@ -19,7 +19,8 @@
 //   translation_error_mm           |t_true - t_estimated| over all correct records: {median, p95}.
 //   add_s_recall_10pct, _2pct      fraction of known records that are correct AND have
 //                                  ADD-S < 0.10 (0.02) x diameter_mm; rejected and misidentified
-//                                  records count as failures.
+//                                  records count as failures. `cosmos eval` measures ADD-S from
+//                                  a subsample of the part's vertices to its mesh's surface.
 //   unknown_reject_rate            fraction of unknown records rejected.
 //   false_reject_rate              fraction of known records rejected.
 //   recognition_ms                 recognition_ms over all records: {median, p99}.
@@ -38,6 +39,8 @@
 #include <span>
 #include <string>
 #include <vector>
+
+#include "sim/evaluation/add_s_distance.hpp"
 
 namespace cosmos {
 
@@ -88,9 +91,9 @@ struct EvaluationRecord {
   double seen_fraction = 0, runner_up_seen_fraction = 0;
 };
 
-// A part's model points (a subsample of its mesh vertices, part frame, mm), by catalog index.
-// Only asked for parts of correctly identified records.
-using ModelPointsLookup = std::function<std::span<const Eigen::Vector3d>(int part)>;
+// A part's ADD-S measure (add_s_distance.hpp), by catalog index; nullptr when the part has
+// none. Only asked for parts of correctly identified records.
+using AddSLookup = std::function<const AddSDistance*(int part)>;
 
 enum class RecordStatus {
   kCorrect,          // known part, identified
@@ -137,10 +140,10 @@ struct EvaluationMetrics {
   std::vector<RecordOutcome> outcomes;      // one per record, in record order
 };
 
-// std::invalid_argument when a correct record's part has no model points or its
+// std::invalid_argument when a correct record's part has no ADD-S measure or its
 // diameter_mm is not positive: ADD-S would silently fail it otherwise.
 EvaluationMetrics compute_metrics(std::span<const EvaluationRecord> records,
-                                  const ModelPointsLookup& model_points_per_part);
+                                  const AddSLookup& add_s_per_part);
 
 // Exactly the keys listed at the top of this file.
 nlohmann::json metrics_json(const EvaluationMetrics& metrics);

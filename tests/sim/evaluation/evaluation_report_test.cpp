@@ -66,8 +66,8 @@ class EvaluationReport : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
 
   EvaluationMetrics metrics_of(const std::vector<EvaluationRecord>& records) const {
-    return compute_metrics(records,
-                           [this](int) { return std::span<const Eigen::Vector3d>(model_points_); });
+    const AddSDistance add_s(model_points_);
+    return compute_metrics(records, [&](int) { return &add_s; });
   }
 
   fs::path dir_;

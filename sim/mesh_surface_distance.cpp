@@ -1,0 +1,129 @@
+#include "sim/mesh_surface_distance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sim/embree_triangle_geometry.hpp"
+
+namespace cosmos {
+namespace {
+
+double point_segment_squared_distance(const Eigen::Vector3d& point, const Eigen::Vector3d& a,
+                                      const Eigen::Vector3d& b) {
+  const Eigen::Vector3d ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0 ? std::clamp((point - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return (a + t * ab - point).squaredNorm();
+}
+
+}  // namespace
+
+double point_triangle_squared_distance(const Eigen::Vector3d& point, const Eigen::Vector3d& a,
+                                       const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  const Eigen::Vector3d ab = b - a, ac = c - a;
+  if (ab.cross(ac).squaredNorm() <= 1e-24 * ab.squaredNorm() * ac.squaredNorm())
+    return std::min({point_segment_squared_distance(point, a, b),
+                     point_segment_squared_distance(point, b, c),
+                     point_segment_squared_distance(point, c, a)});
+  // The Voronoi regions of the vertices, then of the edges, then the face.
+  const Eigen::Vector3d ap = point - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return ap.squaredNorm();
+  const Eigen::Vector3d bp = point - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return bp.squaredNorm();
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (a + (d1 / (d1 - d3)) * ab - point).squaredNorm();
+  const Eigen::Vector3d cp = point - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return cp.squaredNorm();
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (a + (d2 / (d2 - d6)) * ac - point).squaredNorm();
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+    return (b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b) - point).squaredNorm();
+  const double denominator = va + vb + vc;
+  return (a + (vb / denominator) * ab + (vc / denominator) * ac - point).squaredNorm();
+}
+
+struct MeshSurfaceDistance::Hierarchy {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+  std::vector<Eigen::Vector3d> vertices_mm;
+  std::vector<Eigen::Vector3i> triangles;
+
+  ~Hierarchy() {
+    if (scene != nullptr) rtcReleaseScene(scene);
+    if (device != nullptr) rtcReleaseDevice(device);
+  }
+};
+
+namespace {
+
+constexpr double kRadiusMarginMm = 1e-3;
+
+struct NearestQuery {
+  const std::vector<Eigen::Vector3d>* vertices_mm;
+  const std::vector<Eigen::Vector3i>* triangles;
+  Eigen::Vector3d point_mm;
+  double best_mm2;
+};
+
+// Embree calls this for each triangle whose bounds the query sphere reaches; shrinking the
+// radius prunes the rest of the walk.
+bool measure_triangle(RTCPointQueryFunctionArguments* args) {
+  auto& query = *static_cast<NearestQuery*>(args->userPtr);
+  const Eigen::Vector3i& t = (*query.triangles)[args->primID];
+  const auto& v = *query.vertices_mm;
+  const double d2 = point_triangle_squared_distance(
+      query.point_mm, v[static_cast<std::size_t>(t(0))], v[static_cast<std::size_t>(t(1))],
+      v[static_cast<std::size_t>(t(2))]);
+  if (d2 >= query.best_mm2) return false;
+  query.best_mm2 = d2;
+  // With a margin over the float rounding of the query's point and radius, so the walk never
+  // prunes a triangle nearer than the double distance.
+  args->query->radius = static_cast<float>(std::sqrt(d2) + kRadiusMarginMm);
+  return true;
+}
+
+}  // namespace
+
+MeshSurfaceDistance::MeshSurfaceDistance(const TriangleMesh& mesh)
+    : hierarchy_(std::make_unique<Hierarchy>()) {
+  Hierarchy& h = *hierarchy_;
+  h.device = rtcNewDevice("threads=1,verbose=0");
+  if (h.device == nullptr) throw std::runtime_error("Embree: cannot create a device");
+  RTCGeometry geometry = new_triangle_geometry(h.device, mesh, "MeshSurfaceDistance");
+  for (const Eigen::Vector3f& vertex : mesh.vertices)
+    h.vertices_mm.push_back(vertex.cast<double>());
+  h.triangles = mesh.triangles;
+  h.scene = rtcNewScene(h.device);
+  rtcAttachGeometry(h.scene, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(h.scene);
+  if (rtcGetDeviceError(h.device) != RTC_ERROR_NONE)
+    throw std::runtime_error("Embree: cannot build the mesh's hierarchy");
+}
+
+MeshSurfaceDistance::~MeshSurfaceDistance() = default;
+
+double MeshSurfaceDistance::nearest_squared_mm2(const Eigen::Vector3d& point_mm) const {
+  NearestQuery nearest{&hierarchy_->vertices_mm, &hierarchy_->triangles, point_mm,
+                       std::numeric_limits<double>::infinity()};
+  RTCPointQuery query;
+  query.x = static_cast<float>(point_mm.x());
+  query.y = static_cast<float>(point_mm.y());
+  query.z = static_cast<float>(point_mm.z());
+  query.time = 0.0f;
+  query.radius = std::numeric_limits<float>::infinity();
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  rtcPointQuery(hierarchy_->scene, &query, &context, measure_triangle, &nearest);
+  return nearest.best_mm2;
+}
+
+}  // namespace cosmos
