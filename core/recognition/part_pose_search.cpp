@@ -148,6 +148,8 @@ PartSearchModel build_part_search_model(const ModelBase& base, int part,
     const RigidTransform T_part_view = view.T_scanner_part.inverse();
     for (Eigen::Index i = 0; i < position.cols(); ++i)
       points_part_mm.push_back(T_part_view.apply(position.col(i)));
+    model.views.push_back(static_cast<int>(v));
+    model.view_centroid_part_mm.push_back(T_part_view.apply(position.rowwise().mean()));
     if (has_coarse_views && !is_once_subdivided_view(view.view_index)) continue;
     model.start_views.push_back(static_cast<int>(v));
     model.start_view_centroid_mm.push_back(position.rowwise().mean());

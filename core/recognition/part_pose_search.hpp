@@ -85,6 +85,11 @@ struct PartSearchModel {
   PartDistanceField field;
   std::vector<int> start_views;  // indices into ModelBase::views
   std::vector<Eigen::Vector3d> start_view_centroid_mm;
+  // Every view of the part and its control points' centroid, in the part's frame: the
+  // resting search's starts put the centroid of the view nearest their vertical on the
+  // scene's (resting_pose_search.hpp).
+  std::vector<int> views;
+  std::vector<Eigen::Vector3d> view_centroid_part_mm;
 };
 
 PartSearchModel build_part_search_model(const ModelBase& base, int part,

@@ -16,19 +16,20 @@ Eigen::Vector3d up_in_part(const RestingPose& pose) {
   return pose.R_belt_part.transpose() * Eigen::Vector3d::UnitZ();
 }
 
-// Centroid, in the part's frame, of the start view that looks at the part most nearly from
-// `up_part`: the surface a scanner above the resting part sees.
+// Centroid, in the part's frame, of the view that looks at the part most nearly from
+// `up_part`: the surface a scanner above the resting part sees. Of every view, not only the
+// coarse ones the pose search starts from: a coarse view can be 20 degrees off the vertical,
+// and into a hollow part (an open shell lying on its back) its centroid was 10-20 mm from the
+// scene's, beyond where the field stages pull a start in.
 Eigen::Vector3d seen_centroid_part(const ModelBase& base, const PartSearchModel& model,
                                    const Eigen::Vector3d& up_part) {
   std::size_t nearest = 0;
-  for (std::size_t s = 1; s < model.start_views.size(); ++s) {
-    const auto direction = [&](std::size_t k) -> const Eigen::Vector3d& {
-      return base.views[static_cast<std::size_t>(model.start_views[k])].direction_part;
-    };
+  const auto direction = [&](std::size_t k) -> const Eigen::Vector3d& {
+    return base.views[static_cast<std::size_t>(model.views[k])].direction_part;
+  };
+  for (std::size_t s = 1; s < model.views.size(); ++s)
     if (direction(s).dot(up_part) > direction(nearest).dot(up_part)) nearest = s;
-  }
-  const ModelBaseView& view = base.views[static_cast<std::size_t>(model.start_views[nearest])];
-  return view.T_scanner_part.inverse().apply(model.start_view_centroid_mm[nearest]);
+  return model.view_centroid_part_mm[nearest];
 }
 
 }  // namespace
@@ -40,8 +41,7 @@ std::vector<FieldHypothesis> resting_pose_hypotheses(const RegistrationPoints& s
                                                      const RestingSearchParameters& parameters) {
   const std::vector<RestingPose>& resting =
       base.parts[static_cast<std::size_t>(part)].resting_poses;
-  if (resting.empty() || model.start_views.empty() || scene.size() == 0 || model.field.empty())
-    return {};
+  if (resting.empty() || model.views.empty() || scene.size() == 0 || model.field.empty()) return {};
   const Eigen::Vector3d scene_centre = scene.position_mm.rowwise().mean();
   std::vector<FieldHypothesis> starts;
   starts.reserve(resting.size() * static_cast<std::size_t>(parameters.turns));

@@ -1,11 +1,22 @@
 // Whether a pose rests on the belt (check_resting): a 40 x 20 x 10 mm box, its six resting
-// poses and its hull's corners, in poses that rest, float, sink or lean.
+// poses and its hull's corners, in poses that rest, float, sink or lean. And the search's
+// starts (resting_pose_hypotheses) on scans of the regression catalog's parts lying in their
+// two likeliest resting poses: the true pose is among the poses it returns.
 #include "core/recognition/resting_pose_search.hpp"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <filesystem>
 #include <numbers>
+
+#include "core/io/model_base_file.hpp"
+#include "core/recognition/recognizer.hpp"
+#include "core/representation/cosmos_pipeline.hpp"
+#include "sim/mesh.hpp"
+#include "sim/part_catalog.hpp"
+#include "sim/part_scan.hpp"
+#include "tests/regression_model_base.hpp"
 
 namespace cosmos {
 namespace {
@@ -89,6 +100,48 @@ TEST(RestingPoseSearch, ALeaningPartTouchingTheBeltDoesNotRestUnlessItsPosesAreU
   const RestingCheck uncovered = check_resting(box_part(2), T_scene_part.inverse(), {});
   EXPECT_FALSE(uncovered.covered);
   EXPECT_TRUE(uncovered.at_rest);
+}
+
+TEST(RestingPoseSearch, TheTruePoseOfAPartLyingInAStablePoseIsAmongTheStarts) {
+  const ModelBase base = read_model_base(testing::regression_model_base());
+  const PartCatalog catalog =
+      read_part_catalog(std::filesystem::path(COSMOS_SOURCE_DIR) / "config/parts-regression.yaml");
+  const RecognitionParameters parameters;
+  int scans = 0;
+  for (int part = 0; part < static_cast<int>(base.parts.size()); ++part) {
+    const ModelPart& model_part = base.parts[static_cast<std::size_t>(part)];
+    const PartEntry& entry = catalog.at(model_part.name);
+    const TriangleMesh mesh = load_mesh(entry.mesh_path, entry.size_mm);
+    const PartSearchModel model = build_part_search_model(base, part, parameters.field);
+    for (std::size_t pose = 0; pose < 2 && pose < model_part.resting_poses.size(); ++pose) {
+      const double turn_rad = (37.0 + 71.0 * part + 113.0 * pose) * kDegree;
+      const Eigen::Matrix3d R_belt_part =
+          Eigen::AngleAxisd(turn_rad, Eigen::Vector3d::UnitZ()).toRotationMatrix() *
+          model_part.resting_poses[pose].R_belt_part;
+      const RangeImage image = scan_single_part(mesh, model_part.name, R_belt_part,
+                                                ScannerParameters{}, ConditioningParameters{});
+      const ViewAnalysis analysis = analyze_view(image, CosmosParameters{});
+      const RegistrationPoints points =
+          build_registration_points(image, parameters.scene_points, &analysis.frames).points;
+      const RigidTransform T_part_scene_true =
+          RigidTransform{image.ground_truth->rotation, image.ground_truth->translation_mm}
+              .inverse();
+      const std::vector<FieldHypothesis> starts =
+          resting_pose_hypotheses(points, base, part, model, parameters.search, parameters.resting);
+      ++scans;
+      bool among = false;
+      for (const FieldHypothesis& start : starts) {
+        const Eigen::AngleAxisd off(start.T_part_scene.rotation *
+                                    T_part_scene_true.rotation.transpose());
+        const Eigen::Vector3d origin_scene = T_part_scene_true.inverse().translation_mm;
+        const double offset_mm =
+            (start.T_part_scene.apply(origin_scene) - T_part_scene_true.apply(origin_scene)).norm();
+        among |= off.angle() < 5 * kDegree && offset_mm < 3;
+      }
+      EXPECT_TRUE(among) << model_part.name << ", resting pose " << pose;
+    }
+  }
+  EXPECT_GE(scans, 8);
 }
 
 }  // namespace
