@@ -5,7 +5,7 @@
 // Ericson, "Real-Time Collision Detection", §5.1.5), in double precision.
 //
 // Why the surface: a CAD part's mesh has few vertices on its smooth stretches (a knob of
-// revolution with 161 vertices, rings of 16), so the distance to the nearest vertex counts
+// revolution is a few rings of vertices), so the distance to the nearest vertex counts up to
 // half a ring's spacing for a point that lies on the part's surface.
 //
 // Thread-safe for queries once built: each query keeps its own state.
