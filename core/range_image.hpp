@@ -3,6 +3,7 @@
 // Frame convention used by every tool: pixel (column i, row j) is the point
 //   x = x0 + i*dx,  y = y0 + j*dy,  z = value   (mm, scanner frame, z towards the sensor).
 #include <Eigen/Core>
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -24,6 +25,13 @@ struct RangeImage {
   double origin_x_mm = 0.0;
   double origin_y_mm = 0.0;
   std::optional<GroundTruthPose> ground_truth;
+  // 1 where the scanner measured the belt (a sample below the background threshold), 0
+  // where it measured a surface or nothing at all (a camera or laser shadow, off the
+  // sensor); empty when not known (a range image file). Both kinds of background are NaN in
+  // z_mm, but only the first says the scanner would have seen a surface there
+  // (core/recognition/surface_seen.hpp).
+  PixelGrid<std::uint8_t> belt_seen;
+  bool belt_known() const { return belt_seen.size() > 0; }
 
   RangeImage() = default;
   RangeImage(int width, int height, double pixel_size_x_mm_, double pixel_size_y_mm_);

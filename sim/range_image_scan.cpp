@@ -14,6 +14,7 @@ RangeImage scan_range_image(const ConveyorScene& scene, SimulatedScanner& scanne
   const int width = parameters.points_per_profile;
   const auto rows = static_cast<int>(range.count());
   PixelGrid<float> exposed(width, rows);  // row r = profile range.first + r
+  PixelGrid<std::uint8_t> belt(width, rows, 0);
   Profile profile;
   scanner.reserve(profile);
   const auto background_mm = static_cast<float>(conditioning.height_threshold_mm);
@@ -31,6 +32,7 @@ RangeImage scan_range_image(const ConveyorScene& scene, SimulatedScanner& scanne
       const float z = profile.z_mm[static_cast<std::size_t>(i)];
       // NaN fails the comparison and stays NaN.
       row[i] = z >= background_mm ? z : Profile::kNoData;
+      belt(i, r) = z < background_mm ? 1 : 0;  // NaN compares false: no data, not belt
       if (std::isnan(row[i])) continue;
       first_row = std::min(first_row, r);
       last_row = std::max(last_row, r);
@@ -51,9 +53,12 @@ RangeImage scan_range_image(const ConveyorScene& scene, SimulatedScanner& scanne
   image.origin_x_mm = parameters.first_sample_x_mm(width) + first_column * image.pixel_size_x_mm;
   // Image row 0 is the last exposed profile kept: the smallest y.
   image.origin_y_mm = laser_y_belt_mm(parameters, range.first + last_row);
+  image.belt_seen = PixelGrid<std::uint8_t>(image.width(), image.height(), 0);
   for (int j = 0; j < image.height(); ++j) {
     const float* source = exposed.row(last_row - j) + first_column;
     std::copy(source, source + image.width(), image.z_mm.row(j));
+    const std::uint8_t* belt_source = belt.row(last_row - j) + first_column;
+    std::copy(belt_source, belt_source + image.width(), image.belt_seen.row(j));
   }
   return image;
 }

@@ -34,8 +34,9 @@ struct RangeScanOptions {
 using ProfileObserver = std::function<void(std::int64_t profile_index, const Profile& profile,
                                            const SimulatedScanner& scanner)>;
 
-// Scans every profile covering the scene. Returns an image without ground truth (the caller
-// knows which part it is), or an empty image (width 0) when no part pixel was measured.
+// Scans every profile covering the scene. Returns an image with its belt mask and without
+// ground truth (the caller knows which part it is), or an empty image (width 0) when no part
+// pixel was measured.
 RangeImage scan_range_image(const ConveyorScene& scene, SimulatedScanner& scanner,
                             const ConditioningParameters& conditioning,
                             const RangeScanOptions& options = {},

@@ -11,23 +11,33 @@ SurfaceSeen measure_surface_seen(const RangeImage& scene, const RegistrationPoin
   if (scene.width() == 0 || scene.height() == 0) return result;
   const RigidTransform T_scene_model = T_model_scene.inverse();
   const double tolerance_mm = parameters.depth_tolerance_mm;
+  const bool belt_known = scene.belt_known();
   for (Eigen::Index i = 0; i < model.position_mm.cols(); ++i) {
     const Eigen::Vector3d point = T_scene_model.apply(model.position_mm.col(i));
     const long column = std::lround((point.x() - scene.origin_x_mm) / scene.pixel_size_x_mm);
     const long row = std::lround((point.y() - scene.origin_y_mm) / scene.pixel_size_y_mm);
-    bool seen = false, hidden = false;
+    // Against the part: a lower surface, or the belt measured (beyond the image: its
+    // background, belt as far as it can tell).
+    bool seen = false, hidden = false, against = false;
     for (long r = row - 1; r <= row + 1 && !seen; ++r) {
       for (long c = column - 1; c <= column + 1 && !seen; ++c) {
-        if (c < 0 || r < 0 || c >= scene.width() || r >= scene.height()) continue;
+        if (c < 0 || r < 0 || c >= scene.width() || r >= scene.height()) {
+          against = true;
+          continue;
+        }
         const float z = scene.z_mm(static_cast<int>(c), static_cast<int>(r));
-        if (std::isnan(z)) continue;
+        if (std::isnan(z)) {
+          against |= !belt_known || scene.belt_seen(static_cast<int>(c), static_cast<int>(r)) != 0;
+          continue;
+        }
         seen = std::abs(z - point.z()) <= tolerance_mm;
         hidden |= z > point.z() + tolerance_mm;
+        against |= z < point.z() - tolerance_mm;
       }
     }
     if (seen)
       ++result.seen;
-    else if (hidden)
+    else if (hidden || !against)
       ++result.hidden;
     else
       ++result.contradicted;

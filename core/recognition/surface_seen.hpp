@@ -7,8 +7,11 @@
 // scanner sees it from that side, ch. 6) are brought into the scene's image under the
 // registered pose (T_scene_model = T_model_scene^-1) and looked up at their pixels: a point
 // within depth_tolerance_mm of the scene's height there is seen; one the scene shows surface
-// above (nearer the scanner) is hidden, which says nothing; one where the scene has no data or
-// only lower surface is contradicted, since the scanner would have seen it. A pixel's 3 x 3
+// above (nearer the scanner) is hidden, which says nothing; one where the scene shows the belt
+// or only lower surface is contradicted, since the scanner would have seen it. Where the
+// scene has no data and the scanner did not measure the belt either (RangeImage::belt_seen),
+// the point lay in a camera or laser shadow, which a laser-triangulation scanner casts into
+// every hollow: it counts as hidden. Without the belt mask no data counts against. A pixel's 3 x 3
 // neighbourhood is asked, so silhouettes a pixel off and the few degrees between the matched
 // view and the scene's viewing direction do not count against the part.
 #include "core/parameter_visitor.hpp"

@@ -42,6 +42,11 @@ PartView extract_part_view(const BuiltPart& built, const PartRecognitionContext&
   part.image = RangeImage(width, height, context.grid_mm, context.grid_mm);
   part.image.origin_x_mm = source.origin_x_mm() + c0 * context.grid_mm;
   part.image.origin_y_mm = source.origin_y_mm();
+  // Where the belt was measured, over the whole view: a pixel of another part or of a shadow
+  // is not belt (surface_seen.hpp).
+  part.image.belt_seen = PixelGrid<std::uint8_t>(width, height, 0);
+  for (int row = 0; row < height; ++row)
+    for (int x = 0; x < width; ++x) part.image.belt_seen(x, row) = source.belt_seen(c0 + x, row);
   DarbouxFrameField& frames = part.analysis.frames;
   frames = DarbouxFrameField(width, height);
   ShapeIndexField& field = part.analysis.field;

@@ -49,13 +49,20 @@ RangeImage union_image(const std::vector<const RangeImage*>& pieces) {
                  static_cast<int>(std::lround((y1 - y0) / grid_y)) + 1, grid_x, grid_y);
   out.origin_x_mm = x0;
   out.origin_y_mm = y0;
+  // The belt where a piece's view measured it; between the pieces (the shadow that cut them
+  // apart) nothing is known.
+  const bool belt_known = std::all_of(pieces.begin(), pieces.end(),
+                                      [](const RangeImage* image) { return image->belt_known(); });
+  if (belt_known) out.belt_seen = PixelGrid<std::uint8_t>(out.width(), out.height(), 0);
   for (const RangeImage* image : pieces) {
     const int dc = static_cast<int>(std::lround((image->origin_x_mm - x0) / grid_x));
     const int dr = static_cast<int>(std::lround((image->origin_y_mm - y0) / grid_y));
     for (int row = 0; row < image->height(); ++row)
-      for (int column = 0; column < image->width(); ++column)
+      for (int column = 0; column < image->width(); ++column) {
         if (const float z = image->z_mm(column, row); !std::isnan(z))
           out.z_mm(column + dc, row + dr) = z;
+        if (belt_known) out.belt_seen(column + dc, row + dr) |= image->belt_seen(column, row);
+      }
   }
   return out;
 }

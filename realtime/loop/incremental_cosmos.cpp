@@ -33,6 +33,8 @@ IncrementalCosmos::IncrementalCosmos(const CosmosParameters& parameters, int wid
       final_(width, kRingRows),
       classified_(make_shape_index_field(width, kRingRows)),
       rows_store_(pool, max_rows),
+      belt_words_per_row_((std::max(width, 0) + 63) / 64),
+      belt_bits_(static_cast<std::size_t>(std::max(max_rows, 0)) * belt_words_per_row_, 0),
       smoothed_rows_(std::max(parameters.smoothing.iterations, 0), 0),
       smoothed_columns_(static_cast<std::size_t>(std::max(max_rows, 0)), {0, 0}) {
   for (int level = 1; level < parameters.smoothing.iterations; ++level)
@@ -55,7 +57,7 @@ void IncrementalCosmos::begin_part(double origin_x_mm, double origin_y_mm) {
   fitter_.reset();
 }
 
-AddRowResult IncrementalCosmos::add_row(const float* z_mm) {
+AddRowResult IncrementalCosmos::add_row(const float* z_mm, const std::uint8_t* belt) {
   if (rows_ >= max_rows_ || finished_) return AddRowResult::kTooLong;
   int begin = 0;
   while (begin < width_ && std::isnan(z_mm[begin])) ++begin;
@@ -65,6 +67,12 @@ AddRowResult IncrementalCosmos::add_row(const float* z_mm) {
   make_room_in_window();
   std::copy(z_mm, z_mm + width_, window_.z_mm.row(in_window(rows_)));
   std::copy(z_mm + begin, z_mm + end, rows_store_.row(rows_).z_mm);
+  std::uint64_t* belt_row =
+      belt_bits_.data() + static_cast<std::size_t>(rows_) * belt_words_per_row_;
+  std::fill(belt_row, belt_row + belt_words_per_row_, 0);
+  if (belt)
+    for (int column = 0; column < width_; ++column)
+      belt_row[column / 64] |= static_cast<std::uint64_t>(belt[column] != 0) << (column % 64);
   ++rows_;
   while (advance_one_row_each()) {
   }
@@ -236,10 +244,13 @@ RangeImage IncrementalCosmos::whole_image() const {
   RangeImage image(width_, rows_, window_.pixel_size_x_mm, window_.pixel_size_y_mm);
   image.origin_x_mm = origin_x_mm_;
   image.origin_y_mm = origin_y_mm_;
+  image.belt_seen = PixelGrid<std::uint8_t>(width_, rows_, 0);
   for (int r = 0; r < rows_; ++r) {
     const PartRow in = row(r);
     std::copy(in.z_mm, in.z_mm + (in.column_end - in.column_begin),
               image.z_mm.row(r) + in.column_begin);
+    for (int column = 0; column < width_; ++column)
+      image.belt_seen(column, r) = belt_seen(column, r) ? 1 : 0;
   }
   return image;
 }

@@ -13,6 +13,7 @@
 // into the part's compact rows (part_rows.hpp), taken from a pool shared by the builders.
 // Every working buffer is sized at construction: adding a row never allocates.
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "core/cosmos_parameters.hpp"
@@ -39,8 +40,9 @@ class IncrementalCosmos {
 
   // Starts a part; the rows of the previous one must have been released (release_rows).
   void begin_part(double origin_x_mm, double origin_y_mm);
-  // Appends one row of `width` heights (mm, NaN = no data).
-  AddRowResult add_row(const float* z_mm);
+  // Appends one row of `width` heights (mm, NaN = no data) and, when given, its belt flags
+  // (1 where the belt itself was measured: ProfileConditioner::condition's out_belt).
+  AddRowResult add_row(const float* z_mm, const std::uint8_t* belt = nullptr);
   // Runs the pipeline to the last row (the bottom border of the part).
   void finish();
   // Gives the part's rows back to the pool (the recognizer is done with them).
@@ -66,6 +68,12 @@ class IncrementalCosmos {
   }
   float y_mm(int row) const {
     return static_cast<float>(origin_y_mm_ + row * window_.pixel_size_y_mm);
+  }
+  // Whether the belt was measured at a pixel of the part's rows (false without belt flags).
+  bool belt_seen(int column, int row) const {
+    const std::uint64_t word =
+        belt_bits_[static_cast<std::size_t>(row) * belt_words_per_row_ + column / 64];
+    return ((word >> (column % 64)) & 1u) != 0;
   }
   // The part's rows as whole images of width x rows() (tests and tools: these allocate).
   RangeImage whole_image() const;
@@ -104,6 +112,10 @@ class IncrementalCosmos {
   DarbouxFrameField final_;                // the last level (frames, validity, links): 3 rows
   ShapeIndexField classified_;             // 3 rows
   PartRows rows_store_;
+  // Per row, a bit per column: the belt measured there (the surface-seen test tells a shadow
+  // from the belt by it). Full rows, a bit each: max_rows x width / 8 bytes.
+  int belt_words_per_row_ = 0;
+  std::vector<std::uint64_t> belt_bits_;
   double origin_x_mm_ = 0;
   double origin_y_mm_ = 0;
 

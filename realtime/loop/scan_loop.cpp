@@ -83,7 +83,8 @@ ScanLoop::ScanLoop(const ScanLoopSettings& settings)
                                            deshear_.delay())),
       row_belt_(static_cast<std::size_t>(conditioner_.width())),
       row_loop_(static_cast<std::size_t>(conditioner_.width())),
-      belt_seen_(static_cast<std::size_t>(conditioner_.width()), 0) {
+      belt_seen_(static_cast<std::size_t>(conditioner_.width()), 0),
+      belt_loop_(static_cast<std::size_t>(conditioner_.width()), 0) {
   for (int b = 0; b < std::max(settings.parts.builders, 1); ++b) {
     builders_.push_back(std::make_unique<PartBuilder>(settings.cosmos, conditioner_.width(),
                                                       settings.max_part_rows,
@@ -327,14 +328,14 @@ bool ScanLoop::add_row_to(int index, const RowStamp& stamp) {
     builder.last_profile = stamp.profile;
     return true;
   }
-  AddRowResult added = builder.cosmos.add_row(row_loop_.data());
+  AddRowResult added = builder.cosmos.add_row(row_loop_.data(), belt_loop_.data());
   // Unpaced, the blocks of the parts at the recognizer are waited for (as builders are): what
   // is lost must not depend on how fast the recognizer was.
   while (added == AddRowResult::kNoMemory && settings_.wait_for_recognizer &&
          builders_at_recognizer() > 0) {
     std::this_thread::yield();
     reclaim_returned();
-    added = builder.cosmos.add_row(row_loop_.data());
+    added = builder.cosmos.add_row(row_loop_.data(), belt_loop_.data());
   }
   if (added == AddRowResult::kTooLong) {
     builder.truncated = true;
@@ -366,6 +367,10 @@ bool ScanLoop::add_row_to(int index, const RowStamp& stamp) {
 
 void ScanLoop::add_row(const float* z_mm, const std::uint8_t* belt, const RowStamp& stamp) {
   std::reverse_copy(z_mm, z_mm + width(), row_loop_.begin());
+  if (belt)
+    std::reverse_copy(belt, belt + width(), belt_loop_.begin());
+  else
+    std::fill(belt_loop_.begin(), belt_loop_.end(), 0);
   for (const TrackedPart& part : tracker_.add_row(z_mm, row_index_, belt)) complete(part);
   counters_.runs_dropped.store(tracker_.dropped_runs(), std::memory_order_relaxed);
   start_parts(stamp);

@@ -298,6 +298,7 @@ class ScanLoop {
   std::vector<float> row_belt_;          // conditioned, belt column order
   std::vector<float> row_loop_;          // mirrored into the loop frame
   std::vector<std::uint8_t> belt_seen_;  // conditioned, belt column order: belt measured
+  std::vector<std::uint8_t> belt_loop_;  // belt_seen_ of the row added, mirrored like row_loop_
   std::int64_t input_index_ = 0;         // the next profile's row
   std::int64_t row_index_ = 0;           // the next row to the tracker and the builders
   std::atomic<std::int64_t> unfinished_from_profile_{0};

@@ -58,6 +58,26 @@ TEST(SurfaceSeen, SurfaceOverTheBeltIsContradicted) {
   EXPECT_NEAR(seen.seen_fraction(), 11.0 / 20, 1e-12);
 }
 
+// The same shifted points over a scene whose belt mask says where the belt was measured: the
+// strip x in [34, 40) mm beside the plate was the scanner's shadow (no data, no belt), the
+// rest of the background belt. Points over the shadow say nothing; those over the belt still
+// count against the part; with no mask every pixel without data does.
+TEST(SurfaceSeen, SurfaceOverAShadowIsHiddenOverTheMeasuredBeltContradicted) {
+  RangeImage scene = plate_scene();
+  scene.belt_seen = PixelGrid<std::uint8_t>(scene.width(), scene.height(), 0);
+  for (int row = 0; row < scene.height(); ++row)
+    for (int column = 0; column < scene.width(); ++column)
+      scene.belt_seen(column, row) = std::isnan(scene.z_mm(column, row)) && scene.x_mm(column) < 34;
+  const SurfaceSeen seen =
+      measure_surface_seen(scene, grid_points(20, kPlateHeightMm), RigidTransform::identity(), {});
+  // Columns x = 20..30 are seen (as above); x = 31..34 have a belt pixel within a pixel (the
+  // 3 x 3 neighbourhood of x = 34 mm reaches 33.5 mm); x = 35..39 lie over the shadow alone.
+  EXPECT_EQ(seen.seen, 11 * 16);
+  EXPECT_EQ(seen.contradicted, 4 * 16);
+  EXPECT_EQ(seen.hidden, 5 * 16);
+  EXPECT_NEAR(seen.seen_fraction(), 11.0 / 15, 1e-12);
+}
+
 TEST(SurfaceSeen, TheSamePoseGivenAsATransformCountsTheSame) {
   // T_model_scene moves scene points 10 mm in -x onto the model: the model at x0 = 10 is the
   // scene's [20, 40), as above.

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 
@@ -212,6 +213,37 @@ TEST(IncrementalCosmos, ARowThePoolHasNoRoomForChangesNothing) {
   EXPECT_EQ(pool.blocks_in_use(), 0);
   builder.begin_part(0, 0);
   EXPECT_EQ(builder.add_row(row.data()), AddRowResult::kAdded);
+}
+
+// The belt flags of each row are kept over the whole width (a shadow beside the part is told
+// from the belt by them), across a 64-column word boundary, and start over with the next part.
+TEST(IncrementalCosmos, KeepsEachRowsBeltFlagsForTheWholeWidth) {
+  const CosmosParameters parameters;
+  IncrementalCosmos builder(parameters, 100, 10, 0.4, 0.4, test_pool());
+  builder.begin_part(0, 0);
+  std::vector<float> row(100, std::numeric_limits<float>::quiet_NaN());
+  for (int column = 40; column < 70; ++column) row[static_cast<std::size_t>(column)] = 5.0f;
+  for (int r = 0; r < 3; ++r) {
+    std::vector<std::uint8_t> belt(100, 0);
+    for (int column = 0; column < 100; ++column)
+      belt[static_cast<std::size_t>(column)] = (column < 40 || column >= 70 + r) ? 1 : 0;
+    ASSERT_EQ(builder.add_row(row.data(), belt.data()), AddRowResult::kAdded);
+  }
+  ASSERT_EQ(builder.add_row(row.data()), AddRowResult::kAdded);  // no flags: no belt
+  for (int r = 0; r < 3; ++r)
+    for (int column = 0; column < 100; ++column)
+      EXPECT_EQ(builder.belt_seen(column, r), column < 40 || column >= 70 + r)
+          << r << " " << column;
+  for (int column = 0; column < 100; ++column) EXPECT_FALSE(builder.belt_seen(column, 3));
+  const RangeImage image = builder.whole_image();
+  ASSERT_TRUE(image.belt_known());
+  EXPECT_EQ(image.belt_seen(39, 1), 1);
+  EXPECT_EQ(image.belt_seen(70, 1), 0);
+  EXPECT_EQ(image.belt_seen(71, 1), 1);
+  builder.release_rows();
+  builder.begin_part(0, 0);
+  ASSERT_EQ(builder.add_row(row.data()), AddRowResult::kAdded);
+  EXPECT_FALSE(builder.belt_seen(0, 0));
 }
 
 TEST(IncrementalCosmos, RefusesRowsBeyondItsCapacity) {
