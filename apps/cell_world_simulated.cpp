@@ -14,8 +14,10 @@
 #include "realtime/sources/repeating_source.hpp"
 #include "realtime/sources/stream_checked_source.hpp"
 #include "scanner/simulated_mounting.hpp"
+#include "sim/conveyor_scene.hpp"
 #include "sim/evaluation/add_s_distance.hpp"
 #include "sim/mesh.hpp"
+#include "sim/mesh_surface_distance.hpp"
 #include "sim/model_base_build/catalog_content_hash.hpp"
 #include "sim/model_base_build/model_base_builder.hpp"
 #include "sim/model_base_build/model_base_parameters.hpp"
@@ -195,12 +197,14 @@ CellWorld::SimulatedTruth CellWorld::simulated_truth_of(const PartRecognition& r
   if (pose.status != PoseStatus::kOk || pose.part_name != placed->name) return truth;
   std::unique_ptr<AddSDistance>& add_s = state_->add_s[placed->name];
   if (!add_s) {
-    const PartEntry* entry = state_->catalog.find(placed->name);
-    if (!entry) return truth;
-    const TriangleMesh mesh = load_mesh(entry->mesh_path, entry->size_mm);
+    // The scanner's own mesh and hierarchy: a second copy of each was tens of MB of the
+    // cell's peak memory.
+    const ConveyorScene& scene = state_->conveyor->scene();
     std::vector<Eigen::Vector3d> points_mm;
-    for (const Eigen::Vector3f& vertex : mesh.vertices) points_mm.push_back(vertex.cast<double>());
-    add_s = std::make_unique<AddSDistance>(points_mm, mesh);
+    for (const Eigen::Vector3f& vertex : scene.mesh(placed->scene_mesh).vertices)
+      points_mm.push_back(vertex.cast<double>());
+    add_s = std::make_unique<AddSDistance>(
+        points_mm, std::make_unique<const MeshSurfaceDistance>(scene.embree(), placed->scene_mesh));
   }
   const RigidPose true_pose{placed->T_belt_part.rotation(), placed->T_belt_part.translation()};
   truth.add_s_mm = add_s->add_s_mm(true_pose, {T_belt_part.rotation, T_belt_part.translation_mm});

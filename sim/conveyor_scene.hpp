@@ -52,6 +52,8 @@ class ConveyorScene {
   void commit();
 
   const std::vector<PlacedPart>& parts() const { return parts_; }
+  // Mesh `index` of add_mesh, in its own frame (std::out_of_range when there is none).
+  const TriangleMesh& mesh(int index) const { return meshes_.at(static_cast<std::size_t>(index)); }
   // Calls visit(part) for each part whose y extent (belt frame) meets [y_low_mm, y_high_mm],
   // in a fixed order; as of the last commit(). Allocation-free.
   template <class Visit>

@@ -66,13 +66,19 @@ int EmbreeScene::add_mesh(const TriangleMesh& mesh) {
   rtcReleaseGeometry(geometry);
   rtcCommitScene(scene);
   check("committing a mesh");
-  meshes_.push_back(mesh);
   mesh_scenes_.push_back(scene);
-  return static_cast<int>(meshes_.size()) - 1;
+  mesh_vertex_counts_.push_back(mesh.vertices.size());
+  return static_cast<int>(mesh_scenes_.size()) - 1;
+}
+
+RTCScene EmbreeScene::mesh_scene(int mesh) const {
+  if (mesh < 0 || mesh >= static_cast<int>(mesh_scenes_.size()))
+    throw std::invalid_argument("EmbreeScene::mesh_scene: no such mesh");
+  return mesh_scenes_[static_cast<std::size_t>(mesh)];
 }
 
 int EmbreeScene::add_instance(int mesh_index, const Eigen::Isometry3d& T_world_mesh) {
-  if (mesh_index < 0 || mesh_index >= static_cast<int>(meshes_.size())) {
+  if (mesh_index < 0 || mesh_index >= static_cast<int>(mesh_scenes_.size())) {
     throw std::invalid_argument("EmbreeScene::add_instance: no such mesh");
   }
   Instance instance;
@@ -89,8 +95,13 @@ void EmbreeScene::set_instance_transform(int instance_index,
   instance.T_world_mesh = T_world_mesh;
   instance.T_mesh_world = T_world_mesh.inverse(Eigen::Isometry);
   instance.bounds.setEmpty();
-  for (const Eigen::Vector3f& vertex : meshes_[static_cast<std::size_t>(instance.mesh)].vertices)
-    instance.bounds.extend(T_world_mesh * vertex.cast<double>());
+  // The vertices as Embree keeps them (float x, y, z), the scene's only copy of its meshes.
+  const auto mesh = static_cast<std::size_t>(instance.mesh);
+  const auto* vertices = static_cast<const float*>(
+      rtcGetGeometryBufferData(rtcGetGeometry(mesh_scenes_[mesh], 0), RTC_BUFFER_TYPE_VERTEX, 0));
+  for (std::size_t v = 0; v < mesh_vertex_counts_[mesh]; ++v)
+    instance.bounds.extend(
+        T_world_mesh * Eigen::Vector3d(vertices[3 * v], vertices[3 * v + 1], vertices[3 * v + 2]));
 }
 
 void EmbreeScene::commit() {

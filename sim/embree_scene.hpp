@@ -54,6 +54,11 @@ class EmbreeScene {
   // Occlusion of up to 8 rays, as rtcOccluded8 (tfar set to -inf when occluded), same frame.
   void occluded8(const int* valid, RTCRay8& rays, double frame_y_mm) const;
 
+  // The hierarchy of mesh `mesh` in its own frame (std::invalid_argument when there is no
+  // such mesh): its one geometry is never changed after add_mesh, so it may be queried
+  // (rtcPointQuery) alongside the rays, or retained beyond the scene.
+  RTCScene mesh_scene(int mesh) const;
+
   const Eigen::Isometry3d& instance_transform(int instance) const;
   // World bounding box of the instance's transformed vertices (tight, not a box of a box).
   const Eigen::AlignedBox3d& instance_bounds(int instance) const;
@@ -82,8 +87,8 @@ class EmbreeScene {
                             double frame_y_mm, RTCRay8& local);
 
   RTCDevice device_ = nullptr;
-  std::vector<TriangleMesh> meshes_;
   std::vector<RTCScene> mesh_scenes_;  // per mesh, in its own frame
+  std::vector<std::size_t> mesh_vertex_counts_;
   std::vector<Instance> instances_;
   BeltIntervalIndex instances_along_belt_;
 };

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/embree_scene.hpp"
 #include "sim/embree_triangle_geometry.hpp"
 
 namespace cosmos {
@@ -50,16 +51,24 @@ double point_triangle_squared_distance(const Eigen::Vector3d& point, const Eigen
   return (a + (vb / denominator) * ab + (vc / denominator) * ac - point).squaredNorm();
 }
 
+// A retained reference to a scene holding one triangle geometry, and that geometry's
+// buffers (Embree keeps them as long as the scene).
 struct MeshSurfaceDistance::Hierarchy {
-  RTCDevice device = nullptr;
   RTCScene scene = nullptr;
-  std::vector<Eigen::Vector3d> vertices_mm;
-  std::vector<Eigen::Vector3i> triangles;
+  const float* vertices_mm = nullptr;   // x, y, z per vertex
+  const unsigned* triangles = nullptr;  // three vertex indices per triangle
 
-  ~Hierarchy() {
-    if (scene != nullptr) rtcReleaseScene(scene);
-    if (device != nullptr) rtcReleaseDevice(device);
+  explicit Hierarchy(RTCScene mesh_scene) : scene(mesh_scene) {
+    rtcRetainScene(scene);
+    RTCGeometry geometry = rtcGetGeometry(scene, 0);
+    vertices_mm =
+        static_cast<const float*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_VERTEX, 0));
+    triangles =
+        static_cast<const unsigned*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_INDEX, 0));
   }
+  ~Hierarchy() { rtcReleaseScene(scene); }
+  Hierarchy(const Hierarchy&) = delete;
+  Hierarchy& operator=(const Hierarchy&) = delete;
 };
 
 namespace {
@@ -67,21 +76,21 @@ namespace {
 constexpr double kRadiusMarginMm = 1e-3;
 
 struct NearestQuery {
-  const std::vector<Eigen::Vector3d>* vertices_mm;
-  const std::vector<Eigen::Vector3i>* triangles;
+  const float* vertices_mm;
+  const unsigned* triangles;
   Eigen::Vector3d point_mm;
   double best_mm2;
 };
 
-// Embree calls this for each triangle whose bounds the query sphere reaches; shrinking the
-// radius prunes the rest of the walk.
 bool measure_triangle(RTCPointQueryFunctionArguments* args) {
   auto& query = *static_cast<NearestQuery*>(args->userPtr);
-  const Eigen::Vector3i& t = (*query.triangles)[args->primID];
-  const auto& v = *query.vertices_mm;
-  const double d2 = point_triangle_squared_distance(
-      query.point_mm, v[static_cast<std::size_t>(t(0))], v[static_cast<std::size_t>(t(1))],
-      v[static_cast<std::size_t>(t(2))]);
+  const unsigned* triangle = query.triangles + 3 * static_cast<std::size_t>(args->primID);
+  const auto vertex = [&query](unsigned index) {
+    const float* v = query.vertices_mm + 3 * static_cast<std::size_t>(index);
+    return Eigen::Vector3d(v[0], v[1], v[2]);
+  };
+  const double d2 = point_triangle_squared_distance(query.point_mm, vertex(triangle[0]),
+                                                    vertex(triangle[1]), vertex(triangle[2]));
   if (d2 >= query.best_mm2) return false;
   query.best_mm2 = d2;
   // With a margin over the float rounding of the query's point and radius, so the walk never
@@ -92,27 +101,35 @@ bool measure_triangle(RTCPointQueryFunctionArguments* args) {
 
 }  // namespace
 
-MeshSurfaceDistance::MeshSurfaceDistance(const TriangleMesh& mesh)
-    : hierarchy_(std::make_unique<Hierarchy>()) {
-  Hierarchy& h = *hierarchy_;
-  h.device = rtcNewDevice("threads=1,verbose=0");
-  if (h.device == nullptr) throw std::runtime_error("Embree: cannot create a device");
-  RTCGeometry geometry = new_triangle_geometry(h.device, mesh, "MeshSurfaceDistance");
-  for (const Eigen::Vector3f& vertex : mesh.vertices)
-    h.vertices_mm.push_back(vertex.cast<double>());
-  h.triangles = mesh.triangles;
-  h.scene = rtcNewScene(h.device);
-  rtcAttachGeometry(h.scene, geometry);
-  rtcReleaseGeometry(geometry);
-  rtcCommitScene(h.scene);
-  if (rtcGetDeviceError(h.device) != RTC_ERROR_NONE)
-    throw std::runtime_error("Embree: cannot build the mesh's hierarchy");
+MeshSurfaceDistance::MeshSurfaceDistance(const TriangleMesh& mesh) {
+  RTCDevice device = rtcNewDevice("threads=1,verbose=0");
+  if (device == nullptr) throw std::runtime_error("Embree: cannot create a device");
+  // The scene holds the device, the geometry and its buffers as long as it lives.
+  RTCScene scene = nullptr;
+  try {
+    RTCGeometry geometry = new_triangle_geometry(device, mesh, "MeshSurfaceDistance");
+    scene = rtcNewScene(device);
+    rtcAttachGeometry(scene, geometry);
+    rtcReleaseGeometry(geometry);
+    rtcCommitScene(scene);
+  } catch (...) {
+    rtcReleaseDevice(device);
+    throw;
+  }
+  const bool built = rtcGetDeviceError(device) == RTC_ERROR_NONE;
+  rtcReleaseDevice(device);
+  if (built) hierarchy_ = std::make_unique<Hierarchy>(scene);
+  rtcReleaseScene(scene);
+  if (!built) throw std::runtime_error("Embree: cannot build the mesh's hierarchy");
 }
+
+MeshSurfaceDistance::MeshSurfaceDistance(const EmbreeScene& scene, int mesh)
+    : hierarchy_(std::make_unique<Hierarchy>(scene.mesh_scene(mesh))) {}
 
 MeshSurfaceDistance::~MeshSurfaceDistance() = default;
 
 double MeshSurfaceDistance::nearest_squared_mm2(const Eigen::Vector3d& point_mm) const {
-  NearestQuery nearest{&hierarchy_->vertices_mm, &hierarchy_->triangles, point_mm,
+  NearestQuery nearest{hierarchy_->vertices_mm, hierarchy_->triangles, point_mm,
                        std::numeric_limits<double>::infinity()};
   RTCPointQuery query;
   query.x = static_cast<float>(point_mm.x());

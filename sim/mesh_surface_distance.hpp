@@ -8,7 +8,13 @@
 // revolution is a few rings of vertices), so the distance to the nearest vertex counts up to
 // half a ring's spacing for a point that lies on the part's surface.
 //
-// Thread-safe for queries once built: each query keeps its own state.
+// The triangles are read from the buffers Embree keeps for its hierarchy (float, as the
+// mesh's vertices are), so a measure holds no copy of its mesh; and one can share the
+// hierarchy the simulated scanner built for the same mesh, so a simulated cell that measures
+// its poses holds each mesh's hierarchy once.
+//
+// Thread-safe for queries once built: each query keeps its own state; a hierarchy shared
+// with a scanner is never changed after it was built.
 #include <Eigen/Core>
 #include <memory>
 
@@ -16,11 +22,16 @@
 
 namespace cosmos {
 
+class EmbreeScene;
+
 class MeshSurfaceDistance {
  public:
   // The mesh's vertices in its own frame, mm. std::invalid_argument when it has no triangle
   // or an index out of range.
   explicit MeshSurfaceDistance(const TriangleMesh& mesh);
+  // Mesh `mesh` of `scene` (EmbreeScene::add_mesh), its hierarchy shared: it stays valid
+  // after the scene is gone. std::invalid_argument when the scene has no such mesh.
+  MeshSurfaceDistance(const EmbreeScene& scene, int mesh);
   ~MeshSurfaceDistance();
   MeshSurfaceDistance(const MeshSurfaceDistance&) = delete;
   MeshSurfaceDistance& operator=(const MeshSurfaceDistance&) = delete;

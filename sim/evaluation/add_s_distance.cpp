@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace cosmos {
 namespace {
@@ -21,8 +22,11 @@ AddSDistance::AddSDistance(std::span<const Eigen::Vector3d> model_points_mm)
 
 AddSDistance::AddSDistance(std::span<const Eigen::Vector3d> model_points_mm,
                            const TriangleMesh& mesh)
-    : points_mm_(model_points_mm.begin(), model_points_mm.end()),
-      surface_(std::make_unique<const MeshSurfaceDistance>(mesh)) {}
+    : AddSDistance(model_points_mm, std::make_unique<const MeshSurfaceDistance>(mesh)) {}
+
+AddSDistance::AddSDistance(std::span<const Eigen::Vector3d> model_points_mm,
+                           std::unique_ptr<const MeshSurfaceDistance> surface)
+    : points_mm_(model_points_mm.begin(), model_points_mm.end()), surface_(std::move(surface)) {}
 
 // Splits [begin, end) at its middle along the axis of largest extent, so that every point
 // before the middle is <= the middle point on that axis and every point after it is >=.

@@ -35,6 +35,10 @@ class AddSDistance {
   explicit AddSDistance(std::span<const Eigen::Vector3d> model_points_mm);
   // The mean over `model_points_mm` of the distance to the nearest point of `mesh`'s surface.
   AddSDistance(std::span<const Eigen::Vector3d> model_points_mm, const TriangleMesh& mesh);
+  // ... to the nearest point of the surface `surface` measures (a hierarchy shared with the
+  // simulated scanner's).
+  AddSDistance(std::span<const Eigen::Vector3d> model_points_mm,
+               std::unique_ptr<const MeshSurfaceDistance> surface);
 
   // mm; 0 when there are no model points.
   double add_s_mm(const RigidPose& truth, const RigidPose& estimate) const;

@@ -150,6 +150,7 @@ void SimulatedConveyor::build(const std::vector<const SimPartModel*>& models,
     PlacedSimPart truth;
     truth.catalog_index = model.catalog_index;
     truth.name = model.name;
+    truth.scene_mesh = scene_mesh[picks[i]];
     truth.T_belt_part = placed.T_belt_part;
     truth.bounds_mm = placed.bounds_mm;
     // Profile k's sheet is at y = −k · Δy: inside the box for −y_max <= k · Δy <= −y_min.

@@ -41,6 +41,7 @@ struct SimPartModel {
 struct PlacedSimPart {
   int catalog_index = -1;
   std::string name;
+  int scene_mesh = -1;  // its mesh in scene() (ConveyorScene::mesh), shared by its copies
   Eigen::Isometry3d T_belt_part = Eigen::Isometry3d::Identity();
   Eigen::AlignedBox3d bounds_mm;  // belt frame
   // The profiles whose laser sheet crosses the part's bounding box: every sample of the part

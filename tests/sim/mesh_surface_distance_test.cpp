@@ -1,13 +1,17 @@
 // The distance to a mesh's surface: each Voronoi region of a triangle measured against its
-// hand-worked value, and the hierarchy's walk against every triangle measured in turn.
+// hand-worked value, and the hierarchy's walk against every triangle measured in turn; a
+// hierarchy shared with the scanner's scene against one of its own.
 #include "sim/mesh_surface_distance.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <memory>
 #include <random>
 
+#include "sim/embree_scene.hpp"
 #include "sim/procedural_meshes.hpp"
 
 namespace cosmos {
@@ -63,6 +67,28 @@ TEST(MeshSurfaceDistance, APointOnAFaceIsOnTheSurfaceWhereNoVertexIs) {
   // The middle of the top face, 5 mm above the box's centre: far from every corner.
   EXPECT_NEAR(distance.nearest_squared_mm2({0, 0, 5}), 0, 1e-12);
   EXPECT_NEAR(distance.nearest_squared_mm2({0, 0, 8}), 9, 1e-9);
+}
+
+TEST(MeshSurfaceDistance, AScannersHierarchyMeasuresAsItsOwnAndOutlivesTheScene) {
+  const TriangleMesh sphere = make_icosphere(30, 3);
+  const MeshSurfaceDistance own(sphere);
+  std::unique_ptr<const MeshSurfaceDistance> shared;
+  {
+    EmbreeScene scene;
+    scene.add_mesh(make_box(40, 20, 10));
+    const int mesh = scene.add_mesh(sphere);
+    shared = std::make_unique<const MeshSurfaceDistance>(scene, mesh);
+    EXPECT_THROW(MeshSurfaceDistance(scene, 2), std::invalid_argument);
+  }
+  std::mt19937 random(13);
+  std::uniform_real_distribution<double> coordinate(-60, 60);
+  for (int query = 0; query < 300; ++query) {
+    const Eigen::Vector3d p(coordinate(random), coordinate(random), coordinate(random));
+    ASSERT_DOUBLE_EQ(shared->nearest_squared_mm2(p), own.nearest_squared_mm2(p))
+        << "query " << query;
+  }
+  // The sphere's, not the box's: the box's centre is 5 mm under its top face.
+  EXPECT_NEAR(std::sqrt(shared->nearest_squared_mm2(Eigen::Vector3d::Zero())), 30, 0.5);
 }
 
 TEST(MeshSurfaceDistance, AMeshWithoutTrianglesIsRefused) {
