@@ -296,6 +296,12 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
                   std::to_string(static_cast<int>(std::lround(100 * result.seen_fraction))) +
                   " % of it seen");
   }
+  if (best->seen_fraction < parameters_.min_accepted_seen_fraction) {
+    result.part = -1;
+    return finish("only " +
+                  std::to_string(static_cast<int>(std::lround(100 * best->seen_fraction))) +
+                  " % of the best candidate's surface is where the scene is");
+  }
   if (best->inlier_fraction < parameters_.min_inlier_fraction) {
     result.part = -1;
     return finish("best candidate explains only " +

@@ -267,6 +267,50 @@ TEST_F(RecognizerOnRegressionBase, APartLiftedOffTheBeltIsRefusedWhenPartsLieOnI
   }
 }
 
+// A scene that shows only part of the winner's view, the rest of it where the scanner measured
+// the belt, is rejected rather than accepted: the cut scans' winners that a lenient recognizer
+// accepts with less than min_accepted_seen_fraction of their view seen are refused, and every
+// winner accepted shows at least that much.
+TEST_F(RecognizerOnRegressionBase, AWinnerWhoseViewTheSceneContradictsIsRejected) {
+  RecognitionParameters lenient_parameters;
+  lenient_parameters.min_accepted_seen_fraction = lenient_parameters.min_seen_fraction;
+  const Recognizer lenient(*base_, CosmosParameters{}, lenient_parameters);
+  const double accepted_seen = RecognitionParameters{}.min_accepted_seen_fraction;
+  int refused = 0;
+  for (std::uint64_t seed = 131; seed < 141; ++seed) {
+    const std::string& name = base_->parts[static_cast<std::size_t>(seed % 5)].name;
+    RangeImage image = scan(name, seed);
+    ASSERT_TRUE(image.belt_known()) << name;
+    // The rows of the part's far half: no surface, the belt measured.
+    int first_row = image.height(), last_row = -1;
+    for (int row = 0; row < image.height(); ++row)
+      for (int column = 0; column < image.width(); ++column)
+        if (!std::isnan(image.z_mm(column, row))) {
+          first_row = std::min(first_row, row);
+          last_row = std::max(last_row, row);
+        }
+    ASSERT_LT(first_row, last_row) << name;
+    for (int row = (first_row + last_row) / 2; row <= last_row; ++row)
+      for (int column = 0; column < image.width(); ++column) {
+        image.z_mm(column, row) = std::numeric_limits<float>::quiet_NaN();
+        image.belt_seen(column, row) = 1;
+      }
+    const RecognitionResult accepted = lenient.recognize(image);
+    const RecognitionResult judged = recognizer_->recognize(image);
+    if (judged.status == RecognitionStatus::kOk) {
+      EXPECT_GE(judged.seen_fraction, accepted_seen) << name << " seed " << seed;
+    }
+    if (accepted.status != RecognitionStatus::kOk || accepted.seen_fraction >= accepted_seen)
+      continue;
+    EXPECT_EQ(judged.status, RecognitionStatus::kRejected) << name << " seed " << seed;
+    EXPECT_NE(judged.reason.find("of the best candidate's surface is where the scene is"),
+              std::string::npos)
+        << name << " seed " << seed << ": " << judged.reason;
+    ++refused;
+  }
+  EXPECT_GE(refused, 2);
+}
+
 TEST_F(RecognizerOnRegressionBase, RejectsAPartTheBaseDoesNotHold) {
   for (const ModelPart& part : base_->parts) ASSERT_NE(part.name, "bunny");
   for (std::uint64_t seed : {51, 52}) {
