@@ -296,7 +296,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
                   std::to_string(static_cast<int>(std::lround(100 * result.seen_fraction))) +
                   " % of it seen");
   }
-  if (best->seen_fraction < parameters_.min_accepted_seen_fraction) {
+  if (best->from_pose_search && best->seen_fraction < parameters_.min_accepted_seen_fraction) {
     result.part = -1;
     return finish("only " +
                   std::to_string(static_cast<int>(std::lround(100 * best->seen_fraction))) +

@@ -143,10 +143,13 @@ struct RecognitionParameters {
   // surface; correct ones nearly always more than half.
   SurfaceSeenParameters surface_seen;
   double min_seen_fraction = 0.4;
-  // ... and the winner is accepted only with at least this much of it seen. In a large
-  // catalog a scene whose own part was never registered (a few flat faces that dozens of
-  // parts contain) went to another part that explained its points and showed 40-65 % of its
-  // view, with no rival left to compare; the scene's own part, found, shows nearly all of it.
+  // ... and a winner the search over every part proposed is accepted only with at least this
+  // much of it seen. That search registers the first few of many parts (registered_parts): in
+  // a large catalog a scene whose own part was not among them (a few flat faces that dozens
+  // of parts contain) went to another part that explained its points and showed 40-65 % of
+  // its view, with no rival left to compare; the scene's own part, found, shows nearly all of
+  // it. Selected views and resting poses are not cut short so, and a hollow part lying open
+  // side up shows little more than half of its view.
   double min_accepted_seen_fraction = 0.65;
   // Rejection as ambiguous between two parts (§5.3.6, §5.4).
   PartAmbiguityParameters ambiguity;
@@ -207,7 +210,8 @@ struct RecognitionParameters {
       "less of its matched view seen in the scene: a candidate neither wins nor rivals",
       Range{0, 1});
     v("min_accepted_seen_fraction", min_accepted_seen_fraction,
-      "less of the winner's matched view seen: rejected rather than accepted", Range{0, 1});
+      "a winner the search over every part proposed, with less of its view seen: rejected",
+      Range{0, 1});
     v("ambiguity", ambiguity, "rejection as ambiguous between two parts (§5.3.6, §5.4)");
     v("size_variants", size_variants, "one shape at several sizes: told apart by the fit");
     v("surfaces", surfaces, "the model surfaces a recognition keeps unpacked");
