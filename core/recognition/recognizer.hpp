@@ -146,10 +146,10 @@ struct RecognitionParameters {
   // ... and a winner the search over every part proposed is accepted only with at least this
   // much of it seen. That search registers the first few of many parts (registered_parts): in
   // a large catalog a scene whose own part was not among them (a few flat faces that dozens
-  // of parts contain) went to another part that explained its points and showed 40-65 % of
-  // its view, with no rival left to compare; the scene's own part, found, shows nearly all of
-  // it. Selected views and resting poses are not cut short so, and a hollow part lying open
-  // side up shows little more than half of its view.
+  // of parts contain) went to another part that explained its points and showed about half
+  // of its view, with no rival left to compare; the scene's own part, found, shows nearly all
+  // of it. Selected views and resting poses are not cut short so, and a hollow part lying
+  // open side up shows little more than half of its view.
   double min_accepted_seen_fraction = 0.65;
   // Rejection as ambiguous between two parts (§5.3.6, §5.4).
   PartAmbiguityParameters ambiguity;
