@@ -97,8 +97,7 @@ void EmbreeScene::set_instance_transform(int instance_index,
   instance.bounds.setEmpty();
   // The vertices as Embree keeps them (float x, y, z), the scene's only copy of its meshes.
   const auto mesh = static_cast<std::size_t>(instance.mesh);
-  const auto* vertices = static_cast<const float*>(
-      rtcGetGeometryBufferData(rtcGetGeometry(mesh_scenes_[mesh], 0), RTC_BUFFER_TYPE_VERTEX, 0));
+  const float* vertices = triangle_buffers(mesh_scenes_[mesh]).vertices_mm;
   for (std::size_t v = 0; v < mesh_vertex_counts_[mesh]; ++v)
     instance.bounds.extend(
         T_world_mesh * Eigen::Vector3d(vertices[3 * v], vertices[3 * v + 1], vertices[3 * v + 2]));

@@ -32,4 +32,11 @@ RTCGeometry new_triangle_geometry(RTCDevice device, const TriangleMesh& mesh, co
   return geometry;
 }
 
+TriangleBuffers triangle_buffers(RTCScene scene) {
+  RTCGeometry geometry = rtcGetGeometry(scene, 0);
+  return {
+      static_cast<const float*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_VERTEX, 0)),
+      static_cast<const unsigned*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_INDEX, 0))};
+}
+
 }  // namespace cosmos

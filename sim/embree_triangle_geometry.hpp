@@ -16,4 +16,13 @@ namespace cosmos {
 // out of range; std::runtime_error when Embree cannot allocate the buffers.
 RTCGeometry new_triangle_geometry(RTCDevice device, const TriangleMesh& mesh, const char* who);
 
+// The buffers of the one triangle geometry of `scene` (one new_triangle_geometry attached),
+// which Embree keeps as long as the scene: x, y, z per vertex and three vertex indices per
+// triangle.
+struct TriangleBuffers {
+  const float* vertices_mm = nullptr;
+  const unsigned* triangles = nullptr;
+};
+TriangleBuffers triangle_buffers(RTCScene scene);
+
 }  // namespace cosmos

@@ -3,9 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
-#include <string>
-#include <vector>
 
 #include "sim/embree_scene.hpp"
 #include "sim/embree_triangle_geometry.hpp"
@@ -55,16 +52,10 @@ double point_triangle_squared_distance(const Eigen::Vector3d& point, const Eigen
 // buffers (Embree keeps them as long as the scene).
 struct MeshSurfaceDistance::Hierarchy {
   RTCScene scene = nullptr;
-  const float* vertices_mm = nullptr;   // x, y, z per vertex
-  const unsigned* triangles = nullptr;  // three vertex indices per triangle
+  TriangleBuffers buffers;
 
-  explicit Hierarchy(RTCScene mesh_scene) : scene(mesh_scene) {
+  explicit Hierarchy(RTCScene mesh_scene) : scene(mesh_scene), buffers(triangle_buffers(scene)) {
     rtcRetainScene(scene);
-    RTCGeometry geometry = rtcGetGeometry(scene, 0);
-    vertices_mm =
-        static_cast<const float*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_VERTEX, 0));
-    triangles =
-        static_cast<const unsigned*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_INDEX, 0));
   }
   ~Hierarchy() { rtcReleaseScene(scene); }
   Hierarchy(const Hierarchy&) = delete;
@@ -101,26 +92,10 @@ bool measure_triangle(RTCPointQueryFunctionArguments* args) {
 
 }  // namespace
 
+// A scene of its own, kept only for the hierarchy it builds: the hierarchy outlives it.
 MeshSurfaceDistance::MeshSurfaceDistance(const TriangleMesh& mesh) {
-  RTCDevice device = rtcNewDevice("threads=1,verbose=0");
-  if (device == nullptr) throw std::runtime_error("Embree: cannot create a device");
-  // The scene holds the device, the geometry and its buffers as long as it lives.
-  RTCScene scene = nullptr;
-  try {
-    RTCGeometry geometry = new_triangle_geometry(device, mesh, "MeshSurfaceDistance");
-    scene = rtcNewScene(device);
-    rtcAttachGeometry(scene, geometry);
-    rtcReleaseGeometry(geometry);
-    rtcCommitScene(scene);
-  } catch (...) {
-    rtcReleaseDevice(device);
-    throw;
-  }
-  const bool built = rtcGetDeviceError(device) == RTC_ERROR_NONE;
-  rtcReleaseDevice(device);
-  if (built) hierarchy_ = std::make_unique<Hierarchy>(scene);
-  rtcReleaseScene(scene);
-  if (!built) throw std::runtime_error("Embree: cannot build the mesh's hierarchy");
+  EmbreeScene scene;
+  hierarchy_ = std::make_unique<Hierarchy>(scene.mesh_scene(scene.add_mesh(mesh)));
 }
 
 MeshSurfaceDistance::MeshSurfaceDistance(const EmbreeScene& scene, int mesh)
@@ -129,7 +104,7 @@ MeshSurfaceDistance::MeshSurfaceDistance(const EmbreeScene& scene, int mesh)
 MeshSurfaceDistance::~MeshSurfaceDistance() = default;
 
 double MeshSurfaceDistance::nearest_squared_mm2(const Eigen::Vector3d& point_mm) const {
-  NearestQuery nearest{hierarchy_->vertices_mm, hierarchy_->triangles, point_mm,
+  NearestQuery nearest{hierarchy_->buffers.vertices_mm, hierarchy_->buffers.triangles, point_mm,
                        std::numeric_limits<double>::infinity()};
   RTCPointQuery query;
   query.x = static_cast<float>(point_mm.x());

@@ -73,9 +73,9 @@ std::vector<FieldHypothesis> turned_view_starts(const RegistrationPoints& scorin
                                                 int turns) {
   const Eigen::Vector3d scene_centre = scoring.position_mm.rowwise().mean();
   std::vector<FieldHypothesis> starts;
-  for (std::size_t s = 0; s < model.start_views.size(); ++s) {
-    const ModelBaseView& view = base.views[static_cast<std::size_t>(model.start_views[s])];
-    const Eigen::Vector3d& model_centre = model.start_view_centroid_mm[s];
+  for (const std::size_t s : model.start_views) {
+    const ModelBaseView& view = base.views[static_cast<std::size_t>(model.views[s])];
+    const Eigen::Vector3d& model_centre = model.view_centroid_mm[s];
     const RigidTransform T_part_view = view.T_scanner_part.inverse();
     for (int k = 0; k < turns; ++k)
       starts.push_back({T_part_view * in_plane_turn(k, turns, scene_centre, model_centre), 0.0});
@@ -148,11 +148,10 @@ PartSearchModel build_part_search_model(const ModelBase& base, int part,
     const RigidTransform T_part_view = view.T_scanner_part.inverse();
     for (Eigen::Index i = 0; i < position.cols(); ++i)
       points_part_mm.push_back(T_part_view.apply(position.col(i)));
+    if (!has_coarse_views || is_once_subdivided_view(view.view_index))
+      model.start_views.push_back(model.views.size());
     model.views.push_back(static_cast<int>(v));
-    model.view_centroid_part_mm.push_back(T_part_view.apply(position.rowwise().mean()));
-    if (has_coarse_views && !is_once_subdivided_view(view.view_index)) continue;
-    model.start_views.push_back(static_cast<int>(v));
-    model.start_view_centroid_mm.push_back(position.rowwise().mean());
+    model.view_centroid_mm.push_back(position.rowwise().mean());
   }
   model.field = PartDistanceField(points_part_mm, parameters);
   return model;

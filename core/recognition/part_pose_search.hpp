@@ -77,19 +77,20 @@ struct PartPoseSearchParameters {
   }
 };
 
-// What the search needs of one part beyond the base: its distance field and, per coarse
-// view (every view when the base has no coarse ones), the centroid of its control points
-// (unpacking 80 views per part and search only to take their centroids was a tenth of the
-// recognizer's time).
+// What the search needs of one part beyond the base: its distance field and, per view, the
+// centroid of its control points (unpacking 80 views per part and search only to take their
+// centroids was a tenth of the recognizer's time).
 struct PartSearchModel {
   PartDistanceField field;
-  std::vector<int> start_views;  // indices into ModelBase::views
-  std::vector<Eigen::Vector3d> start_view_centroid_mm;
-  // Every view of the part and its control points' centroid, in the part's frame: the
-  // resting search's starts put the centroid of the view nearest their vertical on the
-  // scene's (resting_pose_search.hpp).
+  // Every view of the part that has control points (indices into ModelBase::views) and their
+  // centroid in that view's frame. The pose search puts the scene's centroid on a start view's;
+  // the resting search on that of the view nearest the vertical (resting_pose_search.hpp),
+  // of every view, since a coarse one can be 20 degrees off.
   std::vector<int> views;
-  std::vector<Eigen::Vector3d> view_centroid_part_mm;
+  std::vector<Eigen::Vector3d> view_centroid_mm;
+  // The coarse views the pose search starts from (every view when the base has no coarse
+  // ones): positions in `views`.
+  std::vector<std::size_t> start_views;
 };
 
 PartSearchModel build_part_search_model(const ModelBase& base, int part,

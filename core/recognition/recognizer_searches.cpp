@@ -29,7 +29,7 @@ void Recognizer::verify_voted_poses(const ViewAnalysis& scene, const ScenePoints
     if (model.start_views.empty()) continue;
     // The part's poses as starts on one of its views; aligning them in the part's field moves
     // each onto the view nearest to it (part_pose_search.hpp).
-    const int view = model.start_views.front();
+    const int view = model.views[model.start_views.front()];
     const RigidTransform& T_view_part =
         model_base_.views[static_cast<std::size_t>(view)].T_scanner_part;
     starts.clear();

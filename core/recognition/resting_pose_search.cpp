@@ -29,7 +29,8 @@ Eigen::Vector3d seen_centroid_part(const ModelBase& base, const PartSearchModel&
   };
   for (std::size_t s = 1; s < model.views.size(); ++s)
     if (direction(s).dot(up_part) > direction(nearest).dot(up_part)) nearest = s;
-  return model.view_centroid_part_mm[nearest];
+  const ModelBaseView& view = base.views[static_cast<std::size_t>(model.views[nearest])];
+  return view.T_scanner_part.inverse().apply(model.view_centroid_mm[nearest]);
 }
 
 }  // namespace

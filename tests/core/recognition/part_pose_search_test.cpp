@@ -196,22 +196,27 @@ TEST_F(PartPoseSearch, QuickFitPutsTheScansOwnPartFirst) {
 }
 
 // The resting search puts each start's centroid on the scene's from the part's view nearest
-// the vertical: every view of the part is there, its centroid in the part's frame.
-TEST_F(PartPoseSearch, TheSearchModelHoldsEveryViewsCentroidInThePartFrame) {
+// the vertical: every view of the part is there with its centroid, and the pose search's
+// starts are its coarse views.
+TEST_F(PartPoseSearch, TheSearchModelHoldsEveryViewsCentroid) {
   const RecognitionParameters parameters;
   const PartSearchModel model = build_part_search_model(*base_, 1, parameters.field);
   std::size_t part_views = 0;
   for (const ModelBaseView& view : base_->views) part_views += view.part_index == 1;
   ASSERT_EQ(model.views.size(), part_views);
-  ASSERT_EQ(model.view_centroid_part_mm.size(), part_views);
+  ASSERT_EQ(model.view_centroid_mm.size(), part_views);
   for (std::size_t k = 0; k < model.views.size(); k += 37) {
     const ModelBaseView& view = base_->views[static_cast<std::size_t>(model.views[k])];
     ASSERT_EQ(view.part_index, 1);
     const ModelSurface surface(view);
     const Eigen::Vector3d centroid_view = surface.points().position_mm.rowwise().mean();
-    EXPECT_LT((view.T_scanner_part.inverse().apply(centroid_view) - model.view_centroid_part_mm[k])
-                  .norm(),
-              1e-9);
+    EXPECT_LT((centroid_view - model.view_centroid_mm[k]).norm(), 1e-9);
+  }
+  ASSERT_FALSE(model.start_views.empty());
+  for (const std::size_t s : model.start_views) {
+    ASSERT_LT(s, model.views.size());
+    EXPECT_TRUE(
+        is_once_subdivided_view(base_->views[static_cast<std::size_t>(model.views[s])].view_index));
   }
 }
 
