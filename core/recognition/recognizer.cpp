@@ -128,28 +128,38 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   ScenePoints points{std::move(scene_points.points), {}, scene};
   points.coarse = spread_subset(points.all, parameters_.coarse_points);
   ModelSurfaces surfaces(model_base_, parameters_.surfaces);
+  // Verifies the selected views from `next` up to `end` until one explains the scene. The
+  // decision needs the best other part to compare with (part_ambiguity.hpp): once a view or a
+  // search has explained the scene, the next selected views of parts not verified yet are
+  // verified as its rivals, whichever order the views and the searches ran in.
   std::size_t next = 0;
-  while (next < selected.size()) {
-    result.candidates.push_back(verify(analysis, points, selected[next++], surfaces,
-                                       result.timings.matching_ms, result.timings.registration_ms));
-    ++result.views_examined;
-    if (explains_scene(result.candidates.back())) break;
-  }
-  // A view that explains enough ends verification, but the decision needs the best other part
-  // to compare with (part_ambiguity.hpp): the next selected views of parts not verified yet.
-  const int sufficient_part = next < selected.size() ? result.candidates.back().part : -1;
-  for (int rivals = 0; sufficient_part >= 0 && next < selected.size() &&
-                       rivals < parameters_.ambiguity.rival_verifications;
-       ++next) {
-    const int part = model_base_.views[static_cast<std::size_t>(selected[next].view)].part_index;
-    if (std::any_of(result.candidates.begin(), result.candidates.end(),
-                    [part](const RecognitionCandidate& c) { return c.part == part; }))
-      continue;
-    result.candidates.push_back(verify(analysis, points, selected[next], surfaces,
-                                       result.timings.matching_ms, result.timings.registration_ms));
-    ++result.views_examined;
-    ++rivals;
-  }
+  bool rivals_verified = false;
+  const auto verify_rivals = [&] {
+    rivals_verified = true;
+    for (int rivals = 0;
+         next < selected.size() && rivals < parameters_.ambiguity.rival_verifications; ++next) {
+      const int part = model_base_.views[static_cast<std::size_t>(selected[next].view)].part_index;
+      if (std::any_of(result.candidates.begin(), result.candidates.end(),
+                      [part](const RecognitionCandidate& c) { return c.part == part; }))
+        continue;
+      result.candidates.push_back(verify(analysis, points, selected[next], surfaces,
+                                         result.timings.matching_ms,
+                                         result.timings.registration_ms));
+      ++result.views_examined;
+      ++rivals;
+    }
+  };
+  const auto verify_selected = [&](std::size_t end) {
+    while (next < end) {
+      result.candidates.push_back(verify(analysis, points, selected[next++], surfaces,
+                                         result.timings.matching_ms,
+                                         result.timings.registration_ms));
+      ++result.views_examined;
+      if (explains_scene(result.candidates.back())) return verify_rivals();
+    }
+  };
+  verify_selected(
+      std::min(selected.size(), static_cast<std::size_t>(parameters_.views_before_search)));
   const auto explained = [&] {
     return std::any_of(result.candidates.begin(), result.candidates.end(),
                        [&](const RecognitionCandidate& c) { return explains_scene(c); });
@@ -171,6 +181,10 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
     result.catalog_searched =
         search_candidate_parts(analysis, points, surfaces, result, uncovered) && !rest_searched;
   }
+  if (!explained())
+    verify_selected(selected.size());
+  else if (!rivals_verified)
+    verify_rivals();
   const RecognitionCandidate* best = best_candidate(result.candidates);
   if (!best) return finish("no candidate view could be registered");
 

@@ -95,6 +95,12 @@ struct RecognitionParameters {
   // contains) is explained one way by many parts, and ending there left the scene's own part
   // unregistered.
   double sufficient_seen_fraction = 0.75;
+  // Verification hands over to the searches below after this many selected views that do
+  // not explain the scene, and verifies the others only when no search explains it either: a
+  // scene its first views do not explain is rarely explained by the later ones, and the
+  // search, which ranks every part by its field fit, finds its part sooner than verifying
+  // each failing view does.
+  int views_before_search = 2;
   PartSupportParameters support;  // what counts as explained scene surface
   // When no selected view reaches sufficient_support: the poses the catalog-wide vote index
   // proposes, verified like selected views.
@@ -118,6 +124,13 @@ struct RecognitionParameters {
   // best part's + search.kept_score_margin_mm2. Scenes fit their own part at 0.02-0.16 mm^2,
   // other parts at 2 mm^2 and more.
   double convincing_field_fit_mm2 = 0.5;
+  // A part whose fit is not convincing has its poses registered best field fit first, and
+  // when the first, registered, explains less than this of the scene, the others are not
+  // tried: the part rarely explains more in its next poses (its field fit was already poor),
+  // and each costs a registration and a part support. A convincing fit keeps all its poses,
+  // since a part of near symmetry (a turbine's blades) fits its wrong turns first; so does a
+  // part whose first pose did not register, which measured nothing.
+  double abandoned_part_support = 0.2;
   // Of the others, at most this many are registered: each costs as much as the field stages
   // of several parts, and a part whose fit ranks below the first few has not explained a
   // scene its better-fitting rivals did not.
@@ -185,6 +198,8 @@ struct RecognitionParameters {
       Range{0, 1});
     v("sufficient_seen_fraction", sufficient_seen_fraction,
       "... with this much of its matched view seen in the scene", Range{0, 1});
+    v("views_before_search", views_before_search,
+      "selected views verified before the searches, the others after them", Range{0, 1000});
     v("support", support, "what counts as explained scene surface");
     v("vote_index", vote_index, "votes for (part, pose) over the whole catalog");
     v("resting", resting, "the parts' stable poses on the belt, searched first");
@@ -192,6 +207,9 @@ struct RecognitionParameters {
     v("catalog_rank", catalog_rank, "the order of the search over every part");
     v("convincing_field_fit_mm2", convincing_field_fit_mm2,
       "a part whose best field pose fits this well is registered at once, mm^2", Range{0, 1e6});
+    v("abandoned_part_support", abandoned_part_support,
+      "a part fitting less well whose first registered pose explains less has no more tried",
+      Range{0, 1});
     v("registered_waiting_parts", registered_waiting_parts,
       "of the parts that fit less well, at most this many are registered", Range{0, 100000});
     v("registered_parts", registered_parts,

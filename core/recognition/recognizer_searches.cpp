@@ -91,6 +91,9 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
   auto register_part = [&](int part, const std::vector<FieldHypothesis>& field_poses) {
     ++parts_registered;
     StageClock::time_point stage = StageClock::now();
+    const bool fits_convincingly =
+        !field_poses.empty() &&
+        field_poses.front().truncated_mean_square_mm2 <= parameters_.convincing_field_fit_mm2;
     const std::vector<ViewPoseHypothesis> hypotheses = register_field_hypotheses(
         scene_points.all, model_base_, part, part_search_model(part), field_poses,
         parameters_.registration, parameters_.search, surfaces);
@@ -112,6 +115,9 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
       result.candidates.push_back(candidate);
       // As in verification: a pose that explains this much of the scene ends the search.
       if (explains_scene(candidate)) return true;
+      if (&hypothesis == &hypotheses.front() && !fits_convincingly && candidate.registered &&
+          candidate.inlier_fraction < parameters_.abandoned_part_support)
+        return false;
     }
     return false;
   };

@@ -358,6 +358,103 @@ TEST_F(RecognizerOnRegressionBase, TheSearchRegistersAtMostItsBudgetOfParts) {
   EXPECT_GT(most_registered, 2);
 }
 
+// A candidate from the §5.2 selection (not from a search nor the vote index).
+bool from_selected_view(const RecognitionCandidate& candidate) {
+  return !candidate.from_pose_search && !candidate.from_resting_search &&
+         !candidate.from_vote_index;
+}
+
+TEST_F(RecognizerOnRegressionBase, SelectedViewsBeyondTheFirstFewWaitForTheSearches) {
+  const RecognitionParameters defaults;
+  ASSERT_LT(defaults.views_before_search,
+            defaults.selection.best_clusters * defaults.selection.best_views);
+  RecognitionParameters views_first;
+  views_first.views_before_search = 1000;
+  const Recognizer all_views_first(*base_, CosmosParameters{}, views_first);
+  // Nothing explains the bunny: its first selected views, then the search, then the rest of
+  // its selected views, the same views as when all are verified first.
+  for (std::uint64_t seed : {51, 52}) {
+    const RecognitionResult result = recognizer_->recognize(scan("bunny", seed));
+    const RecognitionResult reference = all_views_first.recognize(scan("bunny", seed));
+    EXPECT_EQ(result.status, RecognitionStatus::kRejected) << seed;
+    std::vector<int> views, reference_views;
+    std::string order;
+    for (const RecognitionCandidate& c : result.candidates) {
+      order += from_selected_view(c) ? 'v' : 's';
+      if (from_selected_view(c)) views.push_back(c.view);
+    }
+    for (const RecognitionCandidate& c : reference.candidates)
+      if (from_selected_view(c)) reference_views.push_back(c.view);
+    EXPECT_EQ(views, reference_views) << seed;
+    const std::size_t first_search = order.find('s');
+    ASSERT_NE(first_search, std::string::npos) << seed;
+    EXPECT_EQ(first_search, static_cast<std::size_t>(defaults.views_before_search)) << order;
+    EXPECT_NE(order.find('v', first_search), std::string::npos) << order;
+  }
+  // Scans of the base's parts: the order changes what a recognition costs, not its answer;
+  // and the scans the search explains have their later selected views verified only as the
+  // winner's rival, at most rival_verifications of them.
+  int explained_by_search = 0;
+  for (std::uint64_t seed = 31; seed < 46; ++seed) {
+    const std::string& name = base_->parts[static_cast<std::size_t>(seed % 5)].name;
+    const RangeImage image = scan(name, seed);
+    const RecognitionResult result = recognizer_->recognize(image);
+    const RecognitionResult reference = all_views_first.recognize(image);
+    EXPECT_EQ(result.status, reference.status) << name << " seed " << seed;
+    EXPECT_EQ(result.part, reference.part) << name << " seed " << seed;
+    const auto first_search =
+        std::find_if(result.candidates.begin(), result.candidates.end(),
+                     [](const RecognitionCandidate& c) { return c.from_pose_search; });
+    if (first_search == result.candidates.end() || result.status != RecognitionStatus::kOk)
+      continue;
+    const bool search_explained =
+        std::any_of(first_search, result.candidates.end(), [&](const RecognitionCandidate& c) {
+          return c.from_pose_search && c.part == result.part &&
+                 c.inlier_fraction >= defaults.sufficient_support;
+        });
+    if (!search_explained) continue;
+    ++explained_by_search;
+    const auto later_views =
+        std::count_if(first_search, result.candidates.end(), from_selected_view);
+    EXPECT_LE(later_views, defaults.ambiguity.rival_verifications) << name << " seed " << seed;
+  }
+  EXPECT_GE(explained_by_search, 1);
+}
+
+TEST_F(RecognizerOnRegressionBase, APartWhoseFirstPoseExplainsLittleHasNoMoreTried) {
+  RecognitionParameters persistent;
+  persistent.abandoned_part_support = 0;
+  const Recognizer every_pose(*base_, CosmosParameters{}, persistent);
+  const double abandoned = RecognitionParameters{}.abandoned_part_support;
+  int abandoned_parts = 0;
+  for (std::uint64_t seed : {51, 52, 53}) {
+    const RangeImage image = scan("bunny", seed);
+    const RecognitionResult result = recognizer_->recognize(image);
+    const RecognitionResult reference = every_pose.recognize(image);
+    EXPECT_EQ(result.status, RecognitionStatus::kRejected) << seed;
+    EXPECT_EQ(reference.status, RecognitionStatus::kRejected) << seed;
+    // Per part, the search's poses in the order it registered them.
+    for (const ModelPart& part : base_->parts) {
+      const int index = static_cast<int>(&part - base_->parts.data());
+      std::vector<const RecognitionCandidate*> poses, reference_poses;
+      for (const RecognitionCandidate& c : result.candidates)
+        if (c.from_pose_search && c.part == index) poses.push_back(&c);
+      for (const RecognitionCandidate& c : reference.candidates)
+        if (c.from_pose_search && c.part == index) reference_poses.push_back(&c);
+      if (poses.empty()) continue;
+      // A part is never searched further than without the rule, and one stopped after its
+      // first pose had that pose registered, explaining less than the rule's support.
+      EXPECT_LE(poses.size(), reference_poses.size()) << part.name << " seed " << seed;
+      if (poses.size() == 1 && reference_poses.size() > 1) {
+        EXPECT_TRUE(poses.front()->registered) << part.name;
+        EXPECT_LT(poses.front()->inlier_fraction, abandoned) << part.name;
+        ++abandoned_parts;
+      }
+    }
+  }
+  EXPECT_GE(abandoned_parts, 2);
+}
+
 TEST_F(RecognizerOnRegressionBase, AScanWithoutDataIsRejectedWithItsReason) {
   const RecognitionResult empty = recognizer_->recognize(RangeImage{});
   EXPECT_EQ(empty.status, RecognitionStatus::kRejected);
