@@ -96,10 +96,10 @@ struct RecognitionParameters {
   // unregistered.
   double sufficient_seen_fraction = 0.75;
   // Verification hands over to the searches below after this many selected views that do
-  // not explain the scene, and verifies the others only when no search explains it either: a
-  // scene its first views do not explain is rarely explained by the later ones, and the
-  // search, which ranks every part by its field fit, finds its part sooner than verifying
-  // each failing view does.
+  // not explain the scene, and verifies the others only when no search explains it either:
+  // the search over every part, whose quick field fits put the scene's part first in nearly
+  // every scan, finds it at less cost than the later views, of which every failing one costs
+  // a registration and a part support.
   int views_before_search = 2;
   PartSupportParameters support;  // what counts as explained scene surface
   // When no selected view reaches sufficient_support: the poses the catalog-wide vote index
