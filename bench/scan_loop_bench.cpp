@@ -381,7 +381,7 @@ void PacedReplayLatency(benchmark::State& state) {
   CellRunSummary summary;
   std::vector<double> latencies_ms, recognize_ms;
   int searched = 0;
-  std::int64_t ahead = 0, at_completion = 0;
+  std::int64_t ahead = 0, at_completion = 0, held_for_successor = 0;
   for (auto _ : state) {
     ReplaySource source(log_path);
     if (source.start() != SourceStatus::kOk) {
@@ -403,6 +403,7 @@ void PacedReplayLatency(benchmark::State& state) {
     for (const PartPose& pose : publisher.poses) latencies_ms.push_back(pose.latency_ms);
     ahead += summary.blobs_recognized_ahead;
     at_completion += summary.blobs_recognized_at_completion;
+    held_for_successor += summary.blobs_held_for_successor;
   }
   fs::remove(log_path);
   state.counters["recognize_p50_ms"] = median(recognize_ms);
@@ -411,6 +412,7 @@ void PacedReplayLatency(benchmark::State& state) {
   state.counters["latency_p99_ms"] = quantile(latencies_ms, 0.99);
   state.counters["blobs_ahead"] = static_cast<double>(ahead);
   state.counters["blobs_at_completion"] = static_cast<double>(at_completion);
+  state.counters["held_for_successor"] = static_cast<double>(held_for_successor);
   state.counters["latency_max_ms"] =
       latencies_ms.empty() ? 0 : *std::max_element(latencies_ms.begin(), latencies_ms.end());
   state.counters["poses"] = static_cast<double>(latencies_ms.size());

@@ -49,6 +49,7 @@ struct SharedStatus {
   std::atomic<std::int64_t> time_p50_ns{0}, time_p99_ns{0}, time_max_ns{0};
   std::atomic<std::int64_t> parts_recognized{0}, parts_rejected{0}, blobs_merged{0};
   std::atomic<std::int64_t> blobs_recognized_ahead{0}, blobs_recognized_at_completion{0};
+  std::atomic<std::int64_t> blobs_held_for_successor{0};
   std::atomic<bool> fault{false};
   // The source's one line, written before `fault` is set (release) and read after it.
   std::array<char, 256> fault_reason{};
@@ -259,6 +260,8 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
     status.recognizer_wake.wait(seen, joiner.holding() ? kHoldingIdleNs : kRecognizerIdleNs);
   }
   for (JoinedRecognition& joined : joiner.finish()) publish(std::move(joined));
+  status.blobs_held_for_successor.store(joiner.blobs_held_for_successor(),
+                                        std::memory_order_relaxed);
   status.recognizer_done.store(true, std::memory_order_release);
   status.publisher_wake.notify();
 }
@@ -478,6 +481,7 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
   summary.parts_dropped = loop.counters().parts_dropped;
   summary.blobs_recognized_ahead = shared.blobs_recognized_ahead;
   summary.blobs_recognized_at_completion = shared.blobs_recognized_at_completion;
+  summary.blobs_held_for_successor = shared.blobs_held_for_successor;
   summary.profile_time_p50_us = processing.p50_ns() / 1e3;
   summary.profile_time_p99_us = processing.p99_ns() / 1e3;
   summary.profile_time_p999_us = processing.p999_ns() / 1e3;

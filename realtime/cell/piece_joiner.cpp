@@ -194,6 +194,7 @@ std::vector<JoinedRecognition> PieceJoiner::add(BlobRecognition blob, const Part
     // A part recognized in an earlier piece explains this one: a duplicate.
     if (explained_by_recent(current)) return out;
     if (builder.has_soft_successor) {
+      ++blobs_held_for_successor_;
       const std::vector<std::uint8_t> held_back = hold_remnants(blob, builder);
       for (std::size_t k = 0; k < blob.parts.size(); ++k)
         if (!held_back[k])

@@ -43,6 +43,9 @@ class PieceJoiner {
   // the blobs near it, not for a count of blobs: on a sparse belt a count took seconds.
   std::vector<JoinedRecognition> release_settled(std::int64_t unfinished_from_profile);
   bool holding() const { return !held_.empty(); }
+  // Recognized blobs held for their soft successor (the part behind, which may turn out to be
+  // the same part): their poses wait for it to complete, however fast they were recognized.
+  std::int64_t blobs_held_for_successor() const { return blobs_held_for_successor_; }
   // End of stream: everything still held.
   std::vector<JoinedRecognition> finish();
 
@@ -91,6 +94,7 @@ class PieceJoiner {
   // deque's erase would leave the piece being released dangling.
   std::list<Piece> held_;
   std::deque<Recognized> recent_;  // the parts recognized in the last few blobs
+  std::int64_t blobs_held_for_successor_ = 0;
 };
 
 }  // namespace cosmos

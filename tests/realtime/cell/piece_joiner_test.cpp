@@ -137,6 +137,39 @@ TEST_F(PieceJoinerTest, SettledShadowPiecesNearEachOtherAreReportedOnce) {
   EXPECT_EQ(rest[0].recognition.pose.part_seq, 3);
 }
 
+// A blob in which a part was recognized, softly linked to the part behind it, waits for that
+// part (it may be the same part, cut in two by its shadow) and is counted; a shadow piece with
+// nothing recognized in it waits too but is not.
+TEST_F(PieceJoinerTest, ARecognizedBlobWaitsForItsSoftSuccessorAndIsCounted) {
+  PieceJoiner joiner(context_);
+  EXPECT_TRUE(add_shadow_piece(joiner, 100, 1).empty());
+  EXPECT_EQ(joiner.blobs_held_for_successor(), 0);
+  PartBuilder builder(CosmosParameters{}, kImageSide, kImageSide, kGridMm, pool_);
+  builder.first_profile = 2000;
+  builder.rows_added = kImageSide;
+  builder.has_soft_successor = true;
+  BlobRecognition blob;
+  PartRecognition part;
+  part.pose.status = PoseStatus::kOk;
+  part.pose.part_seq = 2;
+  part.result.part = 0;
+  part.first_profile = 2000;
+  part.last_profile = 2000 + kImageSide - 1;
+  blob.parts.push_back(std::move(part));
+  for (int row = 0; row < kImageSide; ++row)
+    for (int column = 0; column < kImageSide; ++column)
+      blob.points_loop_mm.emplace_back(column * kGridMm, (2000 + row) * kGridMm, 3.0);
+  EXPECT_TRUE(joiner.add(std::move(blob), builder).empty());
+  EXPECT_EQ(joiner.blobs_held_for_successor(), 1);
+  // It goes out once no blob still to come can join it: with its part's pose.
+  const std::vector<JoinedRecognition> released = joiner.release_settled(2000 + 1000);
+  ASSERT_EQ(released.size(), 2U);
+  EXPECT_EQ(released[0].recognition.pose.part_seq, 1);
+  EXPECT_EQ(released[1].recognition.pose.part_seq, 2);
+  EXPECT_EQ(released[1].recognition.pose.status, PoseStatus::kOk);
+  EXPECT_TRUE(joiner.finish().empty());
+}
+
 TEST_F(PieceJoinerTest, PiecesWaitingTheirBlobsAreHeldTillTheEnd) {
   PieceJoiner joiner(context_);
   EXPECT_TRUE(add_shadow_piece(joiner, 100, 1).empty());
