@@ -342,6 +342,11 @@ class Recognizer {
   // view seen (min_seen_fraction for a part with other sizes): no other part is likely to
   // explain the scene better, so the search may end.
   bool explains_scene(const RecognitionCandidate& candidate) const;
+  // The decision over the registered candidates (recognizer_decision.cpp): sets the result's
+  // part, pose and figures, and its status when accepted; returns why the scene is rejected,
+  // empty when it is not. May search the rival's part and the winner's other sizes first.
+  std::string decide(const ViewAnalysis& analysis, const ScenePoints& points,
+                     ModelSurfaces& surfaces, RecognitionResult& result) const;
 
   RecognitionCandidate verify(const ViewAnalysis& scene, const ScenePoints& scene_points,
                               const SpectralCandidate& selected, ModelSurfaces& surfaces,

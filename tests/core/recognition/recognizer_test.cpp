@@ -434,8 +434,8 @@ TEST_F(RecognizerOnRegressionBase, APartWhoseFirstPoseExplainsLittleHasNoMoreTri
     EXPECT_EQ(result.status, RecognitionStatus::kRejected) << seed;
     EXPECT_EQ(reference.status, RecognitionStatus::kRejected) << seed;
     // Per part, the search's poses in the order it registered them.
-    for (const ModelPart& part : base_->parts) {
-      const int index = static_cast<int>(&part - base_->parts.data());
+    for (int index = 0; index < static_cast<int>(base_->parts.size()); ++index) {
+      const std::string& name = base_->parts[static_cast<std::size_t>(index)].name;
       std::vector<const RecognitionCandidate*> poses, reference_poses;
       for (const RecognitionCandidate& c : result.candidates)
         if (c.from_pose_search && c.part == index) poses.push_back(&c);
@@ -444,10 +444,10 @@ TEST_F(RecognizerOnRegressionBase, APartWhoseFirstPoseExplainsLittleHasNoMoreTri
       if (poses.empty()) continue;
       // A part is never searched further than without the rule, and one stopped after its
       // first pose had that pose registered, explaining less than the rule's support.
-      EXPECT_LE(poses.size(), reference_poses.size()) << part.name << " seed " << seed;
+      EXPECT_LE(poses.size(), reference_poses.size()) << name << " seed " << seed;
       if (poses.size() == 1 && reference_poses.size() > 1) {
-        EXPECT_TRUE(poses.front()->registered) << part.name;
-        EXPECT_LT(poses.front()->inlier_fraction, abandoned) << part.name;
+        EXPECT_TRUE(poses.front()->registered) << name;
+        EXPECT_LT(poses.front()->inlier_fraction, abandoned) << name;
         ++abandoned_parts;
       }
     }

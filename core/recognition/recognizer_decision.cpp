@@ -1,0 +1,198 @@
+// The recognizer's decision (recognizer.hpp): among the registered candidates, the winner and
+// its rival, the rival's and the winner's other sizes searched before they are compared, and
+// the rejections — not at rest, surface not seen, too little explained, ambiguous between two
+// parts — each with its reason; then the winner's pose along the motion left free.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "core/recognition/part_ambiguity.hpp"
+#include "core/recognition/ranked_candidates.hpp"
+#include "core/recognition/recognizer.hpp"
+
+namespace cosmos {
+
+std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& points,
+                               ModelSurfaces& surfaces, RecognitionResult& result) const {
+  const RecognitionCandidate* best = best_candidate(result.candidates);
+  if (!best) return "no candidate view could be registered";
+
+  // The winner is chosen among the candidates whose surface is seen by score and by the
+  // two-way fit (the share of the scene it explains times the share of its surface the scene
+  // shows), among the sizes of one shape by the fit alone (size_variants.hpp); the rival is
+  // the best such candidate of another part (part_ambiguity.hpp).
+  const RecognitionCandidate* rival = nullptr;
+  const RecognitionCandidate* winner = nullptr;
+  bool best_at_rest = true;
+  const auto is_size_variant = [&](int part, int other) {
+    const std::vector<int>& family = size_variants_[static_cast<std::size_t>(part)];
+    return std::binary_search(family.begin(), family.end(), other);
+  };
+  const auto two_way_fit = [&](const RecognitionCandidate& candidate) {
+    return candidate.inlier_fraction * candidate.seen_fraction;
+  };
+  // A candidate is only as good as its placed surface is seen in the scene (surface_seen.hpp):
+  // one that puts surface where the scanner saw none explains the scene's points by chance.
+  const auto qualifies = [&](const RecognitionCandidate& candidate) {
+    return at_rest(candidate) && candidate.seen_fraction >= parameters_.min_seen_fraction;
+  };
+  const auto choose = [&] {
+    winner = rival = nullptr;
+    best = best_candidate(result.candidates);
+    result.seen_fraction = best->seen_fraction;
+    best_at_rest = at_rest(*best);
+    const std::vector<const RecognitionCandidate*> ranked = ranked_candidates(result.candidates);
+    // Of the qualifying candidates within examined_score_margin of the best, one that fits
+    // better both ways (the scene's points on its surface, its surface where the scene is) by
+    // two_way_fit_margin wins instead. A part that contains the scene (a plate under a
+    // bracket's face) explains its points as well as the scene's own part, and puts surface
+    // where the scanner saw the belt.
+    const RecognitionCandidate* top = nullptr;
+    for (const RecognitionCandidate* candidate : ranked) {
+      if (!qualifies(*candidate)) continue;
+      if (!top) top = winner = candidate;
+      if (top->score - candidate->score < parameters_.ambiguity.examined_score_margin &&
+          two_way_fit(*candidate) > two_way_fit(*winner) + parameters_.ambiguity.two_way_fit_margin)
+        winner = candidate;
+    }
+    if (winner && parameters_.size_variants.search &&
+        !size_variants_[static_cast<std::size_t>(winner->part)].empty()) {
+      const int family_part = winner->part;
+      double best_fit = two_way_fit(*winner);
+      for (const RecognitionCandidate* candidate : ranked)
+        if (is_size_variant(family_part, candidate->part) && qualifies(*candidate) &&
+            two_way_fit(*candidate) > best_fit) {
+          best_fit = two_way_fit(*candidate);
+          winner = candidate;
+        }
+    }
+    if (!winner) return;
+    result.seen_fraction = winner->seen_fraction;
+    // The best other size of the winner's shape, when one qualifies, is its rival: the two
+    // are told apart by their two-way fits, which a third part scoring higher cannot settle.
+    for (bool sizes_only : {true, false}) {
+      for (const RecognitionCandidate* candidate : ranked)
+        if (candidate->part != winner->part && qualifies(*candidate) &&
+            (!sizes_only || is_size_variant(winner->part, candidate->part))) {
+          rival = candidate;
+          break;
+        }
+      if (rival) break;
+    }
+    if (rival) result.runner_up_seen_fraction = rival->seen_fraction;
+  };
+  choose();
+  // A rival only verified on one selected view may have registered far from its best pose;
+  // the pose search over its part's views gives it its fair chance before it is compared. So
+  // do the other sizes of the winner's shape, which selection cannot tell from it.
+  const auto pose_searched = [&](int part) {
+    return std::any_of(
+        result.candidates.begin(), result.candidates.end(),
+        [part](const RecognitionCandidate& c) { return c.part == part && c.from_pose_search; });
+  };
+  std::vector<int> unsearched;
+  if (rival && parameters_.ambiguity.search_rival_part && !pose_searched(rival->part))
+    unsearched.push_back(rival->part);
+  if (winner && parameters_.size_variants.search)
+    for (int variant : size_variants_[static_cast<std::size_t>(winner->part)])
+      if (!pose_searched(variant) &&
+          std::find(unsearched.begin(), unsearched.end(), variant) == unsearched.end())
+        unsearched.push_back(variant);
+  if (!unsearched.empty()) {
+    // One part at a time: a search stops at the first part that explains the scene.
+    for (int part : unsearched) search_candidate_parts(analysis, points, surfaces, result, {part});
+    choose();
+  }
+  const bool none_seen = winner == nullptr;
+  if (winner) best = winner;
+
+  result.part = best->part;
+  result.view = best->view;
+  result.best_candidate_part = best->part;
+  result.score = best->score;
+  result.spectral_distance = best->spectral_distance;
+  result.registration_rms_mm = best->rms_mm;
+  result.inlier_fraction = best->inlier_fraction;
+  if (rival) {
+    result.runner_up_part = rival->part;
+    result.runner_up_score = rival->score;
+  }
+  const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(best->view)];
+  result.T_scanner_part = (best->T_model_scene.inverse() * view.T_scanner_part).normalized();
+  if (none_seen && !best_at_rest) {
+    result.part = -1;
+    const RestingCheck rest = check_resting(*best);
+    char numbers[128];
+    if (rest.touches_belt)
+      std::snprintf(numbers, sizeof numbers,
+                    "does not rest on the belt: %.0f deg from its part's nearest resting pose",
+                    rest.tilt_deg);
+    else
+      std::snprintf(numbers, sizeof numbers,
+                    "does not touch the belt: its lowest point %.1f mm above it",
+                    rest.lowest_point_mm);
+    return std::string("best candidate ") + numbers;
+  }
+  if (none_seen) {
+    result.part = -1;
+    return "best candidate's surface is not where the scene is: " +
+           std::to_string(static_cast<int>(std::lround(100 * result.seen_fraction))) +
+           " % of it seen";
+  }
+  if (best->from_pose_search && best->seen_fraction < parameters_.min_accepted_seen_fraction) {
+    result.part = -1;
+    return "only " + std::to_string(static_cast<int>(std::lround(100 * best->seen_fraction))) +
+           " % of the best candidate's surface is where the scene is";
+  }
+  if (best->inlier_fraction < parameters_.min_inlier_fraction) {
+    result.part = -1;
+    return "best candidate explains only " +
+           std::to_string(static_cast<int>(100 * best->inlier_fraction)) + " % of the surface";
+  }
+  if (best->rms_mm > parameters_.max_rms_mm) {
+    result.part = -1;
+    return "best candidate's registration residual is too large";
+  }
+  // Sizes of one shape are told apart by the two-way fit, which the ambiguity test (the scene's
+  // points alone) cannot see: a larger size explains a smaller one's scene as well.
+  const bool sizes_told_apart =
+      rival && is_size_variant(best->part, rival->part) && parameters_.size_variants.search &&
+      two_way_fit(*best) - two_way_fit(*rival) >= parameters_.size_variants.fit_margin;
+  if (rival && is_size_variant(best->part, rival->part)) {
+    result.size_fit = two_way_fit(*best);
+    result.runner_up_size_fit = two_way_fit(*rival);
+  }
+  if (rival && !sizes_told_apart &&
+      best->score - rival->score < parameters_.ambiguity.examined_score_margin) {
+    result.ambiguity_examined = true;
+    result.ambiguity = judge_part_ambiguity(
+        points.all, model_base_, {best->view, best->T_model_scene, best->seen_fraction},
+        {rival->view, rival->T_model_scene, rival->seen_fraction}, parameters_.registration,
+        parameters_.support, parameters_.ambiguity, surfaces);
+    if (result.ambiguity.ambiguous) {
+      result.part = -1;
+      const auto percent = [](double fraction) {
+        return std::to_string(static_cast<int>(std::lround(100 * fraction)));
+      };
+      return "ambiguous between " + model_base_.parts[static_cast<std::size_t>(best->part)].name +
+             " and " + model_base_.parts[static_cast<std::size_t>(rival->part)].name + ": " +
+             percent(result.ambiguity.discriminating_fraction) +
+             " % of scene and surfaces tell them apart, " +
+             percent(result.ambiguity.discriminating_share) + " % of it for the first";
+    }
+  }
+  RecognitionCandidate refined = *best;
+  if (refine_free_motion(points, surfaces, refined)) {
+    result.free_motion_refined = true;
+    result.T_scanner_part = (refined.T_model_scene.inverse() * view.T_scanner_part).normalized();
+    result.score = refined.score;
+    result.registration_rms_mm = refined.rms_mm;
+    result.inlier_fraction = refined.inlier_fraction;
+  }
+  result.status = RecognitionStatus::kOk;
+  return "";
+}
+
+}  // namespace cosmos
