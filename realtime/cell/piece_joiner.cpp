@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <utility>
 
 #include "realtime/cell/piece_explained.hpp"
@@ -17,6 +18,15 @@ constexpr std::size_t kRecentParts = 8;
 // Profiles between a piece and the part it may belong to at most: the longest shadow the
 // tracker links across (its link_gap_rows), at the default 0.4 mm belt step.
 constexpr std::int64_t kReachProfiles = 100;
+// How far a recognized part may reach past its blob's last row and still be taken to end in
+// it: a verified pose's error and the hull's rounding, well under the shortest shadow a soft
+// link spans (more than hard_link_gap_rows of the belt grid).
+constexpr double kPastLastRowMm = 1.0;
+// A recognition whose residual is within this fraction of the recognizer's max_rms_mm is
+// clear of its rejection limit. A piece of the part behind, cut off by its shadow and
+// recognized as a smaller part that ends in it, is fitted where no such part is: its residual
+// comes near the limit, and only the part behind tells whether it is a duplicate.
+constexpr double kClearRmsFraction = 0.5;
 
 }  // namespace
 
@@ -118,6 +128,20 @@ bool PieceJoiner::recognize_together(const Piece& piece, const PartBuilder& buil
   return true;
 }
 
+bool PieceJoiner::reaches_past(const Recognized& part, std::int64_t last_profile) const {
+  const std::vector<Eigen::Vector3d>& hull = context_.model_base->parts[part.part].hull_vertices_mm;
+  if (hull.empty()) return true;  // a base without hulls: nothing tells where the part ends
+  const RigidTransform& T_loop_part = part.T_loop_part;
+  double far_y_mm = -std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector3d& corner : hull)
+    far_y_mm = std::max(far_y_mm, T_loop_part.apply(corner).y());
+  return far_y_mm > static_cast<double>(last_profile) * context_.grid_mm + kPastLastRowMm;
+}
+
+bool PieceJoiner::clearly_recognized(const Recognized& part) const {
+  return part.rms_mm <= kClearRmsFraction * context_.recognizer->parameters().max_rms_mm;
+}
+
 bool PieceJoiner::explained_by_recent(const Piece& piece) const {
   std::vector<Recognized> near_parts;
   for (const Recognized& part : recent_)
@@ -156,8 +180,8 @@ std::vector<JoinedRecognition> PieceJoiner::add(BlobRecognition blob, const Part
   std::vector<Recognized> parts;
   for (const PartRecognition& part : blob.parts)
     if (part.pose.status == PoseStatus::kOk)
-      parts.push_back(
-          {part.result.part, part.result.T_scanner_part, part.first_profile, part.last_profile});
+      parts.push_back({part.result.part, part.result.T_scanner_part, part.first_profile,
+                       part.last_profile, part.result.registration_rms_mm});
   const bool any_recognized = !parts.empty();
   const bool soft_linked = builder.has_soft_successor || builder.soft_link_of >= 0;
   Piece current;
@@ -193,7 +217,11 @@ std::vector<JoinedRecognition> PieceJoiner::add(BlobRecognition blob, const Part
   if (soft_linked && any_recognized && !builder.truncated) {
     // A part recognized in an earlier piece explains this one: a duplicate.
     if (explained_by_recent(current)) return out;
-    if (builder.has_soft_successor) {
+    const bool may_continue_behind =
+        std::any_of(parts.begin(), parts.end(), [&](const Recognized& part) {
+          return reaches_past(part, current.last_profile) || !clearly_recognized(part);
+        });
+    if (builder.has_soft_successor && may_continue_behind) {
       ++blobs_held_for_successor_;
       const std::vector<std::uint8_t> held_back = hold_remnants(blob, builder);
       for (std::size_t k = 0; k < blob.parts.size(); ++k)

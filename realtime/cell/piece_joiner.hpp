@@ -14,7 +14,10 @@
 // part between two blobs) is that part's; only what no part explains is reported. A piece
 // recognized on its own while the part it belongs to is recognized too (two poses for one part) is
 // a duplicate: of two softly linked blobs whose parts explain each other, the smaller one's poses
-// are dropped.
+// are dropped. A recognized blob waits for its soft successor only while one of its parts, as
+// placed, reaches past the blob's last row into the shadow, or nearly failed recognition: a
+// part clearly recognized that ends in its own blob is not continued behind it, and its pose
+// goes out at once.
 #include <cstdint>
 #include <deque>
 #include <list>
@@ -54,6 +57,7 @@ class PieceJoiner {
     int part = -1;
     RigidTransform T_loop_part;
     std::int64_t first_profile = 0, last_profile = 0;
+    double rms_mm = 0;  // its registration residual
   };
   struct Piece {
     std::vector<JoinedRecognition> rejections;  // or its poses, when recognized
@@ -72,6 +76,12 @@ class PieceJoiner {
   bool explained_by(const std::vector<Eigen::Vector3d>& points,
                     const std::vector<Recognized>& parts) const;
   bool explained_by_recent(const Piece& piece) const;
+  // Whether the part, as placed, reaches past the blob's last profile: only then can the blob
+  // behind, across a shadow, hold more of it.
+  bool reaches_past(const Recognized& part, std::int64_t last_profile) const;
+  // Whether its residual is well clear of the recognizer's rejection limit: a part that nearly
+  // failed may be a piece of the part behind, fitted where it is not.
+  bool clearly_recognized(const Recognized& part) const;
   bool near(const Piece& piece, const Recognized& part) const;
   bool near(const Piece& a, const Piece& b) const;
   // The held pieces near `piece` and `piece` as one image, recognized; on success the pieces

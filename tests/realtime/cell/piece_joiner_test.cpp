@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 
@@ -67,6 +68,11 @@ class PieceJoinerTest : public ::testing::Test {
       }
     return joiner.add(std::move(blob), builder);
   }
+
+  std::vector<JoinedRecognition> add_recognized_blob(PieceJoiner& joiner,
+                                                     std::int64_t first_profile,
+                                                     std::int64_t part_seq, double past_last_row_mm,
+                                                     double rms_mm = 0);
 
   // A blob with nothing in it: the held pieces wait one blob more.
   std::vector<JoinedRecognition> add_empty_blob(PieceJoiner& joiner) {
@@ -137,29 +143,49 @@ TEST_F(PieceJoinerTest, SettledShadowPiecesNearEachOtherAreReportedOnce) {
   EXPECT_EQ(rest[0].recognition.pose.part_seq, 3);
 }
 
-// A blob in which a part was recognized, softly linked to the part behind it, waits for that
-// part (it may be the same part, cut in two by its shadow) and is counted; a shadow piece with
-// nothing recognized in it waits too but is not.
-TEST_F(PieceJoinerTest, ARecognizedBlobWaitsForItsSoftSuccessorAndIsCounted) {
-  PieceJoiner joiner(context_);
-  EXPECT_TRUE(add_shadow_piece(joiner, 100, 1).empty());
-  EXPECT_EQ(joiner.blobs_held_for_successor(), 0);
+// A blob of kImageSide profiles from `first_profile` in which part 0 was recognized, softly
+// linked to the part behind it, placed so that its hull's far end (along the belt) lies
+// `past_last_row_mm` beyond the blob's last row, registered with residual `rms_mm`.
+std::vector<JoinedRecognition> PieceJoinerTest::add_recognized_blob(PieceJoiner& joiner,
+                                                                    std::int64_t first_profile,
+                                                                    std::int64_t part_seq,
+                                                                    double past_last_row_mm,
+                                                                    double rms_mm) {
   PartBuilder builder(CosmosParameters{}, kImageSide, kImageSide, kGridMm, pool_);
-  builder.first_profile = 2000;
+  builder.first_profile = first_profile;
   builder.rows_added = kImageSide;
   builder.has_soft_successor = true;
+  const std::int64_t last_profile = first_profile + kImageSide - 1;
+  double far_y_mm = -1e9;
+  for (const Eigen::Vector3d& corner : base_->parts[0].hull_vertices_mm)
+    far_y_mm = std::max(far_y_mm, corner.y());
   BlobRecognition blob;
   PartRecognition part;
   part.pose.status = PoseStatus::kOk;
-  part.pose.part_seq = 2;
+  part.pose.part_seq = part_seq;
   part.result.part = 0;
-  part.first_profile = 2000;
-  part.last_profile = 2000 + kImageSide - 1;
+  part.result.T_scanner_part.translation_mm.y() =
+      static_cast<double>(last_profile) * kGridMm + past_last_row_mm - far_y_mm;
+  part.result.registration_rms_mm = rms_mm;
+  part.first_profile = first_profile;
+  part.last_profile = last_profile;
   blob.parts.push_back(std::move(part));
   for (int row = 0; row < kImageSide; ++row)
     for (int column = 0; column < kImageSide; ++column)
-      blob.points_loop_mm.emplace_back(column * kGridMm, (2000 + row) * kGridMm, 3.0);
-  EXPECT_TRUE(joiner.add(std::move(blob), builder).empty());
+      blob.points_loop_mm.emplace_back(column * kGridMm, (first_profile + row) * kGridMm, 3.0);
+  return joiner.add(std::move(blob), builder);
+}
+
+// A blob in which a part was recognized, softly linked to the part behind it, waits for that
+// part when its part reaches past the blob's last row (the part behind may be more of it, cut
+// off by its shadow) and is counted; a shadow piece with nothing recognized in it waits too
+// but is not.
+TEST_F(PieceJoinerTest, ARecognizedBlobWaitsForItsSoftSuccessorAndIsCounted) {
+  ASSERT_FALSE(base_->parts[0].hull_vertices_mm.empty());
+  PieceJoiner joiner(context_);
+  EXPECT_TRUE(add_shadow_piece(joiner, 100, 1).empty());
+  EXPECT_EQ(joiner.blobs_held_for_successor(), 0);
+  EXPECT_TRUE(add_recognized_blob(joiner, 2000, 2, 5.0).empty());
   EXPECT_EQ(joiner.blobs_held_for_successor(), 1);
   // It goes out once no blob still to come can join it: with its part's pose.
   const std::vector<JoinedRecognition> released = joiner.release_settled(2000 + 1000);
@@ -168,6 +194,28 @@ TEST_F(PieceJoinerTest, ARecognizedBlobWaitsForItsSoftSuccessorAndIsCounted) {
   EXPECT_EQ(released[1].recognition.pose.part_seq, 2);
   EXPECT_EQ(released[1].recognition.pose.status, PoseStatus::kOk);
   EXPECT_TRUE(joiner.finish().empty());
+}
+
+// A part clearly recognized that ends in its own blob (its far end within a pose's error of
+// the last row) is not continued behind the shadow: its pose goes out at once, uncounted; a
+// millimetre and a half further and it waits, as does one that ends in its blob but nearly
+// failed recognition (a residual near max_rms_mm: maybe a piece of the part behind).
+TEST_F(PieceJoinerTest, ARecognizedPartEndingInItsBlobDoesNotWaitForTheSuccessor) {
+  PieceJoiner joiner(context_);
+  const std::vector<JoinedRecognition> out = add_recognized_blob(joiner, 2000, 1, 0.5);
+  ASSERT_EQ(out.size(), 1U);
+  EXPECT_EQ(out[0].recognition.pose.part_seq, 1);
+  EXPECT_EQ(out[0].recognition.pose.status, PoseStatus::kOk);
+  EXPECT_EQ(joiner.blobs_held_for_successor(), 0);
+  EXPECT_FALSE(joiner.holding());
+  EXPECT_TRUE(add_recognized_blob(joiner, 4000, 2, 1.5).empty());
+  EXPECT_EQ(joiner.blobs_held_for_successor(), 1);
+  EXPECT_TRUE(joiner.holding());
+  const double max_rms_mm = recognizer_->parameters().max_rms_mm;
+  EXPECT_EQ(add_recognized_blob(joiner, 8000, 3, 0.5, 0.4 * max_rms_mm).size(), 1U);
+  EXPECT_EQ(joiner.blobs_held_for_successor(), 1);
+  EXPECT_TRUE(add_recognized_blob(joiner, 12000, 4, 0.5, 0.9 * max_rms_mm).empty());
+  EXPECT_EQ(joiner.blobs_held_for_successor(), 2);
 }
 
 TEST_F(PieceJoinerTest, PiecesWaitingTheirBlobsAreHeldTillTheEnd) {
