@@ -130,6 +130,10 @@ std::vector<ViewPoseHypothesis> distinct_hypotheses(const ModelBase& base,
   return distinct;
 }
 
+// Points in PartSearchModel::surface_sample_mm, about: enough that a few pixels of a
+// silhouette do not decide a fraction, few enough to check every quick pose of every part.
+constexpr std::size_t kSurfaceSamplePoints = 256;
+
 }  // namespace
 
 PartSearchModel build_part_search_model(const ModelBase& base, int part,
@@ -154,6 +158,10 @@ PartSearchModel build_part_search_model(const ModelBase& base, int part,
     model.view_centroid_mm.push_back(position.rowwise().mean());
   }
   model.field = PartDistanceField(points_part_mm, parameters);
+  const std::size_t step = std::max<std::size_t>(1, points_part_mm.size() / kSurfaceSamplePoints);
+  model.surface_sample_mm.resize(3, static_cast<Eigen::Index>(points_part_mm.size() / step));
+  for (Eigen::Index i = 0; i < model.surface_sample_mm.cols(); ++i)
+    model.surface_sample_mm.col(i) = points_part_mm[static_cast<std::size_t>(i) * step];
   return model;
 }
 

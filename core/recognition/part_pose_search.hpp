@@ -91,6 +91,9 @@ struct PartSearchModel {
   // The coarse views the pose search starts from (every view when the base has no coarse
   // ones): positions in `views`.
   std::vector<std::size_t> start_views;
+  // An even sample of the views' control points in the part's frame (the whole part, every
+  // side): what a pose hypothesis must not place over measured belt (free_space.hpp).
+  Eigen::Matrix3Xd surface_sample_mm;
 };
 
 PartSearchModel build_part_search_model(const ModelBase& base, int part,

@@ -164,6 +164,11 @@ struct RecognitionParameters {
   // of it. Selected views and resting poses are not cut short so, and a hollow part lying
   // open side up shows little more than half of its view.
   double min_accepted_seen_fraction = 0.65;
+  // The field stages' poses of the search over every part that place more than this
+  // fraction of the part over belt the scanner measured are dropped before the parts are
+  // ranked or registered (free_space.hpp): the field fit cannot tell a part fitted to a few
+  // faces from the scene's own part. 1: none dropped.
+  double max_fraction_over_belt = 0.3;
   // Rejection as ambiguous between two parts (§5.3.6, §5.4).
   PartAmbiguityParameters ambiguity;
   // One shape at several sizes (size_variants.hpp).
@@ -230,6 +235,8 @@ struct RecognitionParameters {
     v("min_accepted_seen_fraction", min_accepted_seen_fraction,
       "a winner the search over every part proposed, with less of its view seen: rejected",
       Range{0, 1});
+    v("max_fraction_over_belt", max_fraction_over_belt,
+      "a searched pose placing more of its part over measured belt is dropped", Range{0, 1});
     v("ambiguity", ambiguity, "rejection as ambiguous between two parts (§5.3.6, §5.4)");
     v("size_variants", size_variants, "one shape at several sizes: told apart by the fit");
     v("surfaces", surfaces, "the model surfaces a recognition keeps unpacked");
@@ -370,6 +377,10 @@ class Recognizer {
   // The same for the field stages' poses, before any is registered: those whose lowest point
   // is farther than resting.field_height_error_mm from the belt are dropped.
   void drop_floating_poses(int part, std::vector<FieldHypothesis>& field_poses) const;
+  // And those that place more than max_fraction_over_belt of the part over the belt the
+  // scene's image measured (free_space.hpp).
+  void drop_poses_over_belt(int part, const RangeImage& scene,
+                            std::vector<FieldHypothesis>& field_poses) const;
   RestingCheck check_resting(const RecognitionCandidate& candidate) const;
   // Registers from each start on its view, keeps the pose its view supports best (the
   // candidate's view becomes that one), then judges it against the part's views around it

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/indexing/pose_voting.hpp"
+#include "core/recognition/free_space.hpp"
 #include "core/recognition/part_pose_search.hpp"
 #include "core/recognition/ranked_candidates.hpp"
 #include "core/recognition/recognizer.hpp"
@@ -77,6 +78,7 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
           quick_field_poses(scene_points.all, model_base_, part_search_model(part),
                             parameters_.search, parameters_.catalog_rank);
       drop_floating_poses(part, quick);
+      drop_poses_over_belt(part, scene_points.image, quick);
       ranked.emplace_back(quick.empty() ? std::numeric_limits<double>::infinity()
                                         : quick.front().truncated_mean_square_mm2,
                           part);
@@ -165,7 +167,10 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
                                       parameters_.search, parameters_.resting)
             : field_pose_hypotheses(scene_points.all, model_base_, part_search_model(part),
                                     parameters_.search);
-    if (!resting_poses) drop_floating_poses(part, field_poses);
+    if (!resting_poses) {
+      drop_floating_poses(part, field_poses);
+      drop_poses_over_belt(part, scene_points.image, field_poses);
+    }
     result.timings.registration_ms += elapsed_ms(stage);
     const double best_fit_mm2 = field_poses.empty() ? std::numeric_limits<double>::infinity()
                                                     : field_poses.front().truncated_mean_square_mm2;
@@ -209,6 +214,16 @@ void Recognizer::drop_floating_poses(int part, std::vector<FieldHypothesis>& fie
   std::erase_if(field_poses, [&](const FieldHypothesis& hypothesis) {
     return std::abs(cosmos::check_resting(model_part, hypothesis.T_part_scene, resting)
                         .lowest_point_mm) > resting.field_height_error_mm;
+  });
+}
+
+void Recognizer::drop_poses_over_belt(int part, const RangeImage& scene,
+                                      std::vector<FieldHypothesis>& field_poses) const {
+  if (parameters_.max_fraction_over_belt >= 1) return;
+  const Eigen::Matrix3Xd& sample = part_search_model(part).surface_sample_mm;
+  std::erase_if(field_poses, [&](const FieldHypothesis& hypothesis) {
+    return fraction_over_belt(scene, sample, hypothesis.T_part_scene) >
+           parameters_.max_fraction_over_belt;
   });
 }
 

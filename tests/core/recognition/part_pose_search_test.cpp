@@ -12,6 +12,7 @@
 
 #include "core/io/model_base_file.hpp"
 #include "core/modelbase/model_surface.hpp"
+#include "core/recognition/free_space.hpp"
 #include "core/recognition/pose_hypotheses.hpp"
 #include "core/recognition/recognizer.hpp"
 #include "core/representation/cosmos_pipeline.hpp"
@@ -217,6 +218,30 @@ TEST_F(PartPoseSearch, TheSearchModelHoldsEveryViewsCentroid) {
     ASSERT_LT(s, model.views.size());
     EXPECT_TRUE(
         is_once_subdivided_view(base_->views[static_cast<std::size_t>(model.views[s])].view_index));
+  }
+}
+
+// The surface sample the free-space constraint places (free_space.hpp) is the part's own, in
+// its frame: at the scan's true pose none of it lies over the belt the scanner measured;
+// moved the part's size across the belt, most of it does.
+TEST_F(PartPoseSearch, TheSurfaceSampleLiesOverNoBeltAtTheTruePose) {
+  const RecognitionParameters parameters;
+  const int parts = static_cast<int>(base_->parts.size());
+  const std::vector<PartSearchModel> models = search_models(parameters);
+  for (std::uint64_t seed = 101; seed < 106; ++seed) {
+    const int part = static_cast<int>(seed % parts);
+    const Scan scene = scan(part, seed);
+    ASSERT_TRUE(scene.image.belt_known());
+    const Eigen::Matrix3Xd& sample = models[static_cast<std::size_t>(part)].surface_sample_mm;
+    EXPECT_GE(sample.cols(), 200);
+    EXPECT_LE(sample.cols(), 512);
+    const GroundTruthPose& truth = *scene.image.ground_truth;
+    RigidTransform T_scene_part{truth.rotation, truth.translation_mm};
+    EXPECT_LE(fraction_over_belt(scene.image, sample, T_scene_part.inverse()), 0.02)
+        << "seed " << seed << ", " << truth.part;
+    T_scene_part.translation_mm.x() += base_->parts[static_cast<std::size_t>(part)].size_mm;
+    EXPECT_GE(fraction_over_belt(scene.image, sample, T_scene_part.inverse()), 0.5)
+        << "seed " << seed << ", " << truth.part;
   }
 }
 

@@ -52,6 +52,7 @@ class RecognizerOnRegressionBase : public ::testing::Test {
     scanner.seed = seed;
     return scan_single_part(mesh, name, random_rotation(seed), scanner, ConditioningParameters{});
   }
+  static RangeImage far_half_cut(const std::string& name, std::uint64_t seed);
 
   static double degrees(double radians) { return radians * 180 / std::numbers::pi; }
 
@@ -267,44 +268,56 @@ TEST_F(RecognizerOnRegressionBase, APartLiftedOffTheBeltIsRefusedWhenPartsLieOnI
   }
 }
 
-// A scene that shows only part of the winner's view, the rest of it where the scanner measured
-// the belt, is rejected rather than accepted: the cut scans' winners from the search over every
-// part that a lenient recognizer accepts with less than min_accepted_seen_fraction of their
-// view seen are refused.
+// A regression scan whose far half is replaced by measured belt: a scene that shows only
+// part of most views, the rest of them where the scanner saw the belt.
+RangeImage RecognizerOnRegressionBase::far_half_cut(const std::string& name, std::uint64_t seed) {
+  RangeImage image = scan(name, seed);
+  EXPECT_TRUE(image.belt_known()) << name;
+  int first_row = image.height(), last_row = -1;
+  for (int row = 0; row < image.height(); ++row)
+    for (int column = 0; column < image.width(); ++column)
+      if (!std::isnan(image.z_mm(column, row))) {
+        first_row = std::min(first_row, row);
+        last_row = std::max(last_row, row);
+      }
+  EXPECT_LT(first_row, last_row) << name;
+  for (int row = (first_row + last_row) / 2; row <= last_row; ++row)
+    for (int column = 0; column < image.width(); ++column) {
+      image.z_mm(column, row) = std::numeric_limits<float>::quiet_NaN();
+      image.belt_seen(column, row) = 1;
+    }
+  return image;
+}
+
+// Whether the result's winner came from the search over every part with less than
+// min_accepted_seen_fraction of its view seen.
+bool accepted_with_view_contradicted(const RecognitionResult& result) {
+  const auto winner = std::find_if(result.candidates.begin(), result.candidates.end(),
+                                   [&](const RecognitionCandidate& c) {
+                                     return c.part == result.part && c.view == result.view;
+                                   });
+  return result.status == RecognitionStatus::kOk &&
+         result.seen_fraction < RecognitionParameters{}.min_accepted_seen_fraction &&
+         winner != result.candidates.end() && winner->from_pose_search;
+}
+
+// On the cut scans, winners from the search over every part that a lenient recognizer accepts
+// with less than min_accepted_seen_fraction of their view seen are refused. (The free-space
+// rule, which drops most such poses before they are registered, is off in both.)
 TEST_F(RecognizerOnRegressionBase, AWinnerWhoseViewTheSceneContradictsIsRejected) {
-  RecognitionParameters lenient_parameters;
+  RecognitionParameters strict_parameters;
+  strict_parameters.max_fraction_over_belt = 1;
+  RecognitionParameters lenient_parameters = strict_parameters;
   lenient_parameters.min_accepted_seen_fraction = lenient_parameters.min_seen_fraction;
   const Recognizer lenient(*base_, CosmosParameters{}, lenient_parameters);
-  const double accepted_seen = RecognitionParameters{}.min_accepted_seen_fraction;
+  const Recognizer strict(*base_, CosmosParameters{}, strict_parameters);
   int refused = 0;
   for (std::uint64_t seed = 131; seed < 141; ++seed) {
     const std::string& name = base_->parts[static_cast<std::size_t>(seed % 5)].name;
-    RangeImage image = scan(name, seed);
-    ASSERT_TRUE(image.belt_known()) << name;
-    // The rows of the part's far half: no surface, the belt measured.
-    int first_row = image.height(), last_row = -1;
-    for (int row = 0; row < image.height(); ++row)
-      for (int column = 0; column < image.width(); ++column)
-        if (!std::isnan(image.z_mm(column, row))) {
-          first_row = std::min(first_row, row);
-          last_row = std::max(last_row, row);
-        }
-    ASSERT_LT(first_row, last_row) << name;
-    for (int row = (first_row + last_row) / 2; row <= last_row; ++row)
-      for (int column = 0; column < image.width(); ++column) {
-        image.z_mm(column, row) = std::numeric_limits<float>::quiet_NaN();
-        image.belt_seen(column, row) = 1;
-      }
+    const RangeImage image = far_half_cut(name, seed);
     const RecognitionResult accepted = lenient.recognize(image);
-    const RecognitionResult judged = recognizer_->recognize(image);
-    // The winner's candidate: the rule holds for those the search over every part proposed.
-    const auto winner = std::find_if(accepted.candidates.begin(), accepted.candidates.end(),
-                                     [&](const RecognitionCandidate& c) {
-                                       return c.part == accepted.part && c.view == accepted.view;
-                                     });
-    if (accepted.status != RecognitionStatus::kOk || accepted.seen_fraction >= accepted_seen ||
-        winner == accepted.candidates.end() || !winner->from_pose_search)
-      continue;
+    if (!accepted_with_view_contradicted(accepted)) continue;
+    const RecognitionResult judged = strict.recognize(image);
     EXPECT_EQ(judged.status, RecognitionStatus::kRejected) << name << " seed " << seed;
     EXPECT_NE(judged.reason.find("of the best candidate's surface is where the scene is"),
               std::string::npos)
@@ -312,6 +325,28 @@ TEST_F(RecognizerOnRegressionBase, AWinnerWhoseViewTheSceneContradictsIsRejected
     ++refused;
   }
   EXPECT_GE(refused, 2);
+}
+
+// The free-space rule (free_space.hpp): the search's field poses that place their part over
+// the measured belt are dropped before they are ranked or registered, so the same lenient
+// recognizer accepts no winner whose view the cut scene contradicts, where without the rule
+// it accepts at least two.
+TEST_F(RecognizerOnRegressionBase, SearchedPosesOverTheMeasuredBeltAreDropped) {
+  RecognitionParameters lenient_parameters;
+  lenient_parameters.min_accepted_seen_fraction = lenient_parameters.min_seen_fraction;
+  RecognitionParameters without_rule = lenient_parameters;
+  without_rule.max_fraction_over_belt = 1;
+  const Recognizer with(*base_, CosmosParameters{}, lenient_parameters);
+  const Recognizer without(*base_, CosmosParameters{}, without_rule);
+  int contradicted_with = 0, contradicted_without = 0;
+  for (std::uint64_t seed = 131; seed < 141; ++seed) {
+    const std::string& name = base_->parts[static_cast<std::size_t>(seed % 5)].name;
+    const RangeImage image = far_half_cut(name, seed);
+    contradicted_with += accepted_with_view_contradicted(with.recognize(image)) ? 1 : 0;
+    contradicted_without += accepted_with_view_contradicted(without.recognize(image)) ? 1 : 0;
+  }
+  EXPECT_GE(contradicted_without, 2);
+  EXPECT_EQ(contradicted_with, 0);
 }
 
 TEST_F(RecognizerOnRegressionBase, RejectsAPartTheBaseDoesNotHold) {
@@ -422,14 +457,18 @@ TEST_F(RecognizerOnRegressionBase, SelectedViewsBeyondTheFirstFewWaitForTheSearc
 }
 
 TEST_F(RecognizerOnRegressionBase, APartWhoseFirstPoseExplainsLittleHasNoMoreTried) {
-  RecognitionParameters persistent;
+  // The free-space rule off in both: it drops many of the poses the rule would abandon.
+  RecognitionParameters with_rule;
+  with_rule.max_fraction_over_belt = 1;
+  RecognitionParameters persistent = with_rule;
   persistent.abandoned_part_support = 0;
+  const Recognizer abandoning(*base_, CosmosParameters{}, with_rule);
   const Recognizer every_pose(*base_, CosmosParameters{}, persistent);
   const double abandoned = RecognitionParameters{}.abandoned_part_support;
   int abandoned_parts = 0;
   for (std::uint64_t seed : {51, 52, 53}) {
     const RangeImage image = scan("bunny", seed);
-    const RecognitionResult result = recognizer_->recognize(image);
+    const RecognitionResult result = abandoning.recognize(image);
     const RecognitionResult reference = every_pose.recognize(image);
     EXPECT_EQ(result.status, RecognitionStatus::kRejected) << seed;
     EXPECT_EQ(reference.status, RecognitionStatus::kRejected) << seed;

@@ -1,6 +1,6 @@
 // Whether a placed part's surface is where the scene shows surface (surface_seen.hpp), on a
-// hand-made scene: a 20 x 20 mm plate 5 mm above the belt in a 40 x 40 mm image whose other
-// pixels are belt (no data), and model points laid out on a 1 mm grid.
+// hand-made scene (plate_scene.hpp) whose pixels off the plate are belt (no data), and model
+// points laid out on a 1 mm grid.
 #include "core/recognition/surface_seen.hpp"
 
 #include <gtest/gtest.h>
@@ -9,23 +9,13 @@
 #include <limits>
 #include <vector>
 
+#include "tests/core/recognition/plate_scene.hpp"
+
 namespace cosmos {
 namespace {
 
-constexpr double kPlateHeightMm = 5.0;
-
-// 0.5 mm pixels over x, y in [0, 40) mm; the plate covers [10, 30) x [10, 30) mm.
-RangeImage plate_scene() {
-  RangeImage scene(80, 80, 0.5, 0.5);
-  for (int row = 0; row < scene.height(); ++row)
-    for (int column = 0; column < scene.width(); ++column) {
-      const bool on_plate = scene.x_mm(column) >= 10 && scene.x_mm(column) < 30 &&
-                            scene.y_mm(row) >= 10 && scene.y_mm(row) < 30;
-      scene.z_mm(column, row) =
-          on_plate ? static_cast<float>(kPlateHeightMm) : std::numeric_limits<float>::quiet_NaN();
-    }
-  return scene;
-}
+using testing::kPlateHeightMm;
+using testing::plate_scene;
 
 // Points every 1 mm over [x0, x0 + 20) x [12, 28) at height z.
 RegistrationPoints grid_points(double x0_mm, double z_mm) {

@@ -1,0 +1,24 @@
+#pragma once
+// The free-space constraint on a pose hypothesis: a placed part must not stand where the
+// scanner measured the bare belt. Seen from above, every point of a part projects inside the
+// part's own silhouette, which the scan covers with surface or, in a camera or laser shadow,
+// with nothing; it never covers it with belt the laser reached. A wrong part fitted to a few
+// of the scene's faces (a flat face that dozens of prismatic parts contain) reaches out over
+// that belt, and its field fit, which asks only whether the scene's points lie on the part,
+// cannot tell it from the scene's own part. A sample of the part's surface is placed by the
+// hypothesis and looked up in the scene's image: a point whose pixel and its eight
+// neighbours all saw the belt (so that silhouettes a pixel or two off do not count), or that
+// falls beyond the image's margin (belt, as far as the image knows), lies over the belt.
+#include <Eigen/Core>
+
+#include "core/range_image.hpp"
+#include "core/rigid_transform.hpp"
+
+namespace cosmos {
+
+// The fraction of `points_part_mm` (part frame) that T_part_scene^-1 places over measured belt
+// in `scene`; 0 when the image does not say where the belt was seen (RangeImage::belt_known).
+double fraction_over_belt(const RangeImage& scene, const Eigen::Matrix3Xd& points_part_mm,
+                          const RigidTransform& T_part_scene);
+
+}  // namespace cosmos
