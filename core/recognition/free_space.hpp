@@ -7,8 +7,10 @@
 // that belt, and its field fit, which asks only whether the scene's points lie on the part,
 // cannot tell it from the scene's own part. A sample of the part's surface is placed by the
 // hypothesis and looked up in the scene's image: a point whose pixel and its eight
-// neighbours all saw the belt (so that silhouettes a pixel or two off do not count), or that
-// falls beyond the image's margin (belt, as far as the image knows), lies over the belt.
+// neighbours (those in the image) all saw the belt lies over it, so that silhouettes a pixel
+// off do not count. Beyond the image, what its nearest border pixel saw: a scan's image ends
+// on belt around the part; a part's view in the cell holds only its own blob's rows, and where
+// its shadow cut the part in two, the border towards the other blob is shadow, not belt.
 #include <Eigen/Core>
 
 #include "core/range_image.hpp"

@@ -65,15 +65,15 @@ TEST(FreeSpace, OverAShadowNothingIsKnown) {
               3.0 / 20, 1e-12);
 }
 
-TEST(FreeSpace, BeyondTheImageIsBeltBeyondItsMarginOnly) {
-  // x in [35, 55): x = 35..39 over measured belt, x = 40 a pixel beyond the edge (its inner
-  // neighbour measured belt), x = 41.. beyond the margin: all over the belt.
+TEST(FreeSpace, BeyondTheImageItsBorderTells) {
+  // x in [35, 55): x = 35..39 lie over measured belt, x = 40.. beyond the image, whose border
+  // there measured the belt: all of it over the belt.
   EXPECT_DOUBLE_EQ(fraction_over_belt(plate_scene(), grid_points(35), RigidTransform::identity()),
                    1.0);
-  // The margin: a point two pixels out whose neighbourhood is all outside says nothing.
-  Eigen::Matrix3Xd just_out(3, 1);
-  just_out.col(0) = Eigen::Vector3d(40.5, 20, kPlateHeightMm);  // column 81 of 80
-  EXPECT_DOUBLE_EQ(fraction_over_belt(plate_scene(), just_out, RigidTransform::identity()), 0.0);
+  // With the border column a shadow (x >= 39.5 mm), nothing beyond it counts: x = 35..38 only
+  // (the neighbourhood of x = 39 reaches the shadow at 39.5 mm).
+  EXPECT_NEAR(fraction_over_belt(plate_scene(39.5), grid_points(35), RigidTransform::identity()),
+              4.0 / 20, 1e-12);
 }
 
 TEST(FreeSpace, WithoutABeltMaskNothingCounts) {

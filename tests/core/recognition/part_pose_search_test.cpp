@@ -239,8 +239,8 @@ TEST_F(PartPoseSearch, TheSurfaceSampleLiesOverNoBeltAtTheTruePose) {
     RigidTransform T_scene_part{truth.rotation, truth.translation_mm};
     EXPECT_LE(fraction_over_belt(scene.image, sample, T_scene_part.inverse()), 0.02)
         << "seed " << seed << ", " << truth.part;
-    T_scene_part.translation_mm.x() += base_->parts[static_cast<std::size_t>(part)].size_mm;
-    EXPECT_GE(fraction_over_belt(scene.image, sample, T_scene_part.inverse()), 0.5)
+    T_scene_part.translation_mm.x() += 0.3 * base_->parts[static_cast<std::size_t>(part)].size_mm;
+    EXPECT_GE(fraction_over_belt(scene.image, sample, T_scene_part.inverse()), 0.05)
         << "seed " << seed << ", " << truth.part;
   }
 }
