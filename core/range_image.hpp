@@ -3,6 +3,7 @@
 // Frame convention used by every tool: pixel (column i, row j) is the point
 //   x = x0 + i*dx,  y = y0 + j*dy,  z = value   (mm, scanner frame, z towards the sensor).
 #include <Eigen/Core>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -41,6 +42,9 @@ struct RangeImage {
   bool has_data(int column, int row) const;
   double x_mm(int column) const { return origin_x_mm + column * pixel_size_x_mm; }
   double y_mm(int row) const { return origin_y_mm + row * pixel_size_y_mm; }
+  // The nearest column and row of a position, their inverses (beyond the image when it is).
+  long column_at(double x) const { return std::lround((x - origin_x_mm) / pixel_size_x_mm); }
+  long row_at(double y) const { return std::lround((y - origin_y_mm) / pixel_size_y_mm); }
   Eigen::Vector3d point_mm(int column, int row) const;
   std::size_t count_valid() const;
 };

@@ -14,10 +14,8 @@ double fraction_over_belt(const RangeImage& scene, const Eigen::Matrix3Xd& point
   for (Eigen::Index i = 0; i < points_part_mm.cols(); ++i) {
     const Eigen::Vector3d point = T_scene_part.apply(points_part_mm.col(i));
     // Beyond the image, what its nearest border pixel saw.
-    const long column = std::clamp(
-        std::lround((point.x() - scene.origin_x_mm) / scene.pixel_size_x_mm), 0L, width - 1);
-    const long row = std::clamp(
-        std::lround((point.y() - scene.origin_y_mm) / scene.pixel_size_y_mm), 0L, height - 1);
+    const long column = std::clamp(scene.column_at(point.x()), 0L, width - 1);
+    const long row = std::clamp(scene.row_at(point.y()), 0L, height - 1);
     bool all_belt = true;
     for (long r = std::max(0L, row - 1); r <= std::min(height - 1, row + 1) && all_belt; ++r)
       for (long c = std::max(0L, column - 1); c <= std::min(width - 1, column + 1) && all_belt; ++c)

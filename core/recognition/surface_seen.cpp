@@ -14,8 +14,8 @@ SurfaceSeen measure_surface_seen(const RangeImage& scene, const RegistrationPoin
   const bool belt_known = scene.belt_known();
   for (Eigen::Index i = 0; i < model.position_mm.cols(); ++i) {
     const Eigen::Vector3d point = T_scene_model.apply(model.position_mm.col(i));
-    const long column = std::lround((point.x() - scene.origin_x_mm) / scene.pixel_size_x_mm);
-    const long row = std::lround((point.y() - scene.origin_y_mm) / scene.pixel_size_y_mm);
+    const long column = scene.column_at(point.x());
+    const long row = scene.row_at(point.y());
     // Against the part: a lower surface, or the belt measured (beyond the image: its
     // background, belt as far as it can tell).
     bool seen = false, hidden = false, against = false;

@@ -102,8 +102,9 @@ struct CellRunSummary {
   // recognition), and those recognized at completion.
   std::int64_t blobs_recognized_ahead = 0;
   std::int64_t blobs_recognized_at_completion = 0;
-  // Recognized blobs whose poses waited for their soft successor (PieceJoiner): the cell's
-  // latency where a part follows closer than its shadow reaches, not recognition.
+  // Recognized blobs whose poses waited for their soft successor (PieceJoiner): a part that,
+  // as placed, reaches past its blob into the shadow, or nearly failed recognition; their
+  // latency is the part behind's, not their own recognition's.
   std::int64_t blobs_held_for_successor = 0;
   double profile_time_p50_us = 0, profile_time_p99_us = 0, profile_time_p999_us = 0,
          profile_time_max_us = 0;
