@@ -83,21 +83,6 @@ std::vector<FieldHypothesis> turned_view_starts(const RegistrationPoints& scorin
   return starts;
 }
 
-// The part's view nearest to the direction the scanner looks from under T_part_scene.
-int nearest_view(const ModelBase& base, int part, const RigidTransform& T_part_scene) {
-  const Eigen::Vector3d seen_from_part = T_part_scene.rotation * Eigen::Vector3d::UnitZ();
-  int nearest = -1;
-  for (std::size_t v = 0; v < base.views.size(); ++v) {
-    const ModelBaseView& view = base.views[v];
-    if (view.part_index != part) continue;
-    if (nearest < 0 ||
-        view.direction_part.dot(seen_from_part) >
-            base.views[static_cast<std::size_t>(nearest)].direction_part.dot(seen_from_part))
-      nearest = static_cast<int>(v);
-  }
-  return nearest;
-}
-
 // Starts that converged to one pose of the part (on one view or neighbouring ones) are one
 // hypothesis, and one that fits the part much worse than the best is none: the caller
 // registers each. `sorted`: best first.
@@ -135,6 +120,20 @@ std::vector<ViewPoseHypothesis> distinct_hypotheses(const ModelBase& base,
 constexpr std::size_t kSurfaceSamplePoints = 256;
 
 }  // namespace
+
+int nearest_view(const ModelBase& base, int part, const RigidTransform& T_part_scene) {
+  const Eigen::Vector3d seen_from_part = T_part_scene.rotation * Eigen::Vector3d::UnitZ();
+  int nearest = -1;
+  for (std::size_t v = 0; v < base.views.size(); ++v) {
+    const ModelBaseView& view = base.views[v];
+    if (view.part_index != part) continue;
+    if (nearest < 0 ||
+        view.direction_part.dot(seen_from_part) >
+            base.views[static_cast<std::size_t>(nearest)].direction_part.dot(seen_from_part))
+      nearest = static_cast<int>(v);
+  }
+  return nearest;
+}
 
 PartSearchModel build_part_search_model(const ModelBase& base, int part,
                                         const PartDistanceFieldParameters& parameters) {

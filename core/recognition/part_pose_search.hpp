@@ -111,6 +111,9 @@ struct FieldHypothesis {
   double truncated_mean_square_mm2 = 0;
 };
 
+// The part's view nearest to the direction the scanner looks from under T_part_scene.
+int nearest_view(const ModelBase& base, int part, const RigidTransform& T_part_scene);
+
 // The search's field stages from the given starts (T_part_scene): all scored, the best
 // field_candidates aligned one step, the best field_aligned of those field_iterations steps;
 // at most refined_hypotheses returned, best first.

@@ -99,7 +99,18 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
     result.timings.total_ms = features_ms + elapsed_ms(start);
     return result;
   };
-  if (analysis.valid_pixels == 0) return finish("no object: no surface could be fitted");
+  // A scene with too little fitted surface may be a thin part seen edge-on (thin_scene.hpp),
+  // told from other parts only by where the scanner saw the belt.
+  const auto finish_thin = [&](std::string reason) {
+    const ThinSceneParameters& thin = parameters_.thin_scene;
+    if (!thin.enabled || model_base_.views.empty() || !scene.belt_known() ||
+        scene.count_valid() < static_cast<std::size_t>(thin.min_points))
+      return finish(std::move(reason));
+    const std::string thin_reason = recognize_thin_scene(scene, result);
+    return finish(thin_reason.empty() ? thin_reason
+                                      : reason + "; searched as a thin scene, " + thin_reason);
+  };
+  if (analysis.valid_pixels == 0) return finish_thin("no object: no surface could be fitted");
 
   StageClock::time_point stage = StageClock::now();
   RegistrationPointsResult scene_points =
@@ -115,8 +126,8 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   result.timings.features_ms += elapsed_ms(stage);
   if (scene_points.status != RegistrationPointsStatus::kOk ||
       result.scene_points < parameters_.min_scene_points)
-    return finish("too little smooth surface to register (" + std::to_string(result.scene_points) +
-                  " control points)");
+    return finish_thin("too little smooth surface to register (" +
+                       std::to_string(result.scene_points) + " control points)");
   if (model_base_.views.empty()) return finish("the model base has no views");
 
   stage = StageClock::now();

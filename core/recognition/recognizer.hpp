@@ -22,6 +22,9 @@
 //                 both seen from the scanner, so the unknown is mostly that turn) — scored by
 //                 one correspondence pass each; the best are refined by the minimum-variance
 //                 estimator (§6.6) or Chen-Medioni;
+//   thin scenes   a scene with too little fitted surface to register (a blade seen edge-on)
+//                 is searched in the parts' distance fields with its range points, the parts
+//                 set down on the belt and held inside its silhouette (thin_scene.hpp);
 //   decision      each registered candidate is judged by its support (the fraction of scene
 //                 control points within inlier_distance_mm of the model surface), its RMS
 //                 residual and its COSMOS goodness; the best wins, and below the thresholds
@@ -51,6 +54,7 @@
 #include "core/recognition/resting_pose_search.hpp"
 #include "core/recognition/size_variants.hpp"
 #include "core/recognition/surface_seen.hpp"
+#include "core/recognition/thin_scene.hpp"
 #include "core/registration/free_motion_search.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/registration/view_registration.hpp"
@@ -177,6 +181,8 @@ struct RecognitionParameters {
   ModelSurfaceCacheParameters surfaces;
   // The winner's pose along the motion its registration left free (free_motion_search.hpp).
   FreeMotionSearchParameters free_motion;
+  // A scene without a fitted surface, recognized from its range points (thin_scene.hpp).
+  ThinSceneParameters thin_scene;
 
   template <class Visitor>
   void visit(Visitor& v) {
@@ -241,6 +247,7 @@ struct RecognitionParameters {
     v("size_variants", size_variants, "one shape at several sizes: told apart by the fit");
     v("surfaces", surfaces, "the model surfaces a recognition keeps unpacked");
     v("free_motion", free_motion, "the winner's pose along the motion registration left free");
+    v("thin_scene", thin_scene, "a scene without a fitted surface, from its range points");
   }
 };
 
@@ -314,6 +321,9 @@ struct RecognitionResult {
   bool catalog_searched = false;
   // The resting poses of every part were searched (the selected views explained nothing).
   bool resting_searched = false;
+  // The scene had no fitted surface to register and was searched with its range points
+  // (thin_scene.hpp); no candidate is registered then.
+  bool thin_scene = false;
   std::vector<RecognitionCandidate> candidates;  // spectral order
   RecognitionTimings timings;
 };
@@ -355,6 +365,10 @@ class Recognizer {
   std::string decide(const ViewAnalysis& analysis, const ScenePoints& points,
                      ModelSurfaces& surfaces, RecognitionResult& result) const;
 
+  // A scene without enough fitted surface, from its range points (thin_scene.hpp): sets the
+  // result's part, pose and figures when accepted; returns why the scene is rejected, empty
+  // when it is not.
+  std::string recognize_thin_scene(const RangeImage& scene, RecognitionResult& result) const;
   RecognitionCandidate verify(const ViewAnalysis& scene, const ScenePoints& scene_points,
                               const SpectralCandidate& selected, ModelSurfaces& surfaces,
                               double& matching_ms, double& registration_ms) const;

@@ -78,6 +78,7 @@ struct EvaluationRecord {
   bool pose_searched = false;
   bool catalog_searched = false;
   bool resting_searched = false;  // the parts' resting poses were searched
+  bool thin_scene = false;  // no fitted surface: searched with its range points (thin_scene.hpp)
   // The decision's margin: the winner's score (the best candidate's when rejected) and the
   // best candidate of another part, empty when none registered.
   double score = 0;

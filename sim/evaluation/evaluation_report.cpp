@@ -231,7 +231,8 @@ std::string report_html(std::span<const EvaluationRecord> records, const Evaluat
           "<th>status</th><th>rotation error (deg)</th><th>translation error (mm)</th>"
           "<th>ADD-S / diameter</th><th>time (ms)</th><th>features (ms)</th><th>matching (ms)</th>"
           "<th>registration (ms)</th><th>pose search</th><th>catalog "
-          "search</th><th>resting search</th><th>score</th><th>runner-up (score)</th>"
+          "search</th><th>resting search</th><th>thin scene</th><th>score</th><th>runner-up "
+          "(score)</th>"
           "<th>rejected because</th></tr>\n";
   for (std::size_t i = 0; i < records.size(); ++i) {
     const EvaluationRecord& record = records[i];
@@ -252,7 +253,8 @@ std::string report_html(std::span<const EvaluationRecord> records, const Evaluat
          << "</td><td>" << format("%.2f", record.registration_ms) << "</td><td>"
          << (record.pose_searched ? "yes" : "no") << "</td><td>"
          << (record.catalog_searched ? "yes" : "no") << "</td><td>"
-         << (record.resting_searched ? "yes" : "no") << "</td><td>" << format("%.3f", record.score)
+         << (record.resting_searched ? "yes" : "no") << "</td><td>"
+         << (record.thin_scene ? "yes" : "no") << "</td><td>" << format("%.3f", record.score)
          << format(", %.2f seen", record.seen_fraction) << "</td><td>"
          << (record.runner_up_name.empty()
                  ? std::string("&ndash;")
@@ -293,6 +295,7 @@ nlohmann::json tests_json(std::span<const EvaluationRecord> records,
         {"pose_searched", record.pose_searched},
         {"catalog_searched", record.catalog_searched},
         {"resting_searched", record.resting_searched},
+        {"thin_scene", record.thin_scene},
         {"truth_has_size_variants", record.truth_has_size_variants},
         {"taken_for_size_variant", record.taken_for_size_variant},
         {"add_s_over_diameter", outcome.add_s_over_diameter

@@ -168,6 +168,7 @@ EvaluationRecord run_evaluation_test(const EvaluationTest& test,
     record.pose_searched |= candidate.from_pose_search;
   record.catalog_searched = result.catalog_searched;
   record.resting_searched = result.resting_searched;
+  record.thin_scene = result.thin_scene;
   record.score = result.score;
   if (result.runner_up_part >= 0) {
     record.runner_up_name = base.parts[static_cast<std::size_t>(result.runner_up_part)].name;

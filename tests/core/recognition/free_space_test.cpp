@@ -58,6 +58,13 @@ TEST(FreeSpace, APartReachingOutLiesOverTheBeltItReaches) {
               9.0 / 20, 1e-12);
 }
 
+TEST(FreeSpace, AWiderMarginForgivesAPoseThatFarOff) {
+  // With 3 pixels (1.5 mm) of margin x = 31 has plate within reach (x = 29.5 mm): only
+  // x = 32..39, 8 of 20 columns, lie over the belt.
+  EXPECT_NEAR(fraction_over_belt(plate_scene(), grid_points(20), RigidTransform::identity(), 3),
+              8.0 / 20, 1e-12);
+}
+
 TEST(FreeSpace, OverAShadowNothingIsKnown) {
   // Belt measured only for x < 34 mm: of x = 31..39 only 31..33 lie over it (the neighbourhood
   // of x = 34 reaches the shadow at 34 mm).
@@ -74,6 +81,14 @@ TEST(FreeSpace, BeyondTheImageItsBorderTells) {
   // (the neighbourhood of x = 39 reaches the shadow at 39.5 mm).
   EXPECT_NEAR(fraction_over_belt(plate_scene(39.5), grid_points(35), RigidTransform::identity()),
               4.0 / 20, 1e-12);
+}
+
+TEST(FreeSpace, BeyondTheImageTheBeltWhenAsked) {
+  // The border column a shadow, as above, but beyond the image counted as belt: x = 35..38
+  // and x = 41..54 (x = 40 has the shadow at 39.5 mm within its pixel's reach), 18 of 20.
+  EXPECT_NEAR(fraction_over_belt(plate_scene(39.5), grid_points(35), RigidTransform::identity(), 1,
+                                 BeyondTheImage::kBelt),
+              18.0 / 20, 1e-12);
 }
 
 TEST(FreeSpace, WithoutABeltMaskNothingCounts) {
