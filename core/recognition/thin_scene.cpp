@@ -1,6 +1,9 @@
 #include "core/recognition/thin_scene.hpp"
 
 #include <algorithm>
+#include <cmath>
+
+#include "core/recognition/free_space.hpp"
 
 namespace cosmos {
 
@@ -26,6 +29,49 @@ RegistrationPoints range_points(const RangeImage& scene, int max_points) {
       ++k;
     }
   return points;
+}
+
+ThinSceneFit::ThinSceneFit(const RangeImage& scene, const RegistrationPoints& points,
+                           const ThinSceneParameters& parameters,
+                           const RestingSearchParameters& resting, double field_truncation_mm)
+    : scene_(scene),
+      points_(points),
+      parameters_(parameters),
+      resting_(resting),
+      field_truncation_mm_(field_truncation_mm) {}
+
+SettledPose ThinSceneFit::settle(int part, const ModelPart& model_part,
+                                 const PartSearchModel& model,
+                                 const RigidTransform& T_part_scene) const {
+  const auto set_down = [&](const RigidTransform& T) {
+    const double lowest_mm = check_resting(model_part, T, resting_).lowest_point_mm;
+    if (!std::isfinite(lowest_mm)) return T;  // a part without hull corners
+    return T * RigidTransform{Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, lowest_mm)};
+  };
+  RigidTransform T = set_down(T_part_scene);
+  for (int round = 0; round < parameters_.settle_rounds; ++round)
+    T = set_down(align_in_distance_field(points_, model.field, T, parameters_.settle_iterations,
+                                         field_truncation_mm_));
+  SettledPose settled{part, T};
+  settled.fraction_over_belt =
+      fraction_over_belt(scene_, model.surface_sample_mm, settled.T_part_scene,
+                         parameters_.belt_margin_px, BeyondTheImage::kBelt);
+  settled.mean_square_mm2 = field_truncated_mean_square_mm2(
+      points_, model.field, settled.T_part_scene, field_truncation_mm_);
+  return settled;
+}
+
+std::optional<SettledPose> ThinSceneFit::best_settled(int part, const ModelPart& model_part,
+                                                      const PartSearchModel& model,
+                                                      const std::vector<FieldHypothesis>& poses,
+                                                      double max_fraction_over_belt) const {
+  std::optional<SettledPose> best;
+  for (const FieldHypothesis& pose : poses) {
+    const SettledPose settled = settle(part, model_part, model, pose.T_part_scene);
+    if (settled.fraction_over_belt > max_fraction_over_belt) continue;
+    if (!best || settled.mean_square_mm2 < best->mean_square_mm2) best = settled;
+  }
+  return best;
 }
 
 }  // namespace cosmos

@@ -12,10 +12,16 @@
 // the belt on either side of it. Without a belt mask (RangeImage::belt_known) nothing tells
 // the parts apart, and the search does not run.
 #include <Eigen/Core>
+#include <optional>
+#include <vector>
 
+#include "core/modelbase/model_base.hpp"
 #include "core/parameter_visitor.hpp"
 #include "core/range_image.hpp"
+#include "core/recognition/part_pose_search.hpp"
+#include "core/recognition/resting_pose_search.hpp"
 #include "core/registration/registration_points.hpp"
+#include "core/rigid_transform.hpp"
 
 namespace cosmos {
 
@@ -68,5 +74,46 @@ struct ThinSceneParameters {
 // most max_points remain) as registration points: positions, normals towards the sensor (the
 // ribbon has none of its own), no local fit. The distance-field stages read positions only.
 RegistrationPoints range_points(const RangeImage& scene, int max_points);
+
+// One pose of a part set down on the belt, and how it fits the range points and the scene's
+// free space.
+struct SettledPose {
+  int part = -1;
+  RigidTransform T_part_scene;
+  double mean_square_mm2 = 0;  // the range points' truncated mean square field distance
+  double fraction_over_belt = 0;
+  double inlier_fraction = 0;  // of the range points within inlier_distance_mm (when asked)
+};
+
+// A thin scene's range points against the parts' distance fields. The field's zero set lies
+// inside a rim (the views' control points stop short of it), so a ribbon along the rim pulls
+// a part up off the belt, or slides it onto its face: each pose is aligned in the field and
+// set down on the belt in turns, and judged where the part lies. The whole part must stand
+// inside the image, whatever lies beyond it counting as belt: in the cell a piece that a
+// shadow cut off a part is thin too, and beyond its blob's rows, where the rest of that part
+// lies, any part fitted to it would stand unseen.
+class ThinSceneFit {
+ public:
+  // All must outlive the fit.
+  ThinSceneFit(const RangeImage& scene, const RegistrationPoints& points,
+               const ThinSceneParameters& parameters, const RestingSearchParameters& resting,
+               double field_truncation_mm);
+
+  SettledPose settle(int part, const ModelPart& model_part, const PartSearchModel& model,
+                     const RigidTransform& T_part_scene) const;
+  // The best fit of the poses that, settled, place at most max_fraction_over_belt of the
+  // part over the belt; none when none does.
+  std::optional<SettledPose> best_settled(int part, const ModelPart& model_part,
+                                          const PartSearchModel& model,
+                                          const std::vector<FieldHypothesis>& poses,
+                                          double max_fraction_over_belt) const;
+
+ private:
+  const RangeImage& scene_;
+  const RegistrationPoints& points_;
+  const ThinSceneParameters& parameters_;
+  const RestingSearchParameters& resting_;
+  double field_truncation_mm_;
+};
 
 }  // namespace cosmos

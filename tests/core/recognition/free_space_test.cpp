@@ -15,16 +15,8 @@ namespace {
 
 using testing::kPlateHeightMm;
 
-// The plate scene with its belt measured wherever there is no plate and x < shadow_from_mm
-// (beyond it: the scanner's shadow, neither surface nor belt).
 RangeImage plate_scene(double shadow_from_mm = 1e9) {
-  RangeImage scene = testing::plate_scene();
-  scene.belt_seen = PixelGrid<std::uint8_t>(scene.width(), scene.height(), 0);
-  for (int row = 0; row < scene.height(); ++row)
-    for (int column = 0; column < scene.width(); ++column)
-      scene.belt_seen(column, row) =
-          std::isnan(scene.z_mm(column, row)) && scene.x_mm(column) < shadow_from_mm;
-  return scene;
+  return testing::plate_scene_on_belt(shadow_from_mm);
 }
 
 // Points every 1 mm over [x0, x0 + 20) x [12, 28) at the plate's height.
