@@ -46,22 +46,35 @@ std::string Recognizer::recognize_thin_scene(const RangeImage& scene,
   PartPoseSearchParameters search = parameters_.search;
   search.refined_hypotheses = thin.hypotheses;
   std::vector<SettledPose> fits;
-  const std::size_t searched =
-      std::min(ranked.size(), static_cast<std::size_t>(thin.searched_parts));
-  for (std::size_t k = 0; k < searched; ++k) {
-    const int part = ranked[k].second;
+  const auto search_part = [&](int part) {
     const PartSearchModel& model = part_search_model(part);
     std::optional<SettledPose> best = fit.best_settled(
         part, part_of(part), model, field_pose_hypotheses(points, model_base_, model, search),
         thin.max_fraction_over_belt);
-    if (!best) continue;
+    if (!best) return;
     best->inlier_fraction =
         field_fraction_within(points, model.field, best->T_part_scene, thin.inlier_distance_mm);
     fits.push_back(*best);
-  }
-  std::stable_sort(fits.begin(), fits.end(), [](const SettledPose& a, const SettledPose& b) {
+  };
+  const auto by_fit = [](const SettledPose& a, const SettledPose& b) {
     return a.mean_square_mm2 < b.mean_square_mm2;
-  });
+  };
+  const std::size_t searched =
+      std::min(ranked.size(), static_cast<std::size_t>(thin.searched_parts));
+  for (std::size_t k = 0; k < searched; ++k) search_part(ranked[k].second);
+  std::stable_sort(fits.begin(), fits.end(), by_fit);
+  // The winner's other sizes are searched too: a ribbon shows a rim, not the whole part, and a
+  // larger size whose extra length lies in a shadow explains it as well.
+  const auto searched_already = [&](int part) {
+    return std::any_of(fits.begin(), fits.end(),
+                       [part](const SettledPose& f) { return f.part == part; });
+  };
+  if (!fits.empty()) {
+    const int winner = fits.front().part;
+    for (int variant : size_variants_[static_cast<std::size_t>(winner)])
+      if (!searched_already(variant)) search_part(variant);
+    std::stable_sort(fits.begin(), fits.end(), by_fit);
+  }
   result.timings.registration_ms += elapsed_ms(search_start);
   result.thin_scene = true;
   if (fits.empty()) return "no part stands inside its thin silhouette";
@@ -71,10 +84,17 @@ std::string Recognizer::recognize_thin_scene(const RangeImage& scene,
   if (best.inlier_fraction < thin.min_inlier_fraction)
     return "its best part, " + name(best.part) + ", lies near only " +
            percent(best.inlier_fraction) + " % of its range points";
-  if (fits.size() > 1) {
-    result.runner_up_part = fits[1].part;
-    if (fits[1].mean_square_mm2 < thin.ambiguity_factor * best.mean_square_mm2)
-      return "ambiguous between " + name(best.part) + " and " + name(fits[1].part);
+  // Another part fitting nearly as well, or another size of it standing inside the silhouette
+  // and explaining the ribbon at all, leaves the scene ambiguous: a wrong part is worse.
+  const std::vector<int>& sizes = size_variants_[static_cast<std::size_t>(best.part)];
+  for (std::size_t k = 1; k < fits.size(); ++k) {
+    const SettledPose& other = fits[k];
+    if (other.part == best.part) continue;
+    if (result.runner_up_part < 0) result.runner_up_part = other.part;
+    const bool other_size = std::binary_search(sizes.begin(), sizes.end(), other.part) &&
+                            other.inlier_fraction >= thin.min_inlier_fraction;
+    if (other_size || other.mean_square_mm2 < thin.ambiguity_factor * best.mean_square_mm2)
+      return "ambiguous between " + name(best.part) + " and " + name(other.part);
   }
   result.part = best.part;
   result.view = nearest_view(model_base_, best.part, best.T_part_scene);

@@ -33,12 +33,23 @@ class ThinSceneRecognition : public ::testing::Test {
         read_part_catalog(std::filesystem::path(COSMOS_SOURCE_DIR) / "config/parts.yaml"));
     with_blade_ = std::make_unique<ModelBase>(build_base({"blade", "fandisk", "couplingdown"}));
     without_blade_ = std::make_unique<ModelBase>(build_base({"fandisk", "couplingdown"}));
+    PartEntry larger = catalog_->at("blade");
+    larger.name = "blade-110";
+    larger.size_mm *= 1.1;
+    PartCatalog family;
+    family.parts = {catalog_->at("blade"), larger, catalog_->at("fandisk")};
+    ModelBaseBuildSettings settings;
+    settings.view_count = 80;
+    settings.threads = 2;
+    blade_sizes_ =
+        std::make_unique<ModelBase>(build_model_base(family, ScannerParameters{}, settings));
     const PartEntry& blade = catalog_->at("blade");
     blade_mesh_ = std::make_unique<TriangleMesh>(load_mesh(blade.mesh_path, blade.size_mm));
   }
   static void TearDownTestSuite() {
     blade_mesh_.reset();
     without_blade_.reset();
+    blade_sizes_.reset();
     with_blade_.reset();
     catalog_.reset();
   }
@@ -62,6 +73,7 @@ class ThinSceneRecognition : public ::testing::Test {
   static inline std::unique_ptr<PartCatalog> catalog_;
   static inline std::unique_ptr<ModelBase> with_blade_;
   static inline std::unique_ptr<ModelBase> without_blade_;
+  static inline std::unique_ptr<ModelBase> blade_sizes_;  // the blade and a copy 10 % larger
   static inline std::unique_ptr<TriangleMesh> blade_mesh_;
 };
 
@@ -97,6 +109,29 @@ TEST_F(ThinSceneRecognition, ABaseWithoutTheBladeRejectsItsRibbon) {
     EXPECT_EQ(result.status, RecognitionStatus::kRejected) << "seed " << seed;
     EXPECT_EQ(result.part, -1) << "seed " << seed;
   }
+}
+
+TEST_F(ThinSceneRecognition, ARibbonNeverNamesTheWrongSizeOfTheBlade) {
+  // A ribbon shows a rim: a larger blade whose extra length lies in a shadow explains it as
+  // well, and such a scene is rejected as ambiguous rather than guessed.
+  const Recognizer recognizer(*blade_sizes_, CosmosParameters{}, RecognitionParameters{});
+  int named = 0;
+  for (const std::uint64_t seed : kEdgeOnSeeds) {
+    const RecognitionResult result = recognizer.recognize(edge_on_scan(seed));
+    EXPECT_TRUE(result.thin_scene) << "seed " << seed;
+    if (result.status != RecognitionStatus::kOk) {
+      EXPECT_TRUE(result.reason.find("ambiguous between blade") != std::string::npos ||
+                  result.reason.find("no part stands inside") != std::string::npos)
+          << "seed " << seed << ": " << result.reason;
+      continue;
+    }
+    EXPECT_EQ(blade_sizes_->parts[static_cast<std::size_t>(result.part)].name, "blade")
+        << "seed " << seed;
+    ++named;
+  }
+  // ... while a ribbon the larger size cannot explain (its ends would reach over the belt)
+  // is still named.
+  EXPECT_GE(named, 3);
 }
 
 TEST_F(ThinSceneRecognition, SwitchedOffTheRibbonIsRejectedForItsMissingSurface) {
