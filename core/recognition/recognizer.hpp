@@ -396,6 +396,8 @@ class Recognizer {
   void drop_poses_over_belt(int part, const RangeImage& scene,
                             std::vector<FieldHypothesis>& field_poses) const;
   RestingCheck check_resting(const RecognitionCandidate& candidate) const;
+  // `other` is another size of `part`'s shape in the base (size_variants.hpp).
+  bool is_size_variant(int part, int other) const;
   // Registers from each start on its view, keeps the pose its view supports best (the
   // candidate's view becomes that one), then judges it against the part's views around it
   // (part_support.hpp).

@@ -14,6 +14,11 @@
 
 namespace cosmos {
 
+bool Recognizer::is_size_variant(int part, int other) const {
+  const std::vector<int>& family = size_variants_[static_cast<std::size_t>(part)];
+  return std::binary_search(family.begin(), family.end(), other);
+}
+
 std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& points,
                                ModelSurfaces& surfaces, RecognitionResult& result) const {
   const RecognitionCandidate* best = best_candidate(result.candidates);
@@ -26,10 +31,6 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
   const RecognitionCandidate* rival = nullptr;
   const RecognitionCandidate* winner = nullptr;
   bool best_at_rest = true;
-  const auto is_size_variant = [&](int part, int other) {
-    const std::vector<int>& family = size_variants_[static_cast<std::size_t>(part)];
-    return std::binary_search(family.begin(), family.end(), other);
-  };
   const auto two_way_fit = [&](const RecognitionCandidate& candidate) {
     return candidate.inlier_fraction * candidate.seen_fraction;
   };

@@ -48,13 +48,10 @@ std::string Recognizer::recognize_thin_scene(const RangeImage& scene,
   std::vector<SettledPose> fits;
   const auto search_part = [&](int part) {
     const PartSearchModel& model = part_search_model(part);
-    std::optional<SettledPose> best = fit.best_settled(
+    const std::optional<SettledPose> best = fit.best_settled(
         part, part_of(part), model, field_pose_hypotheses(points, model_base_, model, search),
         thin.max_fraction_over_belt);
-    if (!best) return;
-    best->inlier_fraction =
-        field_fraction_within(points, model.field, best->T_part_scene, thin.inlier_distance_mm);
-    fits.push_back(*best);
+    if (best) fits.push_back(*best);
   };
   const auto by_fit = [](const SettledPose& a, const SettledPose& b) {
     return a.mean_square_mm2 < b.mean_square_mm2;
@@ -86,13 +83,12 @@ std::string Recognizer::recognize_thin_scene(const RangeImage& scene,
            percent(best.inlier_fraction) + " % of its range points";
   // Another part fitting nearly as well, or another size of it standing inside the silhouette
   // and explaining the ribbon at all, leaves the scene ambiguous: a wrong part is worse.
-  const std::vector<int>& sizes = size_variants_[static_cast<std::size_t>(best.part)];
   for (std::size_t k = 1; k < fits.size(); ++k) {
     const SettledPose& other = fits[k];
     if (other.part == best.part) continue;
     if (result.runner_up_part < 0) result.runner_up_part = other.part;
-    const bool other_size = std::binary_search(sizes.begin(), sizes.end(), other.part) &&
-                            other.inlier_fraction >= thin.min_inlier_fraction;
+    const bool other_size =
+        is_size_variant(best.part, other.part) && other.inlier_fraction >= thin.min_inlier_fraction;
     if (other_size || other.mean_square_mm2 < thin.ambiguity_factor * best.mean_square_mm2)
       return "ambiguous between " + name(best.part) + " and " + name(other.part);
   }

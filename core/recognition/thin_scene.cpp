@@ -71,6 +71,9 @@ std::optional<SettledPose> ThinSceneFit::best_settled(int part, const ModelPart&
     if (settled.fraction_over_belt > max_fraction_over_belt) continue;
     if (!best || settled.mean_square_mm2 < best->mean_square_mm2) best = settled;
   }
+  if (best)
+    best->inlier_fraction = field_fraction_within(points_, model.field, best->T_part_scene,
+                                                  parameters_.inlier_distance_mm);
   return best;
 }
 

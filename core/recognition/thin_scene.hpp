@@ -82,7 +82,7 @@ struct SettledPose {
   RigidTransform T_part_scene;
   double mean_square_mm2 = 0;  // the range points' truncated mean square field distance
   double fraction_over_belt = 0;
-  double inlier_fraction = 0;  // of the range points within inlier_distance_mm (when asked)
+  double inlier_fraction = 0;  // of the range points within inlier_distance_mm
 };
 
 // A thin scene's range points against the parts' distance fields. The field's zero set lies
@@ -102,7 +102,7 @@ class ThinSceneFit {
   SettledPose settle(int part, const ModelPart& model_part, const PartSearchModel& model,
                      const RigidTransform& T_part_scene) const;
   // The best fit of the poses that, settled, place at most max_fraction_over_belt of the
-  // part over the belt; none when none does.
+  // part over the belt, with its inlier fraction; none when none does.
   std::optional<SettledPose> best_settled(int part, const ModelPart& model_part,
                                           const PartSearchModel& model,
                                           const std::vector<FieldHypothesis>& poses,

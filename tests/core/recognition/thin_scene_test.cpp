@@ -116,6 +116,7 @@ TEST_F(ThinSceneFitOnThePlate, APoseOffTheSilhouetteIsNotTaken) {
   const std::optional<SettledPose> best = fit.best_settled(0, box_.part, box_.model, poses, 0.05);
   ASSERT_TRUE(best.has_value());
   EXPECT_NEAR(best->T_part_scene.inverse().translation_mm.x(), 20, 1e-9);
+  EXPECT_DOUBLE_EQ(best->inlier_fraction, 1.0);  // every plate point on the box's top
   EXPECT_FALSE(fit.best_settled(0, box_.part, box_.model, {poses[0]}, 0.05).has_value());
 }
 
