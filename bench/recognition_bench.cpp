@@ -127,9 +127,11 @@ void BM_PartSupport(benchmark::State& state) {
     ModelSurfaces surfaces(
         fixture->base(),
         fixture->parameters().surfaces);  // as a recognition's first measurement: cold
+    const int part = fixture->base().views[static_cast<std::size_t>(scan.chosen_view)].part_index;
     benchmark::DoNotOptimize(measure_part_support(
-        scan.scene_points, fixture->base(), scan.chosen_view, scan.chosen_registered,
-        parameters.registration, parameters.support, surfaces));
+        scan.scene_points, fixture->base(), fixture->recognizer().part_search_model(part).views,
+        scan.chosen_view, scan.chosen_registered, parameters.registration, parameters.support,
+        surfaces));
   });
 }
 BENCHMARK(BM_PartSupport)->Unit(benchmark::kMillisecond)->Iterations(50);
@@ -145,7 +147,7 @@ void BM_FallbackPoseSearchOnePart(benchmark::State& state) {
         fixture->base(),
         fixture->parameters().surfaces);  // cold, as the recognition's first search
     benchmark::DoNotOptimize(
-        search_part_pose(scan.scene_points, fixture->base(), scan.searched_part,
+        search_part_pose(scan.scene_points, fixture->base(),
                          fixture->recognizer().part_search_model(scan.searched_part),
                          parameters.registration, parameters.search, surfaces));
   });

@@ -13,10 +13,10 @@ PartAmbiguity judge_part_ambiguity(const RegistrationPoints& scene, const ModelB
   PartAmbiguity judgement;
   if (scene.size() == 0) return judgement;
   std::vector<double> winner_mm, rival_mm;
-  part_surface_distances(scene, base, winner.view, winner.T_model_scene, registration, support,
-                         surfaces, winner_mm);
-  part_surface_distances(scene, base, rival.view, rival.T_model_scene, registration, support,
-                         surfaces, rival_mm);
+  part_surface_distances(scene, base, winner.part_views, winner.view, winner.T_model_scene,
+                         registration, support, surfaces, winner_mm);
+  part_surface_distances(scene, base, rival.part_views, rival.view, rival.T_model_scene,
+                         registration, support, surfaces, rival_mm);
   for (std::size_t i = 0; i < winner_mm.size() && i < rival_mm.size(); ++i) {
     const bool by_winner = winner_mm[i] <= support.inlier_distance_mm;
     const bool by_rival = rival_mm[i] <= support.inlier_distance_mm;

@@ -26,6 +26,7 @@
 // change what is picked. The rival is always another part, and the comparison is between the
 // two parts' surfaces placed in their own registered poses, so a symmetric winner's or
 // rival's pose ambiguity does not count against the decision.
+#include <span>
 #include <vector>
 
 #include "core/modelbase/model_base.hpp"
@@ -84,6 +85,7 @@ struct PlacedCandidate {
   int view = -1;
   RigidTransform T_model_scene;
   double seen_fraction = 1;
+  std::span<const int> part_views;  // the views of its part (part_support.hpp)
 };
 
 struct PartAmbiguity {

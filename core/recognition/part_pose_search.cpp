@@ -121,16 +121,18 @@ constexpr std::size_t kSurfaceSamplePoints = 256;
 
 }  // namespace
 
-int nearest_view(const ModelBase& base, int part, const RigidTransform& T_part_scene) {
+int nearest_view(const ModelBase& base, const PartSearchModel& model,
+                 const RigidTransform& T_part_scene) {
   const Eigen::Vector3d seen_from_part = T_part_scene.rotation * Eigen::Vector3d::UnitZ();
   int nearest = -1;
-  for (std::size_t v = 0; v < base.views.size(); ++v) {
-    const ModelBaseView& view = base.views[v];
-    if (view.part_index != part) continue;
-    if (nearest < 0 ||
-        view.direction_part.dot(seen_from_part) >
-            base.views[static_cast<std::size_t>(nearest)].direction_part.dot(seen_from_part))
-      nearest = static_cast<int>(v);
+  double nearest_cosine = 0;
+  for (const int v : model.views) {
+    const double cosine =
+        base.views[static_cast<std::size_t>(v)].direction_part.dot(seen_from_part);
+    if (nearest < 0 || cosine > nearest_cosine) {
+      nearest = v;
+      nearest_cosine = cosine;
+    }
   }
   return nearest;
 }
@@ -196,7 +198,7 @@ std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& sce
 }
 
 std::vector<ViewPoseHypothesis> register_field_hypotheses(
-    const RegistrationPoints& scene, const ModelBase& base, int part, const PartSearchModel& model,
+    const RegistrationPoints& scene, const ModelBase& base, const PartSearchModel& model,
     const std::vector<FieldHypothesis>& hypotheses, const RegistrationParameters& registration,
     const PartPoseSearchParameters& parameters, ModelSurfaces& surfaces) {
   std::vector<ViewPoseHypothesis> best;
@@ -209,7 +211,7 @@ std::vector<ViewPoseHypothesis> register_field_hypotheses(
   short_registration.max_iterations = parameters.refinement_iterations;
   for (const FieldHypothesis& hypothesis : hypotheses) {
     if (!parameters.refinement_gate.passes(scoring, field, hypothesis.T_part_scene)) continue;
-    const int view = nearest_view(base, part, hypothesis.T_part_scene);
+    const int view = nearest_view(base, model, hypothesis.T_part_scene);
     const ModelBaseView& model_view = base.views[static_cast<std::size_t>(view)];
     const RigidTransform T_model_scene = model_view.T_scanner_part * hypothesis.T_part_scene;
     const RegistrationResult refined =
@@ -229,12 +231,12 @@ std::vector<ViewPoseHypothesis> register_field_hypotheses(
 }
 
 std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene,
-                                                 const ModelBase& base, int part,
+                                                 const ModelBase& base,
                                                  const PartSearchModel& model,
                                                  const RegistrationParameters& registration,
                                                  const PartPoseSearchParameters& parameters,
                                                  ModelSurfaces& surfaces) {
-  return register_field_hypotheses(scene, base, part, model,
+  return register_field_hypotheses(scene, base, model,
                                    field_pose_hypotheses(scene, base, model, parameters),
                                    registration, parameters, surfaces);
 }
@@ -257,7 +259,7 @@ std::vector<ViewPoseHypothesis> align_view_starts_in_field(
                     {scoring, parameters.field_iterations, kKeepAll}},
                    hypotheses);
   for (const FieldHypothesis& hypothesis : hypotheses) {
-    const int nearest = nearest_view(base, start_view.part_index, hypothesis.T_part_scene);
+    const int nearest = nearest_view(base, model, hypothesis.T_part_scene);
     best.push_back(
         {nearest,
          base.views[static_cast<std::size_t>(nearest)].T_scanner_part * hypothesis.T_part_scene,

@@ -82,8 +82,11 @@ struct PartPoseSearchParameters {
 // centroids was a tenth of the recognizer's time).
 struct PartSearchModel {
   PartDistanceField field;
-  // Every view of the part that has control points (indices into ModelBase::views) and their
-  // centroid in that view's frame. The pose search puts the scene's centroid on a start view's;
+  // Every view of the part that has control points (indices into ModelBase::views, in base
+  // order) and their centroid in that view's frame. The searches look a part's views up here,
+  // never among the base's: a catalog of hundreds of parts has tens of thousands of views, and
+  // going through them all for every pose tried made a recognition's cost grow with the
+  // catalog. The pose search puts the scene's centroid on a start view's;
   // the resting search on that of the view nearest the vertical (resting_pose_search.hpp),
   // of every view, since a coarse one can be 20 degrees off.
   std::vector<int> views;
@@ -111,8 +114,10 @@ struct FieldHypothesis {
   double truncated_mean_square_mm2 = 0;
 };
 
-// The part's view nearest to the direction the scanner looks from under T_part_scene.
-int nearest_view(const ModelBase& base, int part, const RigidTransform& T_part_scene);
+// The part's view nearest to the direction the scanner looks from under T_part_scene, of
+// those with control points (`model`: the part's); -1 when it has none.
+int nearest_view(const ModelBase& base, const PartSearchModel& model,
+                 const RigidTransform& T_part_scene);
 
 // The search's field stages from the given starts (T_part_scene): all scored, the best
 // field_candidates aligned one step, the best field_aligned of those field_iterations steps;
@@ -164,14 +169,14 @@ std::vector<FieldHypothesis> quick_field_poses(const RegistrationPoints& scene,
 // The search's second half: those poses moved onto the part's views nearest to them,
 // registered there and ranked by that view's fit.
 std::vector<ViewPoseHypothesis> register_field_hypotheses(
-    const RegistrationPoints& scene, const ModelBase& base, int part, const PartSearchModel& model,
+    const RegistrationPoints& scene, const ModelBase& base, const PartSearchModel& model,
     const std::vector<FieldHypothesis>& hypotheses, const RegistrationParameters& registration,
     const PartPoseSearchParameters& parameters, ModelSurfaces& surfaces);
 
 // Both halves. `model`: the part's build_part_search_model.
 // The views' surfaces come from (and stay in) `surfaces`.
 std::vector<ViewPoseHypothesis> search_part_pose(const RegistrationPoints& scene,
-                                                 const ModelBase& base, int part,
+                                                 const ModelBase& base,
                                                  const PartSearchModel& model,
                                                  const RegistrationParameters& registration,
                                                  const PartPoseSearchParameters& parameters,

@@ -6,7 +6,8 @@
 
 namespace cosmos {
 
-int part_surface_distances(const RegistrationPoints& scene, const ModelBase& base, int matched,
+int part_surface_distances(const RegistrationPoints& scene, const ModelBase& base,
+                           std::span<const int> part_views, int matched,
                            const RigidTransform& T_model_scene,
                            const RegistrationParameters& registration,
                            const PartSupportParameters& parameters, ModelSurfaces& surfaces,
@@ -23,11 +24,11 @@ int part_surface_distances(const RegistrationPoints& scene, const ModelBase& bas
   const RigidTransform T_part_scene = view.T_scanner_part.inverse() * T_model_scene;
   const double min_cosine = std::cos(parameters.neighbour_view_angle_deg * std::numbers::pi / 180);
   std::vector<std::pair<double, int>> neighbours;  // (-cosine, view): nearest first
-  for (std::size_t v = 0; v < base.views.size(); ++v) {
-    const ModelBaseView& other = base.views[v];
-    if (static_cast<int>(v) == matched || other.part_index != view.part_index) continue;
-    const double cosine = other.direction_part.dot(view.direction_part);
-    if (cosine >= min_cosine) neighbours.emplace_back(-cosine, static_cast<int>(v));
+  for (const int v : part_views) {
+    if (v == matched) continue;
+    const double cosine =
+        base.views[static_cast<std::size_t>(v)].direction_part.dot(view.direction_part);
+    if (cosine >= min_cosine) neighbours.emplace_back(-cosine, v);
   }
   std::sort(neighbours.begin(), neighbours.end());
   if (neighbours.size() > static_cast<std::size_t>(parameters.max_neighbour_views))
@@ -54,14 +55,15 @@ int part_surface_distances(const RegistrationPoints& scene, const ModelBase& bas
 }
 
 PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBase& base,
-                                 int matched, const RigidTransform& T_model_scene,
+                                 std::span<const int> part_views, int matched,
+                                 const RigidTransform& T_model_scene,
                                  const RegistrationParameters& registration,
                                  const PartSupportParameters& parameters, ModelSurfaces& surfaces) {
   PartSupport support;
   if (scene.size() == 0) return support;
   std::vector<double> nearest_mm;
-  support.views_used = part_surface_distances(scene, base, matched, T_model_scene, registration,
-                                              parameters, surfaces, nearest_mm);
+  support.views_used = part_surface_distances(scene, base, part_views, matched, T_model_scene,
+                                              registration, parameters, surfaces, nearest_mm);
   int inliers = 0;
   double sum_squares = 0;
   for (double d : nearest_mm) {

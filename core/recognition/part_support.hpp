@@ -7,6 +7,7 @@
 // T_matched_scene). A single view misses what the scene sees beyond that view's
 // self-occlusions; the views around it fill that in, so a correct part is judged on its whole
 // visible surface while a wrong one still fits only by chance.
+#include <span>
 #include <vector>
 
 #include "core/modelbase/model_base.hpp"
@@ -45,9 +46,11 @@ struct PartSupport {
 // Each scene point's distance to the part's surface so placed (the nearest over the views
 // that join it; farther than inlier_distance_mm: some value above it, maybe infinity), in
 // `distance_mm`; returns the number of views asked. `matched` indexes ModelBase::views;
-// T_model_scene registers the scene onto it. The views' surfaces come from (and stay in)
-// `surfaces`.
-int part_surface_distances(const RegistrationPoints& scene, const ModelBase& base, int matched,
+// T_model_scene registers the scene onto it; `part_views` are the views of its part (indices
+// into ModelBase::views, in base order; PartSearchModel::views), the only ones asked. The
+// views' surfaces come from (and stay in) `surfaces`.
+int part_surface_distances(const RegistrationPoints& scene, const ModelBase& base,
+                           std::span<const int> part_views, int matched,
                            const RigidTransform& T_model_scene,
                            const RegistrationParameters& registration,
                            const PartSupportParameters& parameters, ModelSurfaces& surfaces,
@@ -55,7 +58,8 @@ int part_surface_distances(const RegistrationPoints& scene, const ModelBase& bas
 
 // The fraction of those within inlier_distance_mm, and their RMS distance.
 PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBase& base,
-                                 int matched, const RigidTransform& T_model_scene,
+                                 std::span<const int> part_views, int matched,
+                                 const RigidTransform& T_model_scene,
                                  const RegistrationParameters& registration,
                                  const PartSupportParameters& parameters, ModelSurfaces& surfaces);
 

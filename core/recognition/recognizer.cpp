@@ -212,9 +212,9 @@ bool Recognizer::refine_free_motion(const ScenePoints& scene_points, ModelSurfac
   if (!start) return false;
   const RegistrationResult again = register_views(scene_points.all, model, *start, fine);
   if (again.status == RegistrationStatus::kInvalidInput) return false;
-  const PartSupport support =
-      measure_part_support(scene_points.all, model_base_, candidate.view, again.T_model_scene,
-                           parameters_.registration, parameters_.support, surfaces);
+  const PartSupport support = measure_part_support(
+      scene_points.all, model_base_, part_search_model(candidate.part).views, candidate.view,
+      again.T_model_scene, parameters_.registration, parameters_.support, surfaces);
   if (!(support.inlier_fraction > candidate.inlier_fraction)) return false;
   candidate.T_model_scene = again.T_model_scene;
   candidate.rms_mm = support.rms_mm;
@@ -314,13 +314,13 @@ void Recognizer::register_candidate(const ScenePoints& scene_points,
   candidate.view = best_view;
   // Most candidates of the pose search are wrong parts: the spread subset tells them apart at
   // a fraction of the cost, and only the plausible ones are measured on every point.
-  PartSupport support =
-      measure_part_support(scene_points.coarse, model_base_, candidate.view, best.T_model_scene,
-                           parameters_.registration, parameters_.support, surfaces);
+  PartSupport support = measure_part_support(
+      scene_points.coarse, model_base_, part_search_model(candidate.part).views, candidate.view,
+      best.T_model_scene, parameters_.registration, parameters_.support, surfaces);
   if (support.inlier_fraction >= parameters_.plausible_support)
-    support =
-        measure_part_support(scene_points.all, model_base_, candidate.view, best.T_model_scene,
-                             parameters_.registration, parameters_.support, surfaces);
+    support = measure_part_support(
+        scene_points.all, model_base_, part_search_model(candidate.part).views, candidate.view,
+        best.T_model_scene, parameters_.registration, parameters_.support, surfaces);
   candidate.registration_status = best.status;
   candidate.T_model_scene = best.T_model_scene;
   candidate.rms_mm = support.rms_mm;

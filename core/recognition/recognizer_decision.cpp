@@ -169,9 +169,11 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
       best->score - rival->score < parameters_.ambiguity.examined_score_margin) {
     result.ambiguity_examined = true;
     result.ambiguity = judge_part_ambiguity(
-        points.all, model_base_, {best->view, best->T_model_scene, best->seen_fraction},
-        {rival->view, rival->T_model_scene, rival->seen_fraction}, parameters_.registration,
-        parameters_.support, parameters_.ambiguity, surfaces);
+        points.all, model_base_,
+        {best->view, best->T_model_scene, best->seen_fraction, part_search_model(best->part).views},
+        {rival->view, rival->T_model_scene, rival->seen_fraction,
+         part_search_model(rival->part).views},
+        parameters_.registration, parameters_.support, parameters_.ambiguity, surfaces);
     if (result.ambiguity.ambiguous) {
       result.part = -1;
       const auto percent = [](double fraction) {

@@ -97,7 +97,7 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
         !field_poses.empty() &&
         field_poses.front().truncated_mean_square_mm2 <= parameters_.convincing_field_fit_mm2;
     const std::vector<ViewPoseHypothesis> hypotheses = register_field_hypotheses(
-        scene_points.all, model_base_, part, part_search_model(part), field_poses,
+        scene_points.all, model_base_, part_search_model(part), field_poses,
         parameters_.registration, parameters_.search, surfaces);
     result.timings.registration_ms += elapsed_ms(stage);
     for (const ViewPoseHypothesis& hypothesis : hypotheses) {
@@ -158,8 +158,7 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
       break;
     }
     if (!resting_poses)
-      for (const ModelBaseView& view : model_base_.views)
-        result.views_examined += view.part_index == part;
+      result.views_examined += static_cast<int>(part_search_model(part).views.size());
     StageClock::time_point stage = StageClock::now();
     std::vector<FieldHypothesis> field_poses =
         resting_poses

@@ -93,7 +93,7 @@ std::string Recognizer::recognize_thin_scene(const RangeImage& scene,
       return "ambiguous between " + name(best.part) + " and " + name(other.part);
   }
   result.part = best.part;
-  result.view = nearest_view(model_base_, best.part, best.T_part_scene);
+  result.view = nearest_view(model_base_, part_search_model(best.part), best.T_part_scene);
   result.T_scanner_part = best.T_part_scene.inverse().normalized();
   result.registration_rms_mm = std::sqrt(best.mean_square_mm2);
   result.inlier_fraction = best.inlier_fraction;

@@ -66,11 +66,12 @@ TEST(PartAmbiguity, PartsThatExplainTheSceneAlikeAreToldApartByTheSurfaceTheScen
   }
   const RegistrationPoints scene = testing::plane_view_points(-6.0);
   ModelSurfaces surfaces(base, ModelSurfaceCacheParameters{});
+  const std::vector<int> winner_views = {0}, rival_views = {1};
   const auto judge = [&](double winner_seen, double rival_seen) {
-    return judge_part_ambiguity(scene, base, {0, RigidTransform::identity(), winner_seen},
-                                {1, RigidTransform::identity(), rival_seen},
-                                RegistrationParameters{}, PartSupportParameters{},
-                                PartAmbiguityParameters{}, surfaces);
+    return judge_part_ambiguity(
+        scene, base, {0, RigidTransform::identity(), winner_seen, winner_views},
+        {1, RigidTransform::identity(), rival_seen, rival_views}, RegistrationParameters{},
+        PartSupportParameters{}, PartAmbiguityParameters{}, surfaces);
   };
   // The winner's view seen at 95 %, the rival's at 45 %: 0.4 of evidence against none.
   const PartAmbiguity decided = judge(0.95, 0.45);

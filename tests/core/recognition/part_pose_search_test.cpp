@@ -77,7 +77,7 @@ TEST_F(PartPoseSearch, FindsTheTruePoseOfRandomPoseScansAndOtherPartsFitWorse) {
     const Scan scene = scan(part, seed);
     ASSERT_GT(scene.points.size(), 100) << seed;
     const std::vector<ViewPoseHypothesis> found =
-        search_part_pose(scene.points, *base_, part, models[static_cast<std::size_t>(part)],
+        search_part_pose(scene.points, *base_, models[static_cast<std::size_t>(part)],
                          parameters.registration, parameters.search, surfaces);
     ASSERT_FALSE(found.empty()) << seed;
     const GroundTruthPose& truth = *scene.image.ground_truth;
@@ -112,7 +112,7 @@ TEST_F(PartPoseSearch, FindsTheTruePoseOfRandomPoseScansAndOtherPartsFitWorse) {
     EXPECT_LT(best_fit_ratio, 1.05) << "seed " << seed << ", " << truth.part;
     const int other = (part + 1) % parts;
     const std::vector<ViewPoseHypothesis> elsewhere =
-        search_part_pose(scene.points, *base_, other, models[static_cast<std::size_t>(other)],
+        search_part_pose(scene.points, *base_, models[static_cast<std::size_t>(other)],
                          parameters.registration, parameters.search, surfaces);
     // Another part fits worse, or so badly that no pose passes the gate at all.
     if (elsewhere.empty()) continue;

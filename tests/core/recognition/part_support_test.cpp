@@ -29,6 +29,7 @@ Eigen::Vector3d direction_at_deg(double angle_deg) {
 // Part 0 seen by view 0 over part x in [-12, 1] (its scanner frame is the part frame) and by
 // view 1 over part x in [-1, 12], 30 degrees away, whose scanner frame is the part shifted by
 // 20 mm in x; part 1 holds a view like view 1 that must never be asked.
+const std::vector<int> kPartZeroViews = {0, 1};
 ModelBase two_view_base(double second_view_angle_deg) {
   ModelBase base;
   base.parts = {{"plate", "plate.off", 24, 24, false, {}, {}},
@@ -78,8 +79,8 @@ RegistrationPoints scene_points(Offset offset_mm) {
 PartSupport support_of(const RegistrationPoints& scene, const ModelBase& base,
                        const PartSupportParameters& parameters = {}) {
   ModelSurfaces surfaces(base, ModelSurfaceCacheParameters{});
-  return measure_part_support(scene, base, 0, RigidTransform::identity(), RegistrationParameters{},
-                              parameters, surfaces);
+  return measure_part_support(scene, base, kPartZeroViews, 0, RigidTransform::identity(),
+                              RegistrationParameters{}, parameters, surfaces);
 }
 
 TEST(PartSupport, CountsThePointsWithinTheInlierDistanceAndTheirRms) {
@@ -125,15 +126,15 @@ TEST(PartSupport, AWrongPoseOrAnEmptySceneIsSupportedByNothing) {
   const ModelBase base = two_view_base(30.0);
   const RegistrationPoints scene = scene_points([](int) { return 0.0; });
   ModelSurfaces surfaces(base, ModelSurfaceCacheParameters{});
-  const PartSupport lifted =
-      measure_part_support(scene, base, 0, {Eigen::Matrix3d::Identity(), {0.0, 0.0, 3.0}},
-                           RegistrationParameters{}, PartSupportParameters{}, surfaces);
+  const PartSupport lifted = measure_part_support(
+      scene, base, kPartZeroViews, 0, {Eigen::Matrix3d::Identity(), {0.0, 0.0, 3.0}},
+      RegistrationParameters{}, PartSupportParameters{}, surfaces);
   EXPECT_EQ(lifted.inlier_fraction, 0.0);
   EXPECT_EQ(lifted.rms_mm, 0.0);
   EXPECT_EQ(lifted.views_used, 2);  // the neighbour was asked, in vain
-  const PartSupport empty =
-      measure_part_support(RegistrationPoints{}, base, 0, RigidTransform::identity(),
-                           RegistrationParameters{}, PartSupportParameters{}, surfaces);
+  const PartSupport empty = measure_part_support(
+      RegistrationPoints{}, base, kPartZeroViews, 0, RigidTransform::identity(),
+      RegistrationParameters{}, PartSupportParameters{}, surfaces);
   EXPECT_EQ(empty.inlier_fraction, 0.0);
   EXPECT_EQ(empty.views_used, 0);
 }
