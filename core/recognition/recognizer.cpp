@@ -287,6 +287,7 @@ void Recognizer::register_candidate(const ScenePoints& scene_points,
   // every control point (ch. 6's estimate is the fine one).
   RegistrationParameters coarse = parameters_.registration;
   coarse.max_iterations = parameters_.coarse_registration_iterations;
+  coarse.min_rejection_distance_mm = parameters_.coarse_min_rejection_distance_mm;
   RegistrationParameters fine = parameters_.registration;
   fine.max_iterations = parameters_.fine_registration_iterations;
   for (const ViewPoseHypothesis& start : starts) {

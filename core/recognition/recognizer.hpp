@@ -88,6 +88,12 @@ struct RecognitionParameters {
   // and the hypotheses give, further passes on the subset changed no decision on the
   // acceptance run's hardest scans, and only cost time.
   int coarse_registration_iterations = 20;
+  // ... rejecting no point nearer than this (registration.min_rejection_distance_mm holds for
+  // the fine passes). A start a few tenths of a millimetre off on a prismatic part converged
+  // onto a pose where one face fits exactly and the others miss by a few tenths: the fine
+  // floor rejects those faces' points, the very ones that would pull the pose right, and the
+  // part explained half of its own scene.
+  double coarse_min_rejection_distance_mm = 0.5;
   int fine_registration_iterations = 10;
   // Verification stops at the first selected view whose part support reaches this: the
   // others cannot beat it by much, and a wrong part rarely explains 90 % of a scene. Below
@@ -201,6 +207,8 @@ struct RecognitionParameters {
     v("registration_gate", registration_gate, "a start that fails it is not registered");
     v("coarse_points", coarse_points, "spread scene points of the coarse passes",
       Range{1, 1000000});
+    v("coarse_min_rejection_distance_mm", coarse_min_rejection_distance_mm,
+      "the coarse passes reject no nearer point, mm", Range{0, 100});
     v("coarse_registration_iterations", coarse_registration_iterations, "coarse passes, at most",
       Range{0, 1000});
     v("fine_registration_iterations", fine_registration_iterations, "passes on all points, at most",

@@ -189,5 +189,34 @@ TEST(ViewRegistration, ReportsDegenerateAndMissingOverlap) {
             1e-6);
 }
 
+// A roof of two faces sloping 1 in 2, the ridge at x = 5 mm, two thirds of it the face on its
+// left: a start moved 0.45 mm along that face fits it exactly and leaves the other face 0.36 mm
+// off. With no point nearer than 0.2 mm rejected, the other face's points are outliers to the
+// face that fits, and nothing pulls the pose back; a floor above their offset keeps them, and
+// they do.
+TEST(ViewRegistration, ARejectionFloorAboveTheOffsetLetsTheOtherFacePullThePoseBack) {
+  RangeImage roof(61, 61, 0.5, 0.5);
+  roof.origin_x_mm = roof.origin_y_mm = -15.0;
+  for (int row = 0; row < roof.height(); ++row)
+    for (int column = 0; column < roof.width(); ++column) {
+      const double x = roof.x_mm(column);
+      roof.z_mm(column, row) = static_cast<float>(5.0 + 0.5 * std::min(x, 10.0 - x));
+    }
+  const auto model = build_registration_points(roof, {}).points;
+  const auto scene = build_registration_points(roof, {.stride_px = 2}).points;
+  const Eigen::Vector3d along_left_face = Eigen::Vector3d(1.0, 0.0, 0.5).normalized();
+  const RigidTransform start{Eigen::Matrix3d::Identity(), 0.45 * along_left_face};
+  RegistrationParameters tight;
+  tight.min_rejection_distance_mm = 0.2;
+  RegistrationParameters wide = tight;
+  wide.min_rejection_distance_mm = 0.5;
+  const double stuck_mm =
+      register_views(scene, model, start, tight).T_model_scene.translation_mm.norm();
+  const double pulled_mm =
+      register_views(scene, model, start, wide).T_model_scene.translation_mm.norm();
+  EXPECT_GT(stuck_mm, 0.3);
+  EXPECT_LT(pulled_mm, 0.05);
+}
+
 }  // namespace
 }  // namespace cosmos::testing
