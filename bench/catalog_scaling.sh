@@ -3,9 +3,11 @@
 # (25: the default catalog; 100: with 75 more CGAL and procedural parts; 251: every part,
 # with the size families of three sizes 10 % apart), builds the model base (once: kept in the
 # output folder and reused while its catalog is unchanged and it loads; --rebuild builds
-# anew, as after a change to the model-base builder), times its loading,
+# anew, as after a change to the model-base builder), times its loading and how long until a
+# first scan is recognized (`cosmos recognize` of one scan: the file read, the recognizer's
+# per-part search models built, one recognition),
 # runs the seeded `cosmos eval` on one thread under /usr/bin/time, and prints the table:
-# parts, base MB and MB per part, build wall and CPU s per part, load s, recognition median / p99 / max ms,
+# parts, base MB and MB per part, build wall and CPU s per part, load s, ready s, recognition median / p99 / max ms,
 # identification, wrong-part rate, size variants told apart, known scans that searched every
 # part, and the eval's peak RSS.
 #
@@ -62,6 +64,11 @@ wall_s() {
     n = split($2, p, ":"); s = 0; for (i = 1; i <= n; ++i) s = s * 60 + p[i]; print s }' "$1"
 }
 
+# The scan the ready time recognizes: a catalog part every base holds, in a random pose.
+ready_scan=$out/ready-scan.tif
+"$cosmos" sim scan --catalog "$full_catalog" --part cow --random-pose --seed "$seed" \
+  --out "$ready_scan" > "$out/ready-scan.log" 2>&1
+
 rows=()
 IFS=, read -r -a size_list <<< "$sizes"
 for n in "${size_list[@]}"; do
@@ -89,15 +96,19 @@ for n in "${size_list[@]}"; do
   build_cpu_s=$(awk -F': ' '/(User|System) time/ {s += $2} END {print s}' "$out/build-$n.time")
   /usr/bin/time -v -o "$out/load-$n.time" "$cosmos" modelbase info "$base" > "$out/info-$n.txt"
   load_s=$(wall_s "$out/load-$n.time")
+  /usr/bin/time -v -o "$out/ready-$n.time" "$cosmos" recognize --modelbase "$base" "$ready_scan" \
+    > "$out/ready-$n.txt"
+  ready_s=$(wall_s "$out/ready-$n.time")
   echo "catalog_scaling: $tests $pose-pose scans of the $n-part base" >&2
   rm -rf "$out/eval-$n"
   /usr/bin/time -v -o "$out/eval-$n.time" "$cosmos" eval --modelbase "$base" --catalog "$catalog" \
     --tests "$tests" --seed "$seed" --pose "$pose" --threads 1 --out "$out/eval-$n" \
     > "$out/eval-$n.log" 2>&1
   rows+=("$(python3 - "$out/eval-$n" "$n" "$(stat -c %s "$base")" "$build_s" "$build_cpu_s" "$load_s" \
+    "$ready_s" \
     "$(max_rss_kb "$out/eval-$n.time")" <<'PY'
 import json, sys
-folder, parts, base_bytes, build_s, build_cpu_s, load_s, rss_kb = sys.argv[1:]
+folder, parts, base_bytes, build_s, build_cpu_s, load_s, ready_s, rss_kb = sys.argv[1:]
 parts = int(parts)
 metrics = json.load(open(f"{folder}/metrics.json"))
 confusions = json.load(open(f"{folder}/confusions.json"))
@@ -111,7 +122,7 @@ mb = int(base_bytes) / 1e6
 def pct(x): return "-" if x is None else f"{100 * x:.2f}"
 print(f"{parts:>5} {mb:>8.1f} {mb / parts:>7.2f} {float(build_s) / parts:>7.1f} "
       f"{float(build_cpu_s) / parts:>7.1f} "
-      f"{float(load_s):>6.2f} {rank(50):>7.1f} {rank(99):>7.1f} {times[-1]:>7.1f} "
+      f"{float(load_s):>6.2f} {float(ready_s):>7.2f} {rank(50):>7.1f} {rank(99):>7.1f} {times[-1]:>7.1f} "
       f"{pct(metrics['identification_rate']):>6} {pct(confusions['wrong_part_rate']):>6} "
       f"{pct(told):>6} {pct(catalog_searched):>6} {int(rss_kb) / 1024:>7.0f}")
 PY
@@ -119,6 +130,6 @@ PY
 done
 
 echo "catalog scaling: $tests $pose-pose scans per catalog, seed $seed, $views views, one recognition thread"
-echo "parts  base_MB MB/part build_s cpu_s load_s  med_ms  p99_ms  max_ms  ident%  wrong% sizes% every% rss_MB"
+echo "parts  base_MB MB/part build_s cpu_s load_s ready_s  med_ms  p99_ms  max_ms  ident%  wrong% sizes% every% rss_MB"
 printf '%s\n' "${rows[@]}"
-echo "(build_s, cpu_s: the base's build, wall and CPU seconds per part, with $build_threads threads; ident%, wrong%: of known scans; sizes%: size variants told apart; every%: known scans that searched every part; rss_MB: the eval's peak)"
+echo "(build_s, cpu_s: the base's build, wall and CPU seconds per part, with $build_threads threads; load_s: the base file read; ready_s: read, the recognizer made, one scan recognized; ident%, wrong%: of known scans; sizes%: size variants told apart; every%: known scans that searched every part; rss_MB: the eval's peak)"
