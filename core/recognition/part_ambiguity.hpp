@@ -60,6 +60,14 @@ struct PartAmbiguityParameters {
   // The rival part, when only verification proposed it, is searched over all its views
   // (part_pose_search.hpp) before the comparison.
   bool search_rival_part = true;
+  // A scene that more than max_uncompared_close_parts parts fit about as closely as a scene
+  // fits its own part (their quick field fits within close_fit_mm2, part_pose_search.hpp),
+  // none of them registered, is rejected as ambiguous: the winner was compared with none of
+  // them. In a catalog of hundreds, a few flat faces of a prismatic part fit dozens of larger
+  // parts, the search registers the first few, and the scene's own part was often not among
+  // them; a correct winner rarely has more than one such part beside it.
+  double close_fit_mm2 = 0.05;
+  int max_uncompared_close_parts = 2;
 
   template <class Visitor>
   void visit(Visitor& v) {
@@ -76,6 +84,10 @@ struct PartAmbiguityParameters {
     v("rival_verifications", rival_verifications,
       "views of other parts verified after a sufficient one", Range{0, 1000});
     v("search_rival_part", search_rival_part, "the rival part's views searched before comparing");
+    v("close_fit_mm2", close_fit_mm2, "a part whose quick field fit is this close fits alike, mm^2",
+      Range{0, 1e6});
+    v("max_uncompared_close_parts", max_uncompared_close_parts,
+      "more such parts never registered: rejected as ambiguous", Range{0, 100000});
   }
 };
 

@@ -332,6 +332,9 @@ struct RecognitionResult {
   // The scene had no fitted surface to register and was searched with its range points
   // (thin_scene.hpp); no candidate is registered then.
   bool thin_scene = false;
+  // The parts whose quick field fit (the search over every part) was within
+  // ambiguity.close_fit_mm2.
+  std::vector<int> close_fitting_parts;
   std::vector<RecognitionCandidate> candidates;  // spectral order
   RecognitionTimings timings;
 };

@@ -156,6 +156,17 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
     result.part = -1;
     return "best candidate's registration residual is too large";
   }
+  const auto uncompared = std::count_if(
+      result.close_fitting_parts.begin(), result.close_fitting_parts.end(), [&](int part) {
+        return std::none_of(
+            result.candidates.begin(), result.candidates.end(),
+            [part](const RecognitionCandidate& c) { return c.part == part && c.registered; });
+      });
+  if (uncompared > parameters_.ambiguity.max_uncompared_close_parts) {
+    result.part = -1;
+    return "ambiguous: " + std::to_string(uncompared) +
+           " parts never compared with the best fit the scene as closely";
+  }
   // Sizes of one shape are told apart by the two-way fit, which the ambiguity test (the scene's
   // points alone) cannot see: a larger size explains a smaller one's scene as well.
   const bool sizes_told_apart =

@@ -86,6 +86,9 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
     std::stable_sort(ranked.begin(), ranked.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
     for (std::size_t k = 0; k < ranked.size(); ++k) parts[k] = ranked[k].second;
+    for (const auto& [fit_mm2, part] : ranked)
+      if (fit_mm2 <= parameters_.ambiguity.close_fit_mm2)
+        result.close_fitting_parts.push_back(part);
     result.timings.selection_ms += elapsed_ms(stage);
   }
   // Registers one part's field poses; true when one explains enough to end the search.

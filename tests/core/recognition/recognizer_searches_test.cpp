@@ -112,6 +112,36 @@ TEST_F(RecognizerOnRegressionBase, TheSearchRegistersAtMostItsBudgetOfParts) {
   EXPECT_GT(most_registered, 2);
 }
 
+// Parts that fit a scene as closely as the winner and were never registered leave the scene
+// ambiguous (ambiguity.close_fit_mm2, max_uncompared_close_parts). Here every part whose quick
+// fit is finite counts as close and the search registers one part: a scan the search over every
+// part answers has the others uncompared, and is rejected once none may be; allowed a hundred,
+// the same scan is identified.
+TEST_F(RecognizerOnRegressionBase, PartsFittingAsCloselyButNeverComparedLeaveTheSceneAmbiguous) {
+  RecognitionParameters strict;
+  strict.registered_parts = 1;
+  strict.ambiguity.close_fit_mm2 = 1e6;
+  strict.ambiguity.max_uncompared_close_parts = 0;
+  RecognitionParameters lenient = strict;
+  lenient.ambiguity.max_uncompared_close_parts = 100;
+  const Recognizer rejecting(*base_, CosmosParameters{}, strict);
+  const Recognizer naming(*base_, CosmosParameters{}, lenient);
+  int rejected_as_uncompared = 0;
+  for (std::uint64_t seed = 131; seed < 141; ++seed) {
+    const std::string& name = base_->parts[static_cast<std::size_t>(seed % 5)].name;
+    const RangeImage image = far_half_cut(name, seed);
+    const RecognitionResult with = rejecting.recognize(image);
+    const RecognitionResult without = naming.recognize(image);
+    EXPECT_EQ(with.close_fitting_parts, without.close_fitting_parts) << seed;
+    if (with.reason.find("never compared") == std::string::npos) continue;
+    ++rejected_as_uncompared;
+    EXPECT_EQ(with.status, RecognitionStatus::kRejected) << seed;
+    EXPECT_GE(with.close_fitting_parts.size(), 2u) << seed;
+    EXPECT_EQ(without.reason.find("never compared"), std::string::npos) << seed;
+  }
+  EXPECT_GE(rejected_as_uncompared, 2);
+}
+
 // A candidate from the §5.2 selection (not from a search nor the vote index).
 bool from_selected_view(const RecognitionCandidate& candidate) {
   return !candidate.from_pose_search && !candidate.from_resting_search &&
