@@ -80,6 +80,9 @@ std::string parameters_markdown() {
   base_sections("grouping", build.grouping, "view clusters per part (§4.4.2)");
   base_sections("resting", build.resting,
                 "each part's stable resting poses on the belt (sim/part_pose.hpp)");
+  base_sections("field", build.field,
+                "the voxels of each part's surface, its pose-search distance field "
+                "(core/registration/part_surface_voxels.hpp)");
 
   text.append(
       "\n## Recognition\n\n"

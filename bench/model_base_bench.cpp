@@ -78,7 +78,7 @@ void BM_LoadRealModelBase(benchmark::State& state) {
     std::vector<PartSearchModel> models;
     field_bytes = 0;
     for (int part = 0; part < static_cast<int>(parts); ++part) {
-      models.push_back(build_part_search_model(base, part, PartDistanceFieldParameters{}));
+      models.push_back(build_part_search_model(base, part));
       field_bytes += models.back().field.memory_bytes();
     }
     malloc_trim(0);

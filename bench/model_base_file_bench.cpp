@@ -74,7 +74,8 @@ fs::path synthetic_base_file(int mean_points) {
   ModelBase base;
   base.parameters_text = "{}\n";
   for (int part = 0; part < kParts; ++part) {
-    base.parts.push_back({"part" + std::to_string(part), "part.off", 100, 120, false, {}, {}});
+    base.parts.push_back(
+        {"part" + std::to_string(part), "part.off", 100, 120, false, {}, {}, {}, {}});
     for (int v = 0; v < kViewsPerPart; ++v) {
       ModelBaseView view;
       view.part_index = part;

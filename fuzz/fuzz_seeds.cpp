@@ -13,6 +13,7 @@
 
 #include "core/io/model_base_file.hpp"
 #include "core/io/range_image_file.hpp"
+#include "core/modelbase/part_surface_summary.hpp"
 #include "core/representation/cosmos_pipeline.hpp"
 #include "realtime/lcm/lcm_codec.hpp"
 #include "realtime/lcm/lcm_message_conversion.hpp"
@@ -133,8 +134,8 @@ void model_base_seeds(const fs::path& corpus, const fs::path& scratch) {
   cosmos::ModelBase base;
   base.catalog_hash = "fuzz";
   base.parameters_text = "cosmos.fit.window_size: 5\n";
-  base.parts = {{"relief", "relief.off", 30, 32, false, {}, {}},
-                {"tilted", "tilted.off", 30, 33, true, {}, {}}};
+  base.parts = {{"relief", "relief.off", 30, 32, false, {}, {}, {}, {}},
+                {"tilted", "tilted.off", 30, 33, true, {}, {}, {}, {}}};
   base.parts[0].resting_poses = {{Eigen::Matrix3d::Identity(), 4, 0.75}};
   base.parts[0].hull_vertices_mm = {{-15, -15, -4}, {15, -15, -4}, {0, 15, 6}};
   const cosmos::CosmosParameters parameters;
@@ -153,6 +154,7 @@ void model_base_seeds(const fs::path& corpus, const fs::path& scratch) {
     base.views.push_back(std::move(view));
   }
   base.clusters = {{0, {0, 1}, {}}, {1, {2}, {}}};
+  cosmos::summarize_part_surfaces(base, {});
   const fs::path file = scratch / "seed.cmb";
   cosmos::write_model_base(base, file);
   write_seed(corpus, "model_base", "relief.payload",

@@ -114,9 +114,10 @@ Offset<fb::View> encode_view(FlatBufferBuilder& b, const ModelBaseView& view,
   const auto registration = encode_registration(b, view, cofactors);
   const fb::Vec3 direction = vec3(view.direction_part);
   const fb::Transform T_scanner_part = transform(view.T_scanner_part);
+  const fb::Vec3 centroid = vec3(view.control_point_centroid_mm);
   return fb::CreateView(b, view.part_index, view.view_index, &direction, &T_scanner_part,
                         patch_vector, gauss_vector, view.cosmos.visible_area_mm2, moments,
-                        registration);
+                        registration, &centroid);
 }
 
 }  // namespace
@@ -124,8 +125,9 @@ Offset<fb::View> encode_view(FlatBufferBuilder& b, const ModelBaseView& view,
 std::size_t estimated_payload_bytes(const ModelBase& base) {
   std::size_t bytes = 4096 + base.catalog_hash.size() + base.parameters_text.size();
   for (const ModelPart& part : base.parts)
-    bytes += 128 + part.name.size() + part.mesh.size() + 96 * part.resting_poses.size() +
-             32 * part.hull_vertices_mm.size();
+    bytes += 256 + part.name.size() + part.mesh.size() + 96 * part.resting_poses.size() +
+             32 * part.hull_vertices_mm.size() + part.surface_voxels.occupied_runs.size() +
+             32 * part.surface_sample_mm.size();
   for (const ViewCluster& cluster : base.clusters) bytes += 160 + 4 * cluster.views.size();
   for (const ModelBaseView& view : base.views) {
     const bool packed = packed_is_set(view.registration_packed);
@@ -157,8 +159,17 @@ void encode_model_base(const ModelBase& base, FlatBufferBuilder& b) {
     std::vector<fb::Vec3> hull;
     for (const Eigen::Vector3d& vertex : part.hull_vertices_mm) hull.push_back(vec3(vertex));
     const auto hull_vector = b.CreateVectorOfStructs(hull);
+    const PartSurfaceVoxels& voxels = part.surface_voxels;
+    const auto runs = b.CreateVector(voxels.occupied_runs);
+    const fb::Vec3 origin = vec3(voxels.origin_mm);
+    const auto surface_voxels =
+        fb::CreateSurfaceVoxels(b, &origin, voxels.voxel_mm, voxels.size[0], voxels.size[1],
+                                voxels.size[2], voxels.occupied_voxels, runs);
+    std::vector<fb::Vec3> sample;
+    for (const Eigen::Vector3d& point : part.surface_sample_mm) sample.push_back(vec3(point));
+    const auto sample_vector = b.CreateVectorOfStructs(sample);
     parts.push_back(fb::CreatePart(b, name, mesh, part.size_mm, part.diameter_mm, part.symmetric,
-                                   resting_vector, hull_vector));
+                                   resting_vector, hull_vector, surface_voxels, sample_vector));
   }
   const auto part_vector = b.CreateVector(parts);
   std::vector<Offset<fb::View>> views;
@@ -286,6 +297,22 @@ std::optional<std::string> decode_registration(const fb::RegistrationPoints* in,
   return std::nullopt;
 }
 
+std::optional<std::string> decode_surface_voxels(const fb::SurfaceVoxels* in,
+                                                 PartSurfaceVoxels& out, const std::string& where) {
+  if (!in) return where + ": no surface voxels table";
+  out.origin_mm = vec3(in->origin_mm());
+  out.voxel_mm = in->voxel_mm();
+  out.size = {in->size_x(), in->size_y(), in->size_z()};
+  out.occupied_voxels = in->occupied_voxels();
+  const auto runs = span_of(in->occupied_runs());
+  out.occupied_runs.assign(runs.begin(), runs.end());
+  if (!part_surface_voxels_consistent(out))
+    return where + ": surface voxels do not match their grid (" + std::to_string(out.size[0]) +
+           " x " + std::to_string(out.size[1]) + " x " + std::to_string(out.size[2]) + " voxels, " +
+           std::to_string(out.occupied_voxels) + " occupied)";
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::size_t payload_bytes,
@@ -316,6 +343,8 @@ std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::s
               p->diameter_mm(),
               p->symmetric(),
               {},
+              {},
+              {},
               {}};
       if (const auto* resting = p->resting_poses())
         for (std::size_t r = 0; r < resting->size(); ++r) {
@@ -328,6 +357,14 @@ std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::s
         for (std::size_t k = 0; k < hull->size(); ++k) {
           const fb::Vec3 vertex = struct_at(*hull, k);
           part.hull_vertices_mm.push_back(vec3(&vertex));
+        }
+      if (auto error = decode_surface_voxels(p->surface_voxels(), part.surface_voxels,
+                                             "part " + std::to_string(out.parts.size() - 1)))
+        return error;
+      if (const auto* sample = p->surface_sample_mm())
+        for (std::size_t k = 0; k < sample->size(); ++k) {
+          const fb::Vec3 point = struct_at(*sample, k);
+          part.surface_sample_mm.push_back(vec3(&point));
         }
     }
   }
@@ -344,6 +381,7 @@ std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::s
       view_out.view_index = view.view_index();
       view_out.direction_part = vec3(view.direction_part());
       view_out.T_scanner_part = transform(view.t_scanner_part());
+      view_out.control_point_centroid_mm = vec3(view.control_point_centroid_mm());
       view_out.cosmos = decode_cosmos(view);
       if (auto error = decode_moments(view.moments(), view_out.moments, view_label(v)))
         return error;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/registration/packed_registration_points.hpp"
+#include "core/registration/part_surface_voxels.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/representation/cosmos_view.hpp"
 #include "core/representation/shape_spectrum.hpp"
@@ -35,6 +36,11 @@ struct ModelPart {
   std::vector<RestingPose> resting_poses;  // most likely first
   // The corners of the part's convex hull: its lowest point in any pose.
   std::vector<Eigen::Vector3d> hull_vertices_mm;
+  // Of its views' control points, all in the part frame: the voxels they occupy (what the
+  // pose search's distance field is built from) and an even sample of them (what a pose must
+  // not place over measured belt). part_surface_summary.hpp computes both.
+  PartSurfaceVoxels surface_voxels;
+  std::vector<Eigen::Vector3d> surface_sample_mm;
 
   // The chance the kept resting poses cover: below 1 when unlikely ones were left out.
   double resting_coverage() const {
@@ -57,6 +63,13 @@ struct ModelBaseView {
   // then empty, and the recognizer unpacks (unpack_registration_points) only the candidate
   // views of §5.2. write_model_base packs `registration` when this one is empty.
   PackedRegistrationPoints registration_packed;
+  // The mean of its control points, in the view's frame (zero without any): where the pose
+  // search puts a scene's centroid (part_surface_summary.hpp computes it).
+  Eigen::Vector3d control_point_centroid_mm = Eigen::Vector3d::Zero();
+
+  int control_point_count() const {
+    return registration.size() > 0 ? registration.size() : registration_packed.size();
+  }
 };
 
 // View indices follow the view sphere's fixed order (sim/view_sphere.hpp, two subdivisions:
@@ -76,7 +89,8 @@ struct ModelBase {
   // Raised whenever what a build writes changes (layout or content), so that caches and
   // readers refuse or rebuild what an older build wrote. 2: registration streams
   // (docs/architecture.md), and no patch without pixels. 3: the parts' resting poses and hulls.
-  static constexpr std::uint32_t kFormatVersion = 3;
+  // 4: the parts' surface voxels and samples, the views' control-point centroids.
+  static constexpr std::uint32_t kFormatVersion = 4;
   std::string catalog_hash;     // content hash of the catalog and its meshes
   std::string parameters_text;  // every COSMOS/scanner/grouping parameter, canonical text
   std::vector<ModelPart> parts;

@@ -133,6 +133,20 @@ void check_registration(RangeCheck& check, const std::string& where,
   }
 }
 
+// The grid's size and its runs are checked where it is read (part_surface_voxels_consistent);
+// here where it lies: every voxel centre within the coordinate bound.
+void check_surface_voxels(RangeCheck& check, const std::string& where,
+                          const PartSurfaceVoxels& voxels) {
+  if (voxels.empty()) return;
+  const ModelBaseRanges& ranges = check.ranges();
+  check.coordinates(where, "surface voxels origin_mm", voxels.origin_mm);
+  check.between(where, "surface voxel_mm", voxels.voxel_mm, 1e-6, ranges.max_spacing_mm);
+  const Eigen::Vector3d far_corner_mm =
+      voxels.origin_mm +
+      voxels.voxel_mm * Eigen::Vector3d(voxels.size[0], voxels.size[1], voxels.size[2]);
+  check.coordinates(where, "surface voxels far corner", far_corner_mm);
+}
+
 void check_moments(RangeCheck& check, const std::string& where, const MomentVector& moments) {
   for (std::size_t m = 0; m < moments.size(); ++m)
     check.finite(where, "moment " + std::to_string(m + 1), moments[m]);
@@ -157,6 +171,10 @@ std::optional<std::string> model_base_out_of_range(const ModelBase& base,
     for (std::size_t k = 0; k < base.parts[p].hull_vertices_mm.size(); ++k)
       check.coordinates(where, "hull vertex " + std::to_string(k),
                         base.parts[p].hull_vertices_mm[k]);
+    check_surface_voxels(check, where, base.parts[p].surface_voxels);
+    for (std::size_t k = 0; k < base.parts[p].surface_sample_mm.size(); ++k)
+      check.coordinates(where, "surface sample point " + std::to_string(k),
+                        base.parts[p].surface_sample_mm[k]);
   }
   for (std::size_t v = 0; v < base.views.size() && !check.failed(); ++v) {
     const ModelBaseView& view = base.views[v];
@@ -167,6 +185,7 @@ std::optional<std::string> model_base_out_of_range(const ModelBase& base,
     check_cosmos(check, where, view.cosmos);
     check_moments(check, where, view.moments);
     check_registration(check, where, view.registration_packed);
+    check.coordinates(where, "control_point_centroid_mm", view.control_point_centroid_mm);
   }
   for (std::size_t c = 0; c < base.clusters.size() && !check.failed(); ++c)
     check_moments(check, "cluster " + std::to_string(c), base.clusters[c].centroid);

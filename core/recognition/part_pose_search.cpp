@@ -115,10 +115,6 @@ std::vector<ViewPoseHypothesis> distinct_hypotheses(const ModelBase& base,
   return distinct;
 }
 
-// Points in PartSearchModel::surface_sample_mm, about: enough that a few pixels of a
-// silhouette do not decide a fraction, few enough to check every quick pose of every part.
-constexpr std::size_t kSurfaceSamplePoints = 256;
-
 }  // namespace
 
 int nearest_view(const ModelBase& base, const PartSearchModel& model,
@@ -137,32 +133,24 @@ int nearest_view(const ModelBase& base, const PartSearchModel& model,
   return nearest;
 }
 
-PartSearchModel build_part_search_model(const ModelBase& base, int part,
-                                        const PartDistanceFieldParameters& parameters) {
+PartSearchModel build_part_search_model(const ModelBase& base, int part) {
   PartSearchModel model;
   bool has_coarse_views = false;
   for (const ModelBaseView& view : base.views)
     has_coarse_views |= view.part_index == part && is_once_subdivided_view(view.view_index);
-  std::vector<Eigen::Vector3d> points_part_mm;
   for (std::size_t v = 0; v < base.views.size(); ++v) {
     const ModelBaseView& view = base.views[v];
-    if (view.part_index != part) continue;
-    const ModelSurface surface(view);
-    const Eigen::Matrix3Xd& position = surface.points().position_mm;
-    if (position.cols() == 0) continue;
-    const RigidTransform T_part_view = view.T_scanner_part.inverse();
-    for (Eigen::Index i = 0; i < position.cols(); ++i)
-      points_part_mm.push_back(T_part_view.apply(position.col(i)));
+    if (view.part_index != part || view.control_point_count() == 0) continue;
     if (!has_coarse_views || is_once_subdivided_view(view.view_index))
       model.start_views.push_back(model.views.size());
     model.views.push_back(static_cast<int>(v));
-    model.view_centroid_mm.push_back(position.rowwise().mean());
+    model.view_centroid_mm.push_back(view.control_point_centroid_mm);
   }
-  model.field = PartDistanceField(points_part_mm, parameters);
-  const std::size_t step = std::max<std::size_t>(1, points_part_mm.size() / kSurfaceSamplePoints);
-  model.surface_sample_mm.resize(3, static_cast<Eigen::Index>(points_part_mm.size() / step));
-  for (Eigen::Index i = 0; i < model.surface_sample_mm.cols(); ++i)
-    model.surface_sample_mm.col(i) = points_part_mm[static_cast<std::size_t>(i) * step];
+  const ModelPart& model_part = base.parts[static_cast<std::size_t>(part)];
+  model.field = PartDistanceField(model_part.surface_voxels);
+  model.surface_sample_mm.resize(3, static_cast<Eigen::Index>(model_part.surface_sample_mm.size()));
+  for (std::size_t i = 0; i < model_part.surface_sample_mm.size(); ++i)
+    model.surface_sample_mm.col(static_cast<Eigen::Index>(i)) = model_part.surface_sample_mm[i];
   return model;
 }
 

@@ -77,9 +77,9 @@ struct PartPoseSearchParameters {
   }
 };
 
-// What the search needs of one part beyond the base: its distance field and, per view, the
-// centroid of its control points (unpacking 80 views per part and search only to take their
-// centroids was a tenth of the recognizer's time).
+// What the search needs of one part, gathered from the base: its distance field (the
+// distance transform of the part's stored surface voxels, part_surface_summary.hpp) and, per
+// view, the centroid of its control points.
 struct PartSearchModel {
   PartDistanceField field;
   // Every view of the part that has control points (indices into ModelBase::views, in base
@@ -99,8 +99,7 @@ struct PartSearchModel {
   Eigen::Matrix3Xd surface_sample_mm;
 };
 
-PartSearchModel build_part_search_model(const ModelBase& base, int part,
-                                        const PartDistanceFieldParameters& parameters);
+PartSearchModel build_part_search_model(const ModelBase& base, int part);
 
 struct ViewPoseHypothesis {
   int view = -1;  // index into ModelBase::views

@@ -64,7 +64,7 @@ Recognizer::Recognizer(const ModelBase& model_base, const CosmosParameters& cosm
       parameters_(parameters),
       selector_(model_base, parameters.selection) {
   for (int part = 0; part < static_cast<int>(model_base.parts.size()); ++part)
-    part_search_models_.push_back(build_part_search_model(model_base, part, parameters.field));
+    part_search_models_.push_back(build_part_search_model(model_base, part));
   if (parameters_.vote_index.enabled)
     patch_pair_table_ = PatchPairTable(model_base, parameters_.vote_index.key);
   for (int part = 0; part < static_cast<int>(model_base.parts.size()); ++part)

@@ -152,7 +152,6 @@ struct RecognitionParameters {
   // all, with the part that does explain it nearly always among the first few in quick order.
   int registered_parts = 6;
   PartPoseSearchParameters search;
-  PartDistanceFieldParameters field;
   // Decision thresholds (rejection as unknown part).
   double min_inlier_fraction = 0.6;
   // A registered candidate whose support on the coarse points is below this is judged on
@@ -235,7 +234,6 @@ struct RecognitionParameters {
       "parts the search registers in all, at most (besides an explaining part's rival)",
       Range{1, 100000});
     v("search", search, "the pose search over a part's views");
-    v("field", field, "the parts' distance fields");
     v("min_inlier_fraction", min_inlier_fraction, "less support: rejected as unknown", Range{0, 1});
     v("plausible_support", plausible_support, "below this on the coarse points: judged on them",
       Range{0, 1});

@@ -12,6 +12,24 @@
 
 namespace cosmos {
 
+// `cells` cells in order, cell k occupied when occupied(k).
+template <class IsOccupied>
+std::vector<std::uint8_t> encode_occupied_cell_runs(std::size_t cells, IsOccupied&& occupied) {
+  BitWriter runs;
+  std::size_t run = 0;
+  bool in_occupied_run = false;
+  for (std::size_t cell = 0; cell < cells; ++cell) {
+    if (occupied(cell) != in_occupied_run) {
+      runs.put_gamma(static_cast<std::uint32_t>(run + 1));
+      in_occupied_run = !in_occupied_run;
+      run = 0;
+    }
+    ++run;
+  }
+  if (cells > 0) runs.put_gamma(static_cast<std::uint32_t>(run + 1));
+  return runs.finish();
+}
+
 // `cell_point`: per cell its point index, -1 for none.
 std::vector<std::uint8_t> encode_occupied_cell_runs(const std::vector<std::int32_t>& cell_point);
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/registration/occupied_cell_runs.hpp"
+
 namespace cosmos {
 namespace {
 
@@ -45,44 +47,19 @@ void squared_distance_1d(float* f, int n, std::ptrdiff_t step, std::vector<float
 }  // namespace
 
 PartDistanceField::PartDistanceField(const std::vector<Eigen::Vector3d>& points_part_mm,
-                                     const PartDistanceFieldParameters& parameters) {
-  if (!(parameters.voxel_mm > 0) || !std::isfinite(parameters.margin_mm) ||
-      parameters.margin_mm < 0)
+                                     const PartDistanceFieldParameters& parameters)
+    : PartDistanceField(part_surface_voxels(points_part_mm, parameters)) {}
+
+PartDistanceField::PartDistanceField(const PartSurfaceVoxels& surface) {
+  // The runs are decoded (and checked) below, once the grid is known to be bounded.
+  if (surface.empty() || !(surface.voxel_mm > 0) || !std::isfinite(surface.voxel_mm) ||
+      !surface.origin_mm.allFinite() || surface.voxel_count() > static_cast<double>(kMaxVoxels))
     return;
-  // A non-finite point has no voxel; the model-base reader refuses such files, so only a
-  // base built in memory from damaged data could hold one.
-  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d high = -low;
-  std::size_t finite_points = 0;
-  for (const Eigen::Vector3d& p : points_part_mm) {
-    if (!p.allFinite()) continue;
-    low = low.cwiseMin(p);
-    high = high.cwiseMax(p);
-    ++finite_points;
-  }
-  if (finite_points == 0) return;
-  const Eigen::Vector3d extent_mm =
-      (high - low).array() + 2 * parameters.margin_mm;  // may overflow to infinity
-  if (!extent_mm.allFinite()) return;
-  // The grid is bounded whatever the points: a part far larger than any real one gets
-  // coarser voxels, never an unbounded allocation (the voxel count is computed in double
-  // so that it cannot overflow).
-  voxel_mm_ = parameters.voxel_mm;
-  const auto voxel_count = [&](double voxel_mm) {
-    double count = 1;
-    for (int axis = 0; axis < 3; ++axis)
-      count *= std::max(2.0, 1 + std::ceil(extent_mm[axis] / voxel_mm));
-    return count;
-  };
-  const double limit = static_cast<double>(kMaxVoxels);
-  if (voxel_count(voxel_mm_) > limit)
-    voxel_mm_ *= std::cbrt(voxel_count(voxel_mm_) / limit);  // about right, then a few steps
-  while (voxel_count(voxel_mm_) > limit) voxel_mm_ *= 1.25;
+  if (*std::min_element(surface.size.begin(), surface.size.end()) < 2) return;
+  std::copy(surface.size.begin(), surface.size.end(), size_);
+  voxel_mm_ = surface.voxel_mm;
   voxels_per_mm_ = 1.0 / voxel_mm_;
-  origin_mm_ = low - Eigen::Vector3d::Constant(parameters.margin_mm);
-  // At least 2 voxels per axis: the interpolation reads each base voxel's +1 neighbours.
-  for (int axis = 0; axis < 3; ++axis)
-    size_[axis] = std::max(2, 1 + static_cast<int>(std::ceil(extent_mm[axis] / voxel_mm_)));
+  origin_mm_ = surface.origin_mm;
   const std::size_t voxels = static_cast<std::size_t>(size_[0]) * size_[1] * size_[2];
   // Far, in squared voxels: more than any distance in the grid, small enough to add to.
   const float far = 4.0f * static_cast<float>(size_[0] + size_[1] + size_[2]) *
@@ -91,13 +68,15 @@ PartDistanceField::PartDistanceField(const std::vector<Eigen::Vector3d>& points_
   const auto voxel_index = [&](int x, int y, int z) {
     return (static_cast<std::size_t>(z) * size_[1] + y) * size_[0] + x;
   };
-  const auto voxel_of = [&](double u, int axis) {
-    return static_cast<int>(std::clamp(std::lround(u), 0L, static_cast<long>(size_[axis] - 1)));
-  };
-  for (const Eigen::Vector3d& p : points_part_mm) {
-    if (!p.allFinite()) continue;
-    const Eigen::Vector3d u = (p - origin_mm_) / voxel_mm_;
-    distance_mm[voxel_index(voxel_of(u.x(), 0), voxel_of(u.y(), 1), voxel_of(u.z(), 2))] = 0.0f;
+  const bool consistent = visit_occupied_cell_runs(
+      surface.occupied_runs, voxels, surface.occupied_voxels,
+      [&](std::size_t first, std::size_t end) {
+        std::fill(distance_mm.begin() + static_cast<std::ptrdiff_t>(first),
+                  distance_mm.begin() + static_cast<std::ptrdiff_t>(end), 0.0f);
+      });
+  if (!consistent) {
+    *this = PartDistanceField();
+    return;
   }
   const int longest = std::max({size_[0], size_[1], size_[2]});
   std::vector<float> line(static_cast<std::size_t>(longest));

@@ -19,32 +19,24 @@
 #include <vector>
 
 #include "core/parameter_visitor.hpp"
+#include "core/registration/part_surface_voxels.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/rigid_transform.hpp"
 
 namespace cosmos {
 
-struct PartDistanceFieldParameters {
-  double voxel_mm = 2.0;
-  double margin_mm = 12.0;  // the grid extends this far beyond the points
-
-  template <class Visitor>
-  void visit(Visitor& v) {
-    v("voxel_mm", voxel_mm, "distance field voxel, mm", Range::above(0, 100));
-    v("margin_mm", margin_mm, "the field extends this far beyond the part, mm", Range{0, 1e3});
-  }
-};
-
 class PartDistanceField {
  public:
   PartDistanceField() = default;
-  // `points_part_mm`: the part's surface points in the part frame.
+  // The distance transform of the occupied voxels, on their grid; empty when they are empty
+  // or not consistent (part_surface_voxels_consistent).
+  explicit PartDistanceField(const PartSurfaceVoxels& voxels);
+  // `points_part_mm`: the part's surface points in the part frame (part_surface_voxels).
   PartDistanceField(const std::vector<Eigen::Vector3d>& points_part_mm,
                     const PartDistanceFieldParameters& parameters);
 
-  // The grid never holds more voxels (16 Mi of 2 bytes, 32 MiB; a 500 mm part at the default
-  // 2 mm voxel fits): points spread wider get a coarser voxel than asked for.
-  static constexpr std::size_t kMaxVoxels = std::size_t{1} << 24;
+  // At most kMaxSurfaceVoxels of 2 bytes: 32 MiB.
+  static constexpr std::size_t kMaxVoxels = kMaxSurfaceVoxels;
 
   bool empty() const { return distance_units_.empty(); }
   std::size_t voxel_count() const { return distance_units_.size(); }

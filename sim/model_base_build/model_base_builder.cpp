@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "core/modelbase/part_surface_summary.hpp"
 #include "core/representation/cosmos_pipeline.hpp"
 #include "sim/convex_hull.hpp"
 #include "sim/mesh.hpp"
@@ -163,6 +164,19 @@ void run_jobs(BuildJobs& jobs, int threads, const ModelBaseProgress& progress) {
   if (jobs.error) std::rethrow_exception(jobs.error);
 }
 
+// Each part on one thread: a part's summary reads and writes only that part and its views.
+void summarize_parts(ModelBase& base, const PartDistanceFieldParameters& field, int threads) {
+  std::atomic<int> next_part{0};
+  const auto work = [&] {
+    for (int part = next_part++; part < static_cast<int>(base.parts.size()); part = next_part++)
+      summarize_part_surface(base, part, field);
+  };
+  std::vector<std::thread> workers;
+  for (int t = 1; t < threads; ++t) workers.emplace_back(work);
+  work();
+  for (std::thread& worker : workers) worker.join();
+}
+
 }  // namespace
 
 RegistrationPointParameters model_surface_registration_parameters() {
@@ -187,6 +201,8 @@ ModelBase build_model_base(const PartCatalog& catalog, const ScannerParameters& 
             mesh_diameter_mm(meshes.back()),
             entry.symmetric,
             {},
+            {},
+            {},
             {}};
     for (const StableRestingPose& pose : stable_resting_poses(meshes.back(), settings.resting))
       part.resting_poses.push_back({pose.R_belt_part, pose.height_mm, pose.probability});
@@ -207,6 +223,7 @@ ModelBase build_model_base(const PartCatalog& catalog, const ScannerParameters& 
                            base.parts[static_cast<std::size_t>(grouping.failed_part)].name +
                            "' (non-finite moments?)");
   base.clusters = std::move(grouping.clusters);
+  summarize_parts(base, settings.field, threads);
   return base;
 }
 

@@ -2,7 +2,8 @@
 // Builds the model base (ch. 4, Fig. 5.3) from the part catalog: every part seen from the view
 // directions of §4.5 through sim's ModelViewRenderer (the simulated scanner, profile mode) and
 // the same COSMOS code as live scans (analyze_view, build_registration_points), then each
-// part's views grouped into clusters (§4.4.2).
+// part's views grouped into clusters (§4.4.2) and its whole surface summarized for the pose
+// search (core/modelbase/part_surface_summary.hpp).
 //
 // Parallel and deterministic: worker threads pull (part, view) jobs from an atomic counter,
 // each result lands in its job's slot, and everything after (grouping, the file) runs in job
@@ -12,6 +13,7 @@
 #include "core/cosmos_parameters.hpp"
 #include "core/modelbase/model_base.hpp"
 #include "core/modelbase/view_grouping.hpp"
+#include "core/registration/part_surface_voxels.hpp"
 #include "core/registration/registration_points.hpp"
 #include "scanner/conditioning_parameters.hpp"
 #include "scanner/scanner_model.hpp"
@@ -45,6 +47,9 @@ struct ModelBaseBuildSettings {
   ConditioningParameters conditioning;
   // The stable poses each part's record holds (sim/part_pose.hpp).
   RestingPoseParameters resting;
+  // The voxels of each part's surface, from which a recognizer builds the part's distance
+  // field (core/modelbase/part_surface_summary.hpp).
+  PartDistanceFieldParameters field;
 };
 
 struct ModelBaseBuildProgress {

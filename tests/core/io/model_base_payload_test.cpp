@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/io/model_base_generated.h"
+#include "core/modelbase/part_surface_summary.hpp"
 #include "tests/core/hand_made_view.hpp"
 
 namespace cosmos {
@@ -38,8 +39,8 @@ ModelBase small_base() {
   ModelBase base;
   base.catalog_hash = "feedc0ffee";
   base.parameters_text = "{\"cosmos\":{\"fit\":{\"window_size\":5}}}";
-  base.parts = {{"cow", "cow.off", 120, 131.5, false, {}, {}},
-                {"spool", "spool.off", 70, 74.25, true, {}, {}}};
+  base.parts = {{"cow", "cow.off", 120, 131.5, false, {}, {}, {}, {}},
+                {"spool", "spool.off", 70, 74.25, true, {}, {}, {}, {}}};
   base.parts[0].resting_poses = {{rotation_from_xyz_angles_deg(180, 0, 0), 21.5, 0.625},
                                  {rotation_from_xyz_angles_deg(90, 0, 0), 30.25, 0.375}};
   base.parts[0].hull_vertices_mm = {{-60, -20, -21.5}, {60, 25, 30}, {0, -30, 5}};
@@ -58,6 +59,7 @@ ModelBase small_base() {
   base.clusters = {{0, {0, 1}, {}}, {1, {2}, {}}};
   base.clusters[0].centroid.fill(0.125);
   base.clusters[1].centroid.fill(0.5);
+  summarize_part_surfaces(base, {});
   return base;
 }
 
@@ -127,6 +129,17 @@ TEST(ModelBasePayload, DecodesWhatWasEncoded) {
   EXPECT_EQ(view.cosmos.patches[1].neighbors[2].patch, 3);
   EXPECT_EQ(view.cosmos.gauss_map.size(), written.cosmos.gauss_map.size());
   EXPECT_EQ(view.registration_packed.size(), written.registration.size());
+  EXPECT_EQ(view.control_point_centroid_mm, written.control_point_centroid_mm);
+  const PartSurfaceVoxels &voxels = read.parts[0].surface_voxels,
+                          &written_voxels = base.parts[0].surface_voxels;
+  EXPECT_GT(voxels.occupied_voxels, 0u);
+  EXPECT_EQ(voxels.occupied_voxels, written_voxels.occupied_voxels);
+  EXPECT_EQ(voxels.occupied_runs, written_voxels.occupied_runs);
+  EXPECT_EQ(voxels.size, written_voxels.size);
+  EXPECT_EQ(voxels.origin_mm, written_voxels.origin_mm);
+  EXPECT_EQ(voxels.voxel_mm, written_voxels.voxel_mm);
+  EXPECT_FALSE(read.parts[0].surface_sample_mm.empty());
+  EXPECT_EQ(read.parts[0].surface_sample_mm, base.parts[0].surface_sample_mm);
   ASSERT_EQ(read.clusters.size(), 2u);
   EXPECT_EQ(read.clusters[0].views, (std::vector<int>{0, 1}));
   EXPECT_EQ(read.clusters[1].centroid, base.clusters[1].centroid);
@@ -177,8 +190,9 @@ TEST(ModelBasePayload, StructVectorsOffTheirElementsAlignmentAreReadAsWritten) {
     b.StartVector(1, sizeof(std::uint32_t));
     b.PushBytes(reinterpret_cast<const std::uint8_t*>(&pose), sizeof pose);
     const flatbuffers::Offset<flatbuffers::Vector<const fb::RestingPose*>> resting(b.EndVector(1));
+    const auto no_voxels = fb::CreateSurfaceVoxels(b);
     const auto part = fb::CreatePart(b, b.CreateString("cow"), b.CreateString("cow.off"), 120,
-                                     131.5, false, resting, hull);
+                                     131.5, false, resting, hull, no_voxels);
     const auto parts = b.CreateVector(std::vector<flatbuffers::Offset<fb::Part>>{part});
     fb::FinishModelBaseBuffer(
         b, fb::CreateModelBase(b, ModelBase::kFormatVersion, b.CreateString("feedc0ffee"),
@@ -214,6 +228,22 @@ TEST(ModelBasePayload, IndicesOutOfTheirRangeAreRefusedNamingWhere) {
               b.clusters[1].views = {2, 0};
             }),
             "cluster 1: view 0 belongs to another part");
+}
+
+TEST(ModelBasePayload, SurfaceVoxelsThatDoNotCoverTheirGridAreRefusedNamingThePart) {
+  const std::string more_than_the_runs =
+      refusal_after([](ModelBase& b) { ++b.parts[1].surface_voxels.occupied_voxels; });
+  EXPECT_EQ(more_than_the_runs.rfind("part 1: surface voxels do not match their grid (", 0), 0u)
+      << more_than_the_runs;
+  const std::string a_grid_too_large = refusal_after([](ModelBase& b) {
+    b.parts[0].surface_voxels.size = {1 << 12, 1 << 12, 2};
+  });
+  EXPECT_EQ(
+      a_grid_too_large.rfind("part 0: surface voxels do not match their grid (4096 x 4096 x 2", 0),
+      0u)
+      << a_grid_too_large;
+  EXPECT_EQ(refusal_after([](ModelBase& b) { b.parts[0].surface_sample_mm[3].y() = 1e300; }),
+            "part 0: surface sample point 3.y is 1e+300, expected within +-10000");
 }
 
 TEST(ModelBasePayload, BytesThatAreNotAPayloadAreRefused) {

@@ -55,10 +55,10 @@ class PartPoseSearch : public ::testing::Test {
     return result;
   }
 
-  static std::vector<PartSearchModel> search_models(const RecognitionParameters& parameters) {
+  static std::vector<PartSearchModel> search_models() {
     std::vector<PartSearchModel> models;
     for (int part = 0; part < static_cast<int>(base_->parts.size()); ++part)
-      models.push_back(build_part_search_model(*base_, part, parameters.field));
+      models.push_back(build_part_search_model(*base_, part));
     return models;
   }
 
@@ -70,7 +70,7 @@ TEST_F(PartPoseSearch, FindsTheTruePoseOfRandomPoseScansAndOtherPartsFitWorse) {
   const RecognitionParameters parameters;
   const int parts = static_cast<int>(base_->parts.size());
   ASSERT_EQ(parts, 5);
-  const std::vector<PartSearchModel> models = search_models(parameters);
+  const std::vector<PartSearchModel> models = search_models();
   ModelSurfaces surfaces(*base_, ModelSurfaceCacheParameters{});
   for (std::uint64_t seed = 101; seed < 111; ++seed) {
     const int part = static_cast<int>(seed % parts);
@@ -128,7 +128,7 @@ TEST_F(PartPoseSearch, FindsTheTruePoseOfRandomPoseScansAndOtherPartsFitWorse) {
 TEST_F(PartPoseSearch, FieldStagesAloneTellTheScansPartFromTheOthers) {
   const RecognitionParameters parameters;
   const int parts = static_cast<int>(base_->parts.size());
-  const std::vector<PartSearchModel> models = search_models(parameters);
+  const std::vector<PartSearchModel> models = search_models();
   int ranked_first = 0, convincing = 0, others_hopeless = 0;
   for (std::uint64_t seed = 101; seed < 111; ++seed) {
     const int part = static_cast<int>(seed % parts);
@@ -167,7 +167,7 @@ TEST_F(PartPoseSearch, FieldStagesAloneTellTheScansPartFromTheOthers) {
 TEST_F(PartPoseSearch, QuickFitPutsTheScansOwnPartFirst) {
   const RecognitionParameters parameters;
   const int parts = static_cast<int>(base_->parts.size());
-  const std::vector<PartSearchModel> models = search_models(parameters);
+  const std::vector<PartSearchModel> models = search_models();
   int ranked_first = 0, ranked_second = 0;
   for (std::uint64_t seed = 101; seed < 111; ++seed) {
     const int part = static_cast<int>(seed % parts);
@@ -201,7 +201,7 @@ TEST_F(PartPoseSearch, QuickFitPutsTheScansOwnPartFirst) {
 // starts are its coarse views.
 TEST_F(PartPoseSearch, TheSearchModelHoldsEveryViewsCentroid) {
   const RecognitionParameters parameters;
-  const PartSearchModel model = build_part_search_model(*base_, 1, parameters.field);
+  const PartSearchModel model = build_part_search_model(*base_, 1);
   std::size_t part_views = 0;
   for (const ModelBaseView& view : base_->views) part_views += view.part_index == 1;
   ASSERT_EQ(model.views.size(), part_views);
@@ -227,7 +227,7 @@ TEST_F(PartPoseSearch, TheSearchModelHoldsEveryViewsCentroid) {
 TEST_F(PartPoseSearch, TheSurfaceSampleLiesOverNoBeltAtTheTruePose) {
   const RecognitionParameters parameters;
   const int parts = static_cast<int>(base_->parts.size());
-  const std::vector<PartSearchModel> models = search_models(parameters);
+  const std::vector<PartSearchModel> models = search_models();
   for (std::uint64_t seed = 101; seed < 106; ++seed) {
     const int part = static_cast<int>(seed % parts);
     const Scan scene = scan(part, seed);
@@ -247,7 +247,7 @@ TEST_F(PartPoseSearch, TheSurfaceSampleLiesOverNoBeltAtTheTruePose) {
 
 TEST_F(PartPoseSearch, QuickFitOfAnEmptySceneHasNoPoses) {
   const RecognitionParameters parameters;
-  const PartSearchModel model = build_part_search_model(*base_, 0, parameters.field);
+  const PartSearchModel model = build_part_search_model(*base_, 0);
   EXPECT_TRUE(quick_field_poses(RegistrationPoints{}, *base_, model, parameters.search,
                                 parameters.catalog_rank)
                   .empty());
@@ -262,7 +262,7 @@ TEST_F(PartPoseSearch, AlignsTheStartsOfAViewFarFromTheTruthOntoTheNearestView) 
   int near_truth = 0, scans = 0;
   for (std::uint64_t seed = 201; seed < 211; ++seed, ++scans) {
     const int part = static_cast<int>(seed % parts);
-    const PartSearchModel model = build_part_search_model(*base_, part, parameters.field);
+    const PartSearchModel model = build_part_search_model(*base_, part);
     const Scan scene = scan(part, seed);
     const GroundTruthPose& truth = *scene.image.ground_truth;
     const Eigen::Vector3d seen_from_part = truth.rotation.transpose() * Eigen::Vector3d::UnitZ();

@@ -112,7 +112,7 @@ TEST(RestingPoseSearch, TheTruePoseOfAPartLyingInAStablePoseIsAmongTheStarts) {
     const ModelPart& model_part = base.parts[static_cast<std::size_t>(part)];
     const PartEntry& entry = catalog.at(model_part.name);
     const TriangleMesh mesh = load_mesh(entry.mesh_path, entry.size_mm);
-    const PartSearchModel model = build_part_search_model(base, part, parameters.field);
+    const PartSearchModel model = build_part_search_model(base, part);
     for (std::size_t pose = 0; pose < 2 && pose < model_part.resting_poses.size(); ++pose) {
       const double turn_rad = (37.0 + 71.0 * part + 113.0 * pose) * kDegree;
       const Eigen::Matrix3d R_belt_part =
