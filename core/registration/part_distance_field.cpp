@@ -52,10 +52,7 @@ PartDistanceField::PartDistanceField(const std::vector<Eigen::Vector3d>& points_
 
 PartDistanceField::PartDistanceField(const PartSurfaceVoxels& surface) {
   // The runs are decoded (and checked) below, once the grid is known to be bounded.
-  if (surface.empty() || !(surface.voxel_mm > 0) || !std::isfinite(surface.voxel_mm) ||
-      !surface.origin_mm.allFinite() || surface.voxel_count() > static_cast<double>(kMaxVoxels))
-    return;
-  if (*std::min_element(surface.size.begin(), surface.size.end()) < 2) return;
+  if (surface.empty() || !part_surface_voxel_grid_bounded(surface)) return;
   std::copy(surface.size.begin(), surface.size.end(), size_);
   voxel_mm_ = surface.voxel_mm;
   voxels_per_mm_ = 1.0 / voxel_mm_;

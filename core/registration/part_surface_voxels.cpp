@@ -67,13 +67,15 @@ PartSurfaceVoxels part_surface_voxels(const std::vector<Eigen::Vector3d>& points
   return voxels;
 }
 
+bool part_surface_voxel_grid_bounded(const PartSurfaceVoxels& voxels) {
+  return voxels.voxel_mm > 0 && std::isfinite(voxels.voxel_mm) && voxels.origin_mm.allFinite() &&
+         *std::min_element(voxels.size.begin(), voxels.size.end()) >= 2 &&
+         voxels.voxel_count() <= static_cast<double>(kMaxSurfaceVoxels);
+}
+
 bool part_surface_voxels_consistent(const PartSurfaceVoxels& voxels) {
   if (voxels.empty()) return voxels.occupied_runs.empty();
-  if (!(voxels.voxel_mm > 0) || !std::isfinite(voxels.voxel_mm) || !voxels.origin_mm.allFinite())
-    return false;
-  for (const int side : voxels.size)
-    if (side < 2) return false;
-  if (voxels.voxel_count() > static_cast<double>(kMaxSurfaceVoxels)) return false;
+  if (!part_surface_voxel_grid_bounded(voxels)) return false;
   return visit_occupied_cell_runs(voxels.occupied_runs,
                                   static_cast<std::size_t>(voxels.voxel_count()),
                                   voxels.occupied_voxels, [](std::size_t, std::size_t) {});

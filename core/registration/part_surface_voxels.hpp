@@ -51,9 +51,12 @@ struct PartSurfaceVoxels {
 PartSurfaceVoxels part_surface_voxels(const std::vector<Eigen::Vector3d>& points_part_mm,
                                       const PartDistanceFieldParameters& parameters);
 
-// Is the grid one part_surface_voxels can make (at least 2 voxels per axis, at most
-// kMaxSurfaceVoxels, a finite origin and a positive voxel) and do the runs cover it exactly
-// with occupied_voxels occupied? An empty set is consistent.
+// Is the grid one part_surface_voxels can make: at least 2 voxels per axis, at most
+// kMaxSurfaceVoxels, a finite origin and a positive voxel? (The runs are not read.)
+bool part_surface_voxel_grid_bounded(const PartSurfaceVoxels& voxels);
+
+// Is the grid bounded and do the runs cover it exactly with occupied_voxels occupied? An
+// empty set is consistent.
 bool part_surface_voxels_consistent(const PartSurfaceVoxels& voxels);
 
 }  // namespace cosmos

@@ -50,6 +50,13 @@ class RecognizerOnRegressionBase : public ::testing::Test {
     return scan_single_part(mesh, name, random_rotation(seed), scanner, ConditioningParameters{});
   }
   static RangeImage far_half_cut(const std::string& name, std::uint64_t seed);
+  // The far-half scans the searches' tests share: seeds 131-140, the base's parts in turn.
+  struct FarHalfCut {
+    std::string name;
+    std::uint64_t seed = 0;
+    RangeImage image;
+  };
+  static std::vector<FarHalfCut> far_half_cuts();
 
   static double degrees(double radians) { return radians * 180 / std::numbers::pi; }
 
@@ -100,6 +107,16 @@ inline RangeImage RecognizerOnRegressionBase::far_half_cut(const std::string& na
       image.belt_seen(column, row) = 1;
     }
   return image;
+}
+
+inline std::vector<RecognizerOnRegressionBase::FarHalfCut>
+RecognizerOnRegressionBase::far_half_cuts() {
+  std::vector<FarHalfCut> cuts;
+  for (std::uint64_t seed = 131; seed < 141; ++seed) {
+    const std::string& name = base_->parts[static_cast<std::size_t>(seed % 5)].name;
+    cuts.push_back({name, seed, far_half_cut(name, seed)});
+  }
+  return cuts;
 }
 
 // Whether the result's winner came from the search over every part with less than

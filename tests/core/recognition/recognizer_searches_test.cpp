@@ -71,9 +71,7 @@ TEST_F(RecognizerOnRegressionBase, SearchedPosesOverTheMeasuredBeltAreDropped) {
   const Recognizer with(*base_, CosmosParameters{}, lenient_parameters);
   const Recognizer without(*base_, CosmosParameters{}, without_rule);
   int contradicted_with = 0, contradicted_without = 0;
-  for (std::uint64_t seed = 131; seed < 141; ++seed) {
-    const std::string& name = base_->parts[static_cast<std::size_t>(seed % 5)].name;
-    const RangeImage image = far_half_cut(name, seed);
+  for (const auto& [name, seed, image] : far_half_cuts()) {
     contradicted_with += accepted_with_view_contradicted(with.recognize(image)) ? 1 : 0;
     contradicted_without += accepted_with_view_contradicted(without.recognize(image)) ? 1 : 0;
   }
@@ -127,9 +125,7 @@ TEST_F(RecognizerOnRegressionBase, PartsFittingAsCloselyButNeverComparedLeaveThe
   const Recognizer rejecting(*base_, CosmosParameters{}, strict);
   const Recognizer naming(*base_, CosmosParameters{}, lenient);
   int rejected_as_uncompared = 0;
-  for (std::uint64_t seed = 131; seed < 141; ++seed) {
-    const std::string& name = base_->parts[static_cast<std::size_t>(seed % 5)].name;
-    const RangeImage image = far_half_cut(name, seed);
+  for (const auto& [name, seed, image] : far_half_cuts()) {
     const RecognitionResult with = rejecting.recognize(image);
     const RecognitionResult without = naming.recognize(image);
     EXPECT_EQ(with.close_fitting_parts, without.close_fitting_parts) << seed;

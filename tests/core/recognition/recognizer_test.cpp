@@ -171,9 +171,7 @@ TEST_F(RecognizerOnRegressionBase, AWinnerWhoseViewTheSceneContradictsIsRejected
   const Recognizer lenient(*base_, CosmosParameters{}, lenient_parameters);
   const Recognizer strict(*base_, CosmosParameters{}, strict_parameters);
   int refused = 0;
-  for (std::uint64_t seed = 131; seed < 141; ++seed) {
-    const std::string& name = base_->parts[static_cast<std::size_t>(seed % 5)].name;
-    const RangeImage image = far_half_cut(name, seed);
+  for (const auto& [name, seed, image] : far_half_cuts()) {
     const RecognitionResult accepted = lenient.recognize(image);
     if (!accepted_with_view_contradicted(accepted)) continue;
     const RecognitionResult judged = strict.recognize(image);
