@@ -146,6 +146,11 @@ struct CatalogRankParameters {
   int aligned = 16;
   int aligned_points = 50;
   int iterations = 2;
+  // The quick poses are rough, their heights too: a part whose quick poses all float above
+  // the belt or stand over it may still lie on it at a pose the full stages find. It ranks by
+  // its best quick fit at any height times this factor (1: as though that pose lay on the
+  // belt) instead of not at all.
+  double floating_fit_factor = 1.0;
 
   template <class Visitor>
   void visit(Visitor& v) {
@@ -155,6 +160,10 @@ struct CatalogRankParameters {
     v("aligned", aligned, "the best starts, aligned", Range{1, 100000});
     v("aligned_points", aligned_points, "scene control points that align them", Range{1, 100000});
     v("iterations", iterations, "alignment steps for each", Range{0, 1000});
+    v("floating_fit_factor", floating_fit_factor,
+      "a part whose quick poses all float or stand over the belt ranks by its best quick fit "
+      "times this",
+      Range{1, 1e6});
   }
 };
 

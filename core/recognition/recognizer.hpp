@@ -277,6 +277,15 @@ struct RecognitionCandidate {
   bool from_resting_search = false;  // proposed by the resting-pose search
 };
 
+// A part's place in the search over every part (catalog_rank).
+struct QuickFieldFit {
+  int part = -1;
+  // What the part ranks by: its best quick fit at a pose kept on the belt, or when the belt
+  // kept none, its best quick fit at any height times catalog_rank.floating_fit_factor.
+  double fit_mm2 = 0;
+  bool on_belt = true;
+};
+
 struct RecognitionTimings {
   double features_ms = 0;
   double selection_ms = 0;
@@ -330,9 +339,12 @@ struct RecognitionResult {
   // The scene had no fitted surface to register and was searched with its range points
   // (thin_scene.hpp); no candidate is registered then.
   bool thin_scene = false;
-  // The parts whose quick field fit (the search over every part) was within
-  // ambiguity.close_fit_mm2.
+  // The parts whose quick field fit (the search over every part) at a pose on the belt was
+  // within ambiguity.close_fit_mm2.
   std::vector<int> close_fitting_parts;
+  // The order of the search over every part, best first; empty when it did not run in the
+  // order of the quick field fits.
+  std::vector<QuickFieldFit> quick_fits;
   std::vector<RecognitionCandidate> candidates;  // spectral order
   RecognitionTimings timings;
 };

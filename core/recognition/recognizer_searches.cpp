@@ -70,25 +70,31 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
   if (!only_parts.empty()) parts = only_parts;
   const bool quick_ranked =
       only_parts.empty() && !resting_poses && parameters_.catalog_rank.enabled;
-  std::vector<std::pair<double, int>> ranked;  // (quick fit, part), best first
+  std::vector<QuickFieldFit>& ranked = result.quick_fits;
   if (quick_ranked) {
     const StageClock::time_point stage = StageClock::now();
+    ranked.clear();
     for (int part : parts) {
       std::vector<FieldHypothesis> quick =
           quick_field_poses(scene_points.all, model_base_, part_search_model(part),
                             parameters_.search, parameters_.catalog_rank);
+      const double unconstrained_fit_mm2 = quick.empty() ? std::numeric_limits<double>::infinity()
+                                                         : quick.front().truncated_mean_square_mm2;
       drop_floating_poses(part, quick);
       drop_poses_over_belt(part, scene_points.image, quick);
-      ranked.emplace_back(quick.empty() ? std::numeric_limits<double>::infinity()
-                                        : quick.front().truncated_mean_square_mm2,
-                          part);
+      if (quick.empty())
+        ranked.push_back(
+            {part, parameters_.catalog_rank.floating_fit_factor * unconstrained_fit_mm2, false});
+      else
+        ranked.push_back({part, quick.front().truncated_mean_square_mm2, true});
     }
-    std::stable_sort(ranked.begin(), ranked.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (std::size_t k = 0; k < ranked.size(); ++k) parts[k] = ranked[k].second;
-    for (const auto& [fit_mm2, part] : ranked)
-      if (fit_mm2 <= parameters_.ambiguity.close_fit_mm2)
-        result.close_fitting_parts.push_back(part);
+    std::stable_sort(
+        ranked.begin(), ranked.end(),
+        [](const QuickFieldFit& a, const QuickFieldFit& b) { return a.fit_mm2 < b.fit_mm2; });
+    for (std::size_t k = 0; k < ranked.size(); ++k) parts[k] = ranked[k].part;
+    for (const QuickFieldFit& quick : ranked)
+      if (quick.on_belt && quick.fit_mm2 <= parameters_.ambiguity.close_fit_mm2)
+        result.close_fitting_parts.push_back(quick.part);
     result.timings.selection_ms += elapsed_ms(stage);
   }
   // Registers one part's field poses; true when one explains enough to end the search.
@@ -155,7 +161,7 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
     // A part whose quick fit is hopeless beside another part's full fit (the rule below) is
     // not searched, nor are those after it: the full stages rarely lower a fit that much.
     if (quick_ranked &&
-        ranked[k].first > parameters_.search.worst_kept_score_mm2(best_fit_mm2_of_all)) {
+        ranked[k].fit_mm2 > parameters_.search.worst_kept_score_mm2(best_fit_mm2_of_all)) {
       if (explained) return false;
       every_part = false;
       break;

@@ -138,6 +138,55 @@ TEST_F(RecognizerOnRegressionBase, PartsFittingAsCloselyButNeverComparedLeaveThe
   EXPECT_GE(rejected_as_uncompared, 2);
 }
 
+// The quick poses are rough, their heights too: a part none of whose quick poses lies on the
+// belt is ranked by its fit at any height times catalog_rank.floating_fit_factor, not left out
+// of the search over every part. With a belt tolerance that the quick stage's heights miss,
+// such parts appear in most scans: every part is ranked and the order is sorted, only their
+// rank fits scale with the factor, and none of them counts as fitting the scene closely.
+TEST_F(RecognizerOnRegressionBase, APartWhoseQuickPosesAllFloatIsStillRanked) {
+  RecognitionParameters parameters;
+  parameters.views_before_search = 0;
+  parameters.resting.field_height_error_mm = 0.3;
+  parameters.ambiguity.close_fit_mm2 = 1e6;
+  RecognitionParameters tripled = parameters;
+  tripled.catalog_rank.floating_fit_factor = 3 * parameters.catalog_rank.floating_fit_factor;
+  const Recognizer once(*base_, CosmosParameters{}, parameters);
+  const Recognizer thrice(*base_, CosmosParameters{}, tripled);
+  int floating = 0, on_belt = 0;
+  for (std::uint64_t seed = 21; seed < 31; ++seed) {
+    const std::string& name = base_->parts[seed % base_->parts.size()].name;
+    const RangeImage image = scan(name, seed);
+    const RecognitionResult a = once.recognize(image);
+    const RecognitionResult b = thrice.recognize(image);
+    ASSERT_EQ(a.quick_fits.size(), base_->parts.size()) << seed;
+    ASSERT_EQ(b.quick_fits.size(), base_->parts.size()) << seed;
+    for (std::size_t k = 0; k < a.quick_fits.size(); ++k) {
+      const QuickFieldFit& fit = a.quick_fits[k];
+      if (k > 0) {
+        EXPECT_LE(a.quick_fits[k - 1].fit_mm2, fit.fit_mm2) << seed;
+      }
+      const auto same_part =
+          std::find_if(b.quick_fits.begin(), b.quick_fits.end(),
+                       [&](const QuickFieldFit& q) { return q.part == fit.part; });
+      ASSERT_NE(same_part, b.quick_fits.end()) << seed;
+      EXPECT_EQ(same_part->on_belt, fit.on_belt) << seed;
+      const bool close = std::find(a.close_fitting_parts.begin(), a.close_fitting_parts.end(),
+                                   fit.part) != a.close_fitting_parts.end();
+      EXPECT_EQ(close, fit.on_belt) << seed;
+      if (fit.on_belt) {
+        ++on_belt;
+        EXPECT_EQ(same_part->fit_mm2, fit.fit_mm2) << seed;
+      } else {
+        ++floating;
+        EXPECT_TRUE(std::isfinite(fit.fit_mm2)) << seed;
+        EXPECT_NEAR(same_part->fit_mm2, 3 * fit.fit_mm2, 1e-9 * fit.fit_mm2) << seed;
+      }
+    }
+  }
+  EXPECT_GE(floating, 5);
+  EXPECT_GE(on_belt, 5);
+}
+
 // A candidate from the §5.2 selection (not from a search nor the vote index).
 bool from_selected_view(const RecognitionCandidate& candidate) {
   return !candidate.from_pose_search && !candidate.from_resting_search &&
