@@ -35,6 +35,7 @@
 //
 // Everything is counted in operations (views, hypotheses, iterations), so the result depends
 // only on the input; only the timings vary between runs.
+#include <span>
 #include <string>
 #include <vector>
 
@@ -286,6 +287,12 @@ struct QuickFieldFit {
   bool on_belt = true;
 };
 
+// The parts that fit the scene at a pose on the belt within close_fit_mm2
+// (ambiguity.close_fit_mm2: about as closely as a scene fits its own part), in the order of
+// `quick_fits`.
+std::vector<int> close_fitting_parts(std::span<const QuickFieldFit> quick_fits,
+                                     double close_fit_mm2);
+
 struct RecognitionTimings {
   double features_ms = 0;
   double selection_ms = 0;
@@ -339,9 +346,6 @@ struct RecognitionResult {
   // The scene had no fitted surface to register and was searched with its range points
   // (thin_scene.hpp); no candidate is registered then.
   bool thin_scene = false;
-  // The parts whose quick field fit (the search over every part) at a pose on the belt was
-  // within ambiguity.close_fit_mm2.
-  std::vector<int> close_fitting_parts;
   // The order of the search over every part, best first; empty when it did not run in the
   // order of the quick field fits.
   std::vector<QuickFieldFit> quick_fits;

@@ -156,12 +156,13 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
     result.part = -1;
     return "best candidate's registration residual is too large";
   }
-  const auto uncompared = std::count_if(
-      result.close_fitting_parts.begin(), result.close_fitting_parts.end(), [&](int part) {
-        return std::none_of(
-            result.candidates.begin(), result.candidates.end(),
-            [part](const RecognitionCandidate& c) { return c.part == part && c.registered; });
-      });
+  const std::vector<int> close_parts =
+      close_fitting_parts(result.quick_fits, parameters_.ambiguity.close_fit_mm2);
+  const auto uncompared = std::count_if(close_parts.begin(), close_parts.end(), [&](int part) {
+    return std::none_of(
+        result.candidates.begin(), result.candidates.end(),
+        [part](const RecognitionCandidate& c) { return c.part == part && c.registered; });
+  });
   if (uncompared > parameters_.ambiguity.max_uncompared_close_parts) {
     result.part = -1;
     return "ambiguous: " + std::to_string(uncompared) +

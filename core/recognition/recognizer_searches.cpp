@@ -14,6 +14,14 @@
 
 namespace cosmos {
 
+std::vector<int> close_fitting_parts(std::span<const QuickFieldFit> quick_fits,
+                                     double close_fit_mm2) {
+  std::vector<int> parts;
+  for (const QuickFieldFit& quick : quick_fits)
+    if (quick.on_belt && quick.fit_mm2 <= close_fit_mm2) parts.push_back(quick.part);
+  return parts;
+}
+
 void Recognizer::verify_voted_poses(const ViewAnalysis& scene, const ScenePoints& scene_points,
                                     ModelSurfaces& surfaces, RecognitionResult& result) const {
   StageClock::time_point stage = StageClock::now();
@@ -92,9 +100,6 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
         ranked.begin(), ranked.end(),
         [](const QuickFieldFit& a, const QuickFieldFit& b) { return a.fit_mm2 < b.fit_mm2; });
     for (std::size_t k = 0; k < ranked.size(); ++k) parts[k] = ranked[k].part;
-    for (const QuickFieldFit& quick : ranked)
-      if (quick.on_belt && quick.fit_mm2 <= parameters_.ambiguity.close_fit_mm2)
-        result.close_fitting_parts.push_back(quick.part);
     result.timings.selection_ms += elapsed_ms(stage);
   }
   // Registers one part's field poses; true when one explains enough to end the search.

@@ -128,11 +128,14 @@ TEST_F(RecognizerOnRegressionBase, PartsFittingAsCloselyButNeverComparedLeaveThe
   for (const auto& [name, seed, image] : far_half_cuts()) {
     const RecognitionResult with = rejecting.recognize(image);
     const RecognitionResult without = naming.recognize(image);
-    EXPECT_EQ(with.close_fitting_parts, without.close_fitting_parts) << seed;
+    const std::vector<int> close =
+        close_fitting_parts(with.quick_fits, strict.ambiguity.close_fit_mm2);
+    EXPECT_EQ(close, close_fitting_parts(without.quick_fits, lenient.ambiguity.close_fit_mm2))
+        << seed;
     if (with.reason.find("never compared") == std::string::npos) continue;
     ++rejected_as_uncompared;
     EXPECT_EQ(with.status, RecognitionStatus::kRejected) << seed;
-    EXPECT_GE(with.close_fitting_parts.size(), 2u) << seed;
+    EXPECT_GE(close.size(), 2u) << seed;
     EXPECT_EQ(without.reason.find("never compared"), std::string::npos) << seed;
   }
   EXPECT_GE(rejected_as_uncompared, 2);
@@ -170,8 +173,10 @@ TEST_F(RecognizerOnRegressionBase, APartWhoseQuickPosesAllFloatIsStillRanked) {
                        [&](const QuickFieldFit& q) { return q.part == fit.part; });
       ASSERT_NE(same_part, b.quick_fits.end()) << seed;
       EXPECT_EQ(same_part->on_belt, fit.on_belt) << seed;
-      const bool close = std::find(a.close_fitting_parts.begin(), a.close_fitting_parts.end(),
-                                   fit.part) != a.close_fitting_parts.end();
+      const std::vector<int> close_parts =
+          close_fitting_parts(a.quick_fits, parameters.ambiguity.close_fit_mm2);
+      const bool close =
+          std::find(close_parts.begin(), close_parts.end(), fit.part) != close_parts.end();
       EXPECT_EQ(close, fit.on_belt) << seed;
       if (fit.on_belt) {
         ++on_belt;
