@@ -143,7 +143,10 @@ std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& sce
 struct CatalogRankParameters {
   bool enabled = true;  // false: the search over every part goes in spectral order
   int start_points = 12;
-  int aligned = 16;
+  // Flat-faced parts of one kind (brackets, channels, plates) score many wrong starts as well
+  // as their right one on a dozen points: with too few aligned, the scene's own part missed
+  // its pose and ranked behind parts it resembles, which then explained the scene unrivalled.
+  int aligned = 32;
   int aligned_points = 50;
   int iterations = 2;
   // The quick poses are rough, their heights too: a part whose quick poses all float above

@@ -72,9 +72,10 @@ Recognizer::Recognizer(const ModelBase& model_base, const CosmosParameters& cosm
         parameters_.resting.min_coverage)
       poorly_covered_parts_.push_back(part);
   size_variants_ = find_size_variants(model_base, parameters_.size_variants);
+  for (const ModelPart& part : model_base.parts) part_extents_.push_back(part_extent(part));
 }
 
-RecognitionResult Recognizer::recognize(const RangeImage& scene) const {
+RecognitionResult Recognizer::recognize(const RangeImage& scene, SceneParts parts) const {
   const StageClock::time_point start = StageClock::now();
   if (scene.width() == 0 || scene.count_valid() == 0) {
     RecognitionResult empty;
@@ -83,12 +84,12 @@ RecognitionResult Recognizer::recognize(const RangeImage& scene) const {
     return empty;
   }
   const ViewAnalysis analysis = analyze_view(scene, cosmos_);
-  return recognize_analyzed(scene, analysis, elapsed_ms(start));
+  return recognize_analyzed(scene, analysis, elapsed_ms(start), parts);
 }
 
 RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
-                                                 const ViewAnalysis& analysis,
-                                                 double features_ms) const {
+                                                 const ViewAnalysis& analysis, double features_ms,
+                                                 SceneParts parts) const {
   const StageClock::time_point start = StageClock::now();
   RecognitionResult result;
   result.moments = analysis.moments;
@@ -134,8 +135,9 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   const std::vector<SpectralCandidate> selected = selector_.select(analysis.moments);
   result.timings.selection_ms = elapsed_ms(stage);
 
-  ScenePoints points{std::move(scene_points.points), {}, scene};
+  ScenePoints points{std::move(scene_points.points), {}, scene, {}, parts};
   points.coarse = spread_subset(points.all, parameters_.coarse_points);
+  points.extent = scene_extent(points.all, scene);
   ModelSurfaces surfaces(model_base_, parameters_.surfaces);
   // Verifies the selected views from `next` up to `end` until one explains the scene. The
   // decision needs the best other part to compare with (part_ambiguity.hpp): once a view or a

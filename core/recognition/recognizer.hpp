@@ -13,8 +13,9 @@
 //   voting        (off by default) when none of that explains the scene: the scene's CSMP
 //                 pairs vote for (part, pose) over the whole catalog (core/indexing/); the
 //                 strongest poses are verified like selected views;
-//   search        when none of that explains the scene: every part's quick field fit
-//                 (part_pose_search.hpp) orders the parts, and the pose search over each
+//   search        when none of that explains the scene: every part the scene's size allows
+//                 (part_size_gate.hpp) is ranked by its quick field fit
+//                 (part_pose_search.hpp), and the pose search over each
 //                 part's views goes down that order until a part explains the scene and the
 //                 next one, its rival, has been searched too;
 //   registration  initial-pose hypotheses per candidate — the patch-group pose, the principal
@@ -51,6 +52,7 @@
 #include "core/range_image.hpp"
 #include "core/recognition/part_ambiguity.hpp"
 #include "core/recognition/part_pose_search.hpp"
+#include "core/recognition/part_size_gate.hpp"
 #include "core/recognition/part_support.hpp"
 #include "core/recognition/resting_pose_search.hpp"
 #include "core/recognition/size_variants.hpp"
@@ -127,6 +129,9 @@ struct RecognitionParameters {
   // Its order: the parts' quick field fits (part_pose_search.hpp); with it off, the spectral
   // order.
   CatalogRankParameters catalog_rank;
+  // The parts the search over every part leaves out: too small or too thick to be the
+  // scene's (part_size_gate.hpp).
+  PartSizeGateParameters size_gate;
   // The spectral order is a poor guide for the scans that need the search (in the cell, the
   // scene's part often ranks far down), the search's field stages a sharp one: a part whose best
   // field pose fits this well (mean square distance of the scene to the part,
@@ -250,6 +255,7 @@ struct RecognitionParameters {
       Range{0, 1});
     v("max_fraction_over_belt", max_fraction_over_belt,
       "a searched pose placing more of its part over measured belt is dropped", Range{0, 1});
+    v("size_gate", size_gate, "parts the search over every part leaves out by size");
     v("ambiguity", ambiguity, "rejection as ambiguous between two parts (§5.3.6, §5.4)");
     v("size_variants", size_variants, "one shape at several sizes: told apart by the fit");
     v("surfaces", surfaces, "the model surfaces a recognition keeps unpacked");
@@ -349,6 +355,9 @@ struct RecognitionResult {
   // The order of the search over every part, best first; empty when it did not run in the
   // order of the quick field fits.
   std::vector<QuickFieldFit> quick_fits;
+  // The parts that search left out, too small or too thick for the scene (part_size_gate.hpp).
+  int parts_smaller_than_scene = 0;
+  int parts_thicker_than_scene = 0;
   std::vector<RecognitionCandidate> candidates;  // spectral order
   RecognitionTimings timings;
 };
@@ -359,10 +368,13 @@ class Recognizer {
   Recognizer(const ModelBase& model_base, const CosmosParameters& cosmos,
              const RecognitionParameters& parameters);
 
-  RecognitionResult recognize(const RangeImage& scene) const;
+  // `parts`: whether the scene holds one part, as a scan of a single part does, or possibly
+  // several touching (part_size_gate.hpp: only one part bounds a part's size by the scene's).
+  RecognitionResult recognize(const RangeImage& scene, SceneParts parts = SceneParts::kOne) const;
   // For a scene whose chapter-3 analysis already exists (the incremental builder's).
   RecognitionResult recognize_analyzed(const RangeImage& scene, const ViewAnalysis& analysis,
-                                       double features_ms = 0) const;
+                                       double features_ms = 0,
+                                       SceneParts parts = SceneParts::kOne) const;
 
   const SpectralViewSelector& selector() const { return selector_; }
   // What the pose search needs of each base part (built with the recognizer).
@@ -373,12 +385,15 @@ class Recognizer {
   const PatchPairTable& patch_pair_table() const { return patch_pair_table_; }
 
  private:
-  // The scene's control points, the spread subset of coarse_points taken once, and the
-  // scene's image, where a placed candidate's surface is looked up (surface_seen.hpp).
+  // The scene's control points, the spread subset of coarse_points taken once, the scene's
+  // image, where a placed candidate's surface is looked up (surface_seen.hpp), and its size
+  // with whether it holds one part (part_size_gate.hpp).
   struct ScenePoints {
     RegistrationPoints all;
     RegistrationPoints coarse;
     const RangeImage& image;
+    SceneExtent extent;
+    SceneParts parts = SceneParts::kOne;
   };
   // The candidate reaches sufficient_support, at rest, with sufficient_seen_fraction of its
   // view seen (min_seen_fraction for a part with other sizes): no other part is likely to
@@ -445,6 +460,8 @@ class Recognizer {
   std::vector<int> poorly_covered_parts_;
   // Per part, the other sizes of its shape in the base (size_variants.hpp).
   std::vector<std::vector<int>> size_variants_;
+  // Per part, its diameter and thinnest width (part_size_gate.hpp).
+  std::vector<PartExtent> part_extents_;
 };
 
 const char* to_string(RecognitionStatus status);

@@ -76,6 +76,19 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
   if (parts.size() > static_cast<std::size_t>(parameters_.searched_parts))
     parts.resize(static_cast<std::size_t>(parameters_.searched_parts));
   if (!only_parts.empty()) parts = only_parts;
+  // Over every part, the parts that cannot be the scene's by size are left out
+  // (part_size_gate.hpp): in a large catalog most of them, before any is fitted.
+  if (only_parts.empty()) {
+    result.parts_smaller_than_scene = result.parts_thicker_than_scene = 0;
+    std::erase_if(parts, [&](int part) {
+      const SizeVerdict verdict = judge_part_size(
+          part_extents_[static_cast<std::size_t>(part)], scene_points.extent, scene_points.parts,
+          parameters_.resting.parts_touch_belt, parameters_.size_gate);
+      result.parts_smaller_than_scene += verdict == SizeVerdict::kSmallerThanScene ? 1 : 0;
+      result.parts_thicker_than_scene += verdict == SizeVerdict::kThickerThanScene ? 1 : 0;
+      return verdict != SizeVerdict::kFits;
+    });
+  }
   const bool quick_ranked =
       only_parts.empty() && !resting_poses && parameters_.catalog_rank.enabled;
   std::vector<QuickFieldFit>& ranked = result.quick_fits;

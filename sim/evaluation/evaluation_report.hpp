@@ -12,7 +12,8 @@
 //                            test, truth, truth_in_model_base, predicted (null when
 //                            rejected), status (record_status_name), reason, recognition_ms
 //                            and its features_ms, matching_ms and registration_ms,
-//                            pose_searched, catalog_searched, resting_searched, thin_scene,
+//                            pose_searched, catalog_searched, parts_left_out_by_size,
+//                            resting_searched, thin_scene,
 //                            truth_has_size_variants, taken_for_size_variant,
 //                            add_s_over_diameter (null where it does not apply).
 // Part labels come from part_names (catalog index -> name), falling back to the names in the

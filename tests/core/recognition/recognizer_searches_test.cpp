@@ -117,6 +117,7 @@ TEST_F(RecognizerOnRegressionBase, TheSearchRegistersAtMostItsBudgetOfParts) {
 // the same scan is identified.
 TEST_F(RecognizerOnRegressionBase, PartsFittingAsCloselyButNeverComparedLeaveTheSceneAmbiguous) {
   RecognitionParameters strict;
+  strict.size_gate.enabled = false;  // every part ranked, none left out by size
   strict.registered_parts = 1;
   strict.ambiguity.close_fit_mm2 = 1e6;
   strict.ambiguity.max_uncompared_close_parts = 0;
@@ -144,10 +145,11 @@ TEST_F(RecognizerOnRegressionBase, PartsFittingAsCloselyButNeverComparedLeaveThe
 // The quick poses are rough, their heights too: a part none of whose quick poses lies on the
 // belt is ranked by its fit at any height times catalog_rank.floating_fit_factor, not left out
 // of the search over every part. With a belt tolerance that the quick stage's heights miss,
-// such parts appear in most scans: every part is ranked and the order is sorted, only their
+// such parts appear in many scans: every part is ranked and the order is sorted, only their
 // rank fits scale with the factor, and none of them counts as fitting the scene closely.
 TEST_F(RecognizerOnRegressionBase, APartWhoseQuickPosesAllFloatIsStillRanked) {
   RecognitionParameters parameters;
+  parameters.size_gate.enabled = false;  // every part ranked, none left out by size
   parameters.views_before_search = 0;
   parameters.resting.field_height_error_mm = 0.3;
   parameters.ambiguity.close_fit_mm2 = 1e6;
@@ -156,7 +158,7 @@ TEST_F(RecognizerOnRegressionBase, APartWhoseQuickPosesAllFloatIsStillRanked) {
   const Recognizer once(*base_, CosmosParameters{}, parameters);
   const Recognizer thrice(*base_, CosmosParameters{}, tripled);
   int floating = 0, on_belt = 0;
-  for (std::uint64_t seed = 21; seed < 31; ++seed) {
+  for (std::uint64_t seed = 21; seed < 41; ++seed) {
     const std::string& name = base_->parts[seed % base_->parts.size()].name;
     const RangeImage image = scan(name, seed);
     const RecognitionResult a = once.recognize(image);
@@ -190,6 +192,100 @@ TEST_F(RecognizerOnRegressionBase, APartWhoseQuickPosesAllFloatIsStillRanked) {
   }
   EXPECT_GE(floating, 5);
   EXPECT_GE(on_belt, 5);
+}
+
+// The size gate (part_size_gate.hpp) leaves out of the search over every part only parts
+// too small or too thick for the scene, never the scene's own; a scene that may hold several
+// parts bounds no part's extent, and with the gate off every part is ranked.
+TEST_F(RecognizerOnRegressionBase, TheSearchOverEveryPartLeavesOutOnlyPartsOfAnotherSize) {
+  RecognitionParameters parameters;
+  parameters.views_before_search = 0;
+  parameters.resting.parts_touch_belt = true;
+  RecognitionParameters ungated = parameters;
+  ungated.size_gate.enabled = false;
+  const Recognizer gated_recognizer(*base_, CosmosParameters{}, parameters);
+  const Recognizer ungated_recognizer(*base_, CosmosParameters{}, ungated);
+  const std::size_t part_count = base_->parts.size();
+  int smaller = 0, thicker = 0, searched = 0;
+  for (std::uint64_t seed = 41; seed < 61; ++seed) {
+    const int own_part = static_cast<int>(seed % part_count);
+    const RangeImage image = scan(base_->parts[static_cast<std::size_t>(own_part)].name, seed);
+    const RecognitionResult gated = gated_recognizer.recognize(image);
+    if (gated.quick_fits.empty()) continue;
+    ++searched;
+    EXPECT_EQ(gated.quick_fits.size() + static_cast<std::size_t>(gated.parts_smaller_than_scene +
+                                                                 gated.parts_thicker_than_scene),
+              part_count)
+        << seed;
+    EXPECT_TRUE(std::any_of(gated.quick_fits.begin(), gated.quick_fits.end(),
+                            [&](const QuickFieldFit& fit) { return fit.part == own_part; }))
+        << seed;
+    // A part left out is never registered by the search.
+    for (const RecognitionCandidate& candidate : gated.candidates) {
+      if (!candidate.from_pose_search) continue;
+      EXPECT_TRUE(std::any_of(gated.quick_fits.begin(), gated.quick_fits.end(),
+                              [&](const QuickFieldFit& fit) { return fit.part == candidate.part; }))
+          << seed;
+    }
+    smaller += gated.parts_smaller_than_scene;
+    thicker += gated.parts_thicker_than_scene;
+
+    const RecognitionResult several = gated_recognizer.recognize(image, SceneParts::kOneOrMore);
+    EXPECT_EQ(several.parts_smaller_than_scene, 0) << seed;
+    EXPECT_EQ(several.parts_thicker_than_scene, gated.parts_thicker_than_scene) << seed;
+    const RecognitionResult all = ungated_recognizer.recognize(image);
+    EXPECT_EQ(all.quick_fits.size(), part_count) << seed;
+    EXPECT_EQ(all.parts_smaller_than_scene + all.parts_thicker_than_scene, 0) << seed;
+  }
+  EXPECT_GE(searched, 15);
+  EXPECT_GE(smaller, 10);
+  EXPECT_GE(thicker, 2);
+}
+
+// Two parts side by side in one scene (touching parts in one blob): told the scene holds one
+// part, the gate leaves out the parts smaller than the pair, both of its own among them;
+// told it may hold several, it bounds no part's extent.
+TEST_F(RecognizerOnRegressionBase, TwoPartsSideBySideBoundNoPartsExtentWhenSeveralMayBeThere) {
+  RecognitionParameters parameters;
+  parameters.views_before_search = 0;
+  parameters.resting.parts_touch_belt = true;
+  const Recognizer recognizer(*base_, CosmosParameters{}, parameters);
+  const RangeImage left = scan("couplingdown", 42);
+  const RangeImage right = scan("fandisk", 43);
+  ASSERT_EQ(left.pixel_size_x_mm, right.pixel_size_x_mm);
+  ASSERT_EQ(left.pixel_size_y_mm, right.pixel_size_y_mm);
+  RangeImage pair(left.width() + right.width(), std::max(left.height(), right.height()),
+                  left.pixel_size_x_mm, left.pixel_size_y_mm);
+  pair.origin_x_mm = left.origin_x_mm;
+  pair.origin_y_mm = left.origin_y_mm;
+  pair.belt_seen = PixelGrid<std::uint8_t>(pair.width(), pair.height(), 0);
+  for (int row = 0; row < pair.height(); ++row)
+    for (int column = 0; column < pair.width(); ++column) {
+      const bool on_left = column < left.width();
+      const RangeImage& from = on_left ? left : right;
+      const int from_column = on_left ? column : column - left.width();
+      if (row >= from.height()) continue;
+      pair.z_mm(column, row) = from.z_mm(from_column, row);
+      if (from.belt_known()) pair.belt_seen(column, row) = from.belt_seen(from_column, row);
+    }
+  const auto part_index = [&](const std::string& name) {
+    for (std::size_t p = 0; p < base_->parts.size(); ++p)
+      if (base_->parts[p].name == name) return static_cast<int>(p);
+    return -1;
+  };
+  const auto ranked = [](const RecognitionResult& result, int part) {
+    return std::any_of(result.quick_fits.begin(), result.quick_fits.end(),
+                       [part](const QuickFieldFit& fit) { return fit.part == part; });
+  };
+  const RecognitionResult as_one = recognizer.recognize(pair, SceneParts::kOne);
+  const RecognitionResult as_several = recognizer.recognize(pair, SceneParts::kOneOrMore);
+  ASSERT_FALSE(as_several.quick_fits.empty());
+  EXPECT_GE(as_one.parts_smaller_than_scene, 2);
+  EXPECT_EQ(as_several.parts_smaller_than_scene, 0);
+  for (const std::string name : {"couplingdown", "fandisk"}) {
+    EXPECT_FALSE(ranked(as_one, part_index(name))) << name;
+    EXPECT_TRUE(ranked(as_several, part_index(name))) << name;
+  }
 }
 
 // A candidate from the §5.2 selection (not from a search nor the vote index).

@@ -1,0 +1,75 @@
+#pragma once
+// Which parts the scene can be by size alone, before any part is fitted to it. The extent of
+// an object belongs to its description beside its shape (§3.1: "how big it is"), and a
+// recognizer that matches the scene against every model of a large base prunes the models
+// that cannot match first (§1.2; the unary constraints of constrained search, §2.2.2). The
+// search over every part (part_pose_search.hpp) fits each part's field to the scene; its cost
+// grows with the catalog, and in a catalog of hundreds of parts most of them cannot be the
+// scene's by two measures that need no fit:
+//
+//   extent     a scene of one part lies on that part: the part's diameter (its farthest two
+//              vertices) is at least the scene's width along any direction;
+//   thickness  a part that touches the belt reaches at least its thinnest width above it, and
+//              its highest point is seen from above (nothing of the part lies higher to hide
+//              it), so a part whose thinnest width exceeds the scene's top is not on the belt.
+//
+// Both are bounds, not fits: the scene's width is measured on its control points (on the
+// surface, never beyond it), its top on its range pixels (a noisy pixel only raises it), each
+// with a tolerance for the scan's noise and sampling, so that the scene's own part always
+// passes. A scene that may hold several parts (touching parts in one blob) bounds no part's
+// extent; the thickness still holds for each of them.
+#include "core/modelbase/model_base.hpp"
+#include "core/parameter_visitor.hpp"
+#include "core/range_image.hpp"
+#include "core/registration/registration_points.hpp"
+
+namespace cosmos {
+
+// What the caller knows of the scene: one part (a scan of a single part, a blob the tracker
+// closed around one), or possibly several touching (scene-level recognition's first try).
+enum class SceneParts { kOne, kOneOrMore };
+
+struct PartSizeGateParameters {
+  bool enabled = true;
+  // The scene's width may exceed a part's diameter by this much (noise, a silhouette's
+  // mixed pixels) and the part still be the scene's.
+  double extent_tolerance_mm = 3.0;
+  // A part's thinnest width may exceed the scene's top by this much (a sharp top between two
+  // scan lines, the fitted mesh's facets) and the part still lie on the belt.
+  double height_tolerance_mm = 5.0;
+
+  template <class Visitor>
+  void visit(Visitor& v) {
+    v("enabled", enabled, "leave out of the search parts too small or too thick for the scene");
+    v("extent_tolerance_mm", extent_tolerance_mm,
+      "a part whose diameter is this much under the scene's width is too small, mm", Range{0, 1e4});
+    v("height_tolerance_mm", height_tolerance_mm,
+      "a part whose thinnest width is this much over the scene's top is too thick, mm",
+      Range{0, 1e4});
+  }
+};
+
+struct PartExtent {
+  double diameter_mm = 0;        // its farthest two mesh vertices
+  double thinnest_width_mm = 0;  // its hull's width along the direction it is narrowest
+};
+
+// From the part's convex hull (ModelPart::hull_vertices_mm) and diameter; a part without a
+// hull has thinnest width 0 (no part is too thick then).
+PartExtent part_extent(const ModelPart& part);
+
+struct SceneExtent {
+  double width_mm =
+      0;  // at most the scene's largest width: its control points' along fixed directions
+  double top_mm = 0;  // its highest range pixel above the belt
+};
+
+SceneExtent scene_extent(const RegistrationPoints& points, const RangeImage& image);
+
+enum class SizeVerdict { kFits, kSmallerThanScene, kThickerThanScene };
+
+// `parts_touch_belt`: the scene's parts lie on the belt (the thickness bound holds).
+SizeVerdict judge_part_size(const PartExtent& part, const SceneExtent& scene, SceneParts parts,
+                            bool parts_touch_belt, const PartSizeGateParameters& parameters);
+
+}  // namespace cosmos
