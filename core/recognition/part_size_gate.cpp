@@ -88,11 +88,17 @@ SceneExtent scene_extent(const RegistrationPoints& points, const RangeImage& ima
   SceneExtent extent;
   constexpr int kDirections = 64;
   const Eigen::Matrix3Xd& positions = points.position_mm;
-  if (positions.cols() > 0)
-    for (int k = 0; k < kDirections; ++k) {
-      const Eigen::RowVectorXd along = hemisphere_direction(k, kDirections).transpose() * positions;
-      extent.width_mm = std::max(extent.width_mm, along.maxCoeff() - along.minCoeff());
+  for (int k = 0; k < kDirections && positions.cols() > 0; ++k) {
+    const Eigen::Vector3d direction = hemisphere_direction(k, kDirections);
+    double low = std::numeric_limits<double>::infinity();
+    double high = -low;
+    for (Eigen::Index i = 0; i < positions.cols(); ++i) {
+      const double along = direction.dot(positions.col(i));
+      low = std::min(low, along);
+      high = std::max(high, along);
     }
+    extent.width_mm = std::max(extent.width_mm, high - low);
+  }
   for (int row = 0; row < image.height(); ++row)
     for (int column = 0; column < image.width(); ++column)
       if (image.has_data(column, row))

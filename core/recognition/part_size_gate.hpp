@@ -1,8 +1,8 @@
 #pragma once
 // Which parts the scene can be by size alone, before any part is fitted to it. The extent of
-// an object belongs to its description beside its shape (§3.1: "how big it is"), and a
+// an object belongs to its description beside its shape (§3.1.1: "how big it is"), and a
 // recognizer that matches the scene against every model of a large base prunes the models
-// that cannot match first (§1.2; the unary constraints of constrained search, §2.2.2). The
+// that cannot match first (§1.2; the unary constraints of constrained search, §2.1.3). The
 // search over every part (part_pose_search.hpp) fits each part's field to the scene; its cost
 // grows with the catalog, and in a catalog of hundreds of parts most of them cannot be the
 // scene's by two measures that need no fit:
