@@ -121,16 +121,10 @@ PartRecognition recognize_part(const BuiltPart& built, const PartRecognitionCont
 PartRecognition recognize_part_view(const PartView& part, const BuiltPart& built,
                                     const PartRecognitionContext& context, std::int64_t part_seq,
                                     double features_ms) {
-  const Recognizer& recognizer = *context.recognizer;
-  RecognitionResult result =
-      recognizer.recognize_analyzed(part.image, part.analysis, features_ms, SceneParts::kOne);
-  if (result.status != RecognitionStatus::kOk && result.parts_smaller_than_scene > 0) {
-    const double first_try_ms = result.timings.total_ms - features_ms;
-    result = recognizer.recognize_analyzed(part.image, part.analysis, features_ms,
-                                           SceneParts::kOneOrMore);
-    result.timings.total_ms += first_try_ms;
-  }
-  PartRecognition out = recognition_of(std::move(result), built, context, part_seq);
+  PartRecognition out =
+      recognition_of(context.recognizer->recognize_analyzed(part.image, part.analysis, features_ms,
+                                                            SceneParts::kOneOrMore),
+                     built, context, part_seq);
   if (context.keep_part_image) {
     out.image = part.image;
     out.image_first_profile = built.first_profile;

@@ -92,10 +92,8 @@ struct PartRecognition {
 PartRecognition recognize_part(const BuiltPart& built, const PartRecognitionContext& context,
                                std::int64_t part_seq);
 // The same for a view already cut out (the blob's, or what remains of it once the parts
-// recognized in it are taken away); `features_ms` is the time its analysis took. The view is
-// recognized as one part first, as nearly every blob is; when that fails after the parts
-// smaller than the view were left out of the search (part_size_gate.hpp), it may be touching
-// parts, and is recognized again as possibly several.
+// recognized in it are taken away); `features_ms` is the time its analysis took. The view may
+// hold touching parts, so it bounds no part's extent (part_size_gate.hpp: SceneParts).
 PartRecognition recognize_part_view(const PartView& part, const BuiltPart& built,
                                     const PartRecognitionContext& context, std::int64_t part_seq,
                                     double features_ms);
