@@ -25,8 +25,8 @@
 
 namespace cosmos {
 
-// What the caller knows of the scene: one part (a scan of a single part, a blob the tracker
-// closed around one), or possibly several touching (scene-level recognition's first try).
+// What the caller knows of the scene: one part (a scan of a single part), or possibly several
+// touching (a blob in the cell, which the tracker cannot tell from one part).
 enum class SceneParts { kOne, kOneOrMore };
 
 struct PartSizeGateParameters {
