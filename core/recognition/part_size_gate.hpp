@@ -4,7 +4,7 @@
 // recognizer that matches the scene against every model of a large base prunes the models
 // that cannot match first (§1.2; the unary constraints of constrained search, §2.1.3). The
 // search over every part (part_pose_search.hpp) fits each part's field to the scene; its cost
-// grows with the catalog, and in a catalog of hundreds of parts most of them cannot be the
+// grows with the catalog, and in a catalog of hundreds of parts many of them cannot be the
 // scene's by two measures that need no fit:
 //
 //   extent     a scene of one part lies on that part: the part's diameter (its farthest two

@@ -77,7 +77,7 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
     parts.resize(static_cast<std::size_t>(parameters_.searched_parts));
   if (!only_parts.empty()) parts = only_parts;
   // Over every part, the parts that cannot be the scene's by size are left out
-  // (part_size_gate.hpp): in a large catalog most of them, before any is fitted.
+  // (part_size_gate.hpp): in a large catalog many of them, before any is fitted.
   if (only_parts.empty()) {
     result.parts_smaller_than_scene = result.parts_thicker_than_scene = 0;
     std::erase_if(parts, [&](int part) {
