@@ -17,10 +17,12 @@ Eigen::Vector3d hemisphere_direction(int k, int n) {
   return {radius * std::cos(phi), radius * std::sin(phi), z};
 }
 
-double width_along(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& direction) {
+// `points`: a range of 3-vectors (a part's hull corners, or a matrix's columns).
+template <class Points>
+double width_along(const Points& points, const Eigen::Vector3d& direction) {
   double low = std::numeric_limits<double>::infinity();
   double high = -low;
-  for (const Eigen::Vector3d& point : points) {
+  for (const auto& point : points) {
     const double along = direction.dot(point);
     low = std::min(low, along);
     high = std::max(high, along);
@@ -88,17 +90,9 @@ SceneExtent scene_extent(const RegistrationPoints& points, const RangeImage& ima
   SceneExtent extent;
   constexpr int kDirections = 64;
   const Eigen::Matrix3Xd& positions = points.position_mm;
-  for (int k = 0; k < kDirections && positions.cols() > 0; ++k) {
-    const Eigen::Vector3d direction = hemisphere_direction(k, kDirections);
-    double low = std::numeric_limits<double>::infinity();
-    double high = -low;
-    for (Eigen::Index i = 0; i < positions.cols(); ++i) {
-      const double along = direction.dot(positions.col(i));
-      low = std::min(low, along);
-      high = std::max(high, along);
-    }
-    extent.width_mm = std::max(extent.width_mm, high - low);
-  }
+  for (int k = 0; k < kDirections && positions.cols() > 0; ++k)
+    extent.width_mm = std::max(
+        extent.width_mm, width_along(positions.colwise(), hemisphere_direction(k, kDirections)));
   for (int row = 0; row < image.height(); ++row)
     for (int column = 0; column < image.width(); ++column)
       if (image.has_data(column, row))

@@ -194,6 +194,12 @@ TEST_F(RecognizerOnRegressionBase, APartWhoseQuickPosesAllFloatIsStillRanked) {
   EXPECT_GE(on_belt, 5);
 }
 
+// Whether the search over every part ranked `part` (did not leave it out by size).
+bool ranked(const RecognitionResult& result, int part) {
+  return std::any_of(result.quick_fits.begin(), result.quick_fits.end(),
+                     [part](const QuickFieldFit& fit) { return fit.part == part; });
+}
+
 // The size gate (part_size_gate.hpp) leaves out of the search over every part only parts
 // too small or too thick for the scene, never the scene's own; a scene that may hold several
 // parts bounds no part's extent, and with the gate off every part is ranked.
@@ -217,15 +223,11 @@ TEST_F(RecognizerOnRegressionBase, TheSearchOverEveryPartLeavesOutOnlyPartsOfAno
                                                                  gated.parts_thicker_than_scene),
               part_count)
         << seed;
-    EXPECT_TRUE(std::any_of(gated.quick_fits.begin(), gated.quick_fits.end(),
-                            [&](const QuickFieldFit& fit) { return fit.part == own_part; }))
-        << seed;
+    EXPECT_TRUE(ranked(gated, own_part)) << seed;
     // A part left out is never registered by the search.
     for (const RecognitionCandidate& candidate : gated.candidates) {
       if (!candidate.from_pose_search) continue;
-      EXPECT_TRUE(std::any_of(gated.quick_fits.begin(), gated.quick_fits.end(),
-                              [&](const QuickFieldFit& fit) { return fit.part == candidate.part; }))
-          << seed;
+      EXPECT_TRUE(ranked(gated, candidate.part)) << seed;
     }
     smaller += gated.parts_smaller_than_scene;
     thicker += gated.parts_thicker_than_scene;
@@ -250,8 +252,10 @@ TEST_F(RecognizerOnRegressionBase, TwoPartsSideBySideBoundNoPartsExtentWhenSever
   parameters.views_before_search = 0;
   parameters.resting.parts_touch_belt = true;
   const Recognizer recognizer(*base_, CosmosParameters{}, parameters);
-  const RangeImage left = scan("couplingdown", 42);
-  const RangeImage right = scan("fandisk", 43);
+  // Two of the base's parts, each narrower than the pair.
+  const std::vector<int> own_parts = {4, 3};
+  const RangeImage left = scan(base_->parts[static_cast<std::size_t>(own_parts[0])].name, 42);
+  const RangeImage right = scan(base_->parts[static_cast<std::size_t>(own_parts[1])].name, 43);
   ASSERT_EQ(left.pixel_size_x_mm, right.pixel_size_x_mm);
   ASSERT_EQ(left.pixel_size_y_mm, right.pixel_size_y_mm);
   RangeImage pair(left.width() + right.width(), std::max(left.height(), right.height()),
@@ -268,23 +272,14 @@ TEST_F(RecognizerOnRegressionBase, TwoPartsSideBySideBoundNoPartsExtentWhenSever
       pair.z_mm(column, row) = from.z_mm(from_column, row);
       if (from.belt_known()) pair.belt_seen(column, row) = from.belt_seen(from_column, row);
     }
-  const auto part_index = [&](const std::string& name) {
-    for (std::size_t p = 0; p < base_->parts.size(); ++p)
-      if (base_->parts[p].name == name) return static_cast<int>(p);
-    return -1;
-  };
-  const auto ranked = [](const RecognitionResult& result, int part) {
-    return std::any_of(result.quick_fits.begin(), result.quick_fits.end(),
-                       [part](const QuickFieldFit& fit) { return fit.part == part; });
-  };
   const RecognitionResult as_one = recognizer.recognize(pair, SceneParts::kOne);
   const RecognitionResult as_several = recognizer.recognize(pair, SceneParts::kOneOrMore);
   ASSERT_FALSE(as_several.quick_fits.empty());
   EXPECT_GE(as_one.parts_smaller_than_scene, 2);
   EXPECT_EQ(as_several.parts_smaller_than_scene, 0);
-  for (const std::string name : {"couplingdown", "fandisk"}) {
-    EXPECT_FALSE(ranked(as_one, part_index(name))) << name;
-    EXPECT_TRUE(ranked(as_several, part_index(name))) << name;
+  for (const int part : own_parts) {
+    EXPECT_FALSE(ranked(as_one, part)) << part;
+    EXPECT_TRUE(ranked(as_several, part)) << part;
   }
 }
 
