@@ -28,6 +28,7 @@
 #include "core/recognition/recognizer.hpp"
 #include "realtime/cell/cell_runner.hpp"
 #include "realtime/config/cell_config.hpp"
+#include "realtime/rt/helper_threads.hpp"
 #include "realtime/rt/latency_histogram.hpp"
 #include "realtime/web/web_view.hpp"
 
@@ -162,7 +163,8 @@ void run(const CellOptions& options) {
   recognition.surfaces = config.realtime.recognizer_surfaces;
   recognition.resting.parts_touch_belt = config.cell.parts_touch_belt;
   recognition.resting.parts_rest = config.cell.parts_rest;
-  const Recognizer recognizer(base, cosmos, recognition);
+  const HelperThreads recognition_helpers(config.realtime.threads.recognition_helpers);
+  const Recognizer recognizer(base, cosmos, recognition, &recognition_helpers);
   LcmPublisher lcm_publisher(config.lcm.url, config.lcm.channels());
   Publisher& publisher = web ? web->publisher(lcm_publisher) : lcm_publisher;
 

@@ -1,6 +1,6 @@
 // `cosmos eval --modelbase FILE --catalog FILE --tests N --seed S [--pose random|resting]
-// [--noise-mm S] [--unknown PART,...] [--only TEST,...] [--threads N] --out DIR`: N seeded scans
-// (random poses, or the parts' stable resting poses on the belt)
+// [--noise-mm S] [--unknown PART,...] [--only TEST,...] [--threads N] [--helpers N] --out DIR`:
+// N seeded scans (random poses, or the parts' stable resting poses on the belt)
 // of the base's parts and scans of parts it does not hold, each recognized; metrics.json and
 // report.html (sim/evaluation/evaluation_report.hpp) in DIR, and confusions.json: which part
 // was taken for which, and why known parts were rejected (evaluation_confusions.hpp). --only
@@ -23,6 +23,7 @@
 #include "core/input_error.hpp"
 #include "core/io/model_base_file.hpp"
 #include "core/io/recorded_parameters.hpp"
+#include "realtime/rt/helper_threads.hpp"
 #include "scanner/scanner_config.hpp"
 #include "sim/evaluation/add_s_distance.hpp"
 #include "sim/evaluation/evaluation_confusions.hpp"
@@ -51,6 +52,7 @@ struct EvalOptions {
   std::vector<std::string> unknown;
   std::vector<int> only;
   int threads = 1;
+  int helpers = 0;
   std::string out;
 };
 
@@ -110,6 +112,7 @@ void run(const EvalOptions& options) {
   if (options.out.empty()) throw InputError("eval: missing --out DIR");
   if (options.tests < 1) throw InputError("eval: --tests must be at least 1");
   if (options.threads < 1) throw InputError("eval: --threads must be at least 1");
+  if (options.helpers < 0) throw InputError("eval: --helpers must be at least 0");
   std::error_code error;
   fs::create_directories(options.out, error);
   if (error) throw InputError(options.out + ": cannot create directory (" + error.message() + ")");
@@ -136,7 +139,8 @@ void run(const EvalOptions& options) {
   RecognitionParameters recognition;
   recognition.resting.parts_touch_belt = true;
   recognition.resting.parts_rest = options.pose == "resting";
-  const Recognizer recognizer(base, cosmos, recognition);
+  const HelperThreads helpers(options.helpers);
+  const Recognizer recognizer(base, cosmos, recognition, &helpers);
   const std::vector<EvaluationRecord> records =
       run_tests(plan, parts, scanner, conditioning, recognizer, base, options.threads);
 
@@ -202,6 +206,9 @@ void install(CLI::App& root) {
   command->add_option("--threads", options->threads, "worker threads (timings are per thread)")
       ->check(within_range<int>(Range{1, kMaxThreads}))
       ->capture_default_str();
+  command->add_option("--helpers", options->helpers,
+                      "threads sharing each recognition's independent work, as in the cell "
+                      "(0: none, the recognition on one core; the results are the same)");
   command->add_option("--out", options->out, "output directory")->type_name("DIR");
   command->callback([options] { run(*options); });
 }

@@ -22,7 +22,8 @@
 // Needs the catalog meshes (scripts/fetch_catalog.sh). The whole-cell runs also need the
 // regression model base: $COSMOS_BENCH_MODEL_BASE, else build/test-data/regression-80.cmb
 // (ctest builds it, tests/CMakeLists.txt). $COSMOS_BENCH_CATALOG replaces the regression
-// catalog (its parts must be in the base). Run: build/bench/scan_loop_bench
+// catalog (its parts must be in the base); $COSMOS_BENCH_RECOGNITION_HELPERS replaces the
+// cell's default realtime.recognition_helpers. Run: build/bench/scan_loop_bench
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
@@ -47,6 +48,7 @@
 #include "realtime/lcm/profile_log_writer.hpp"
 #include "realtime/loop/profile_conditioner.hpp"
 #include "realtime/loop/scan_loop.hpp"
+#include "realtime/rt/helper_threads.hpp"
 #include "realtime/rt/latency_histogram.hpp"
 #include "realtime/sources/replay_source.hpp"
 #include "scanner/scanner_model.hpp"
@@ -206,6 +208,7 @@ BENCHMARK(Conditioning)->Arg(640)->Arg(1280)->Arg(3200)->Unit(benchmark::kMicros
 // The regression model base and its recognizer, loaded once for both whole-cell runs.
 struct BenchRecognition {
   std::unique_ptr<ModelBase> base;
+  std::unique_ptr<HelperThreads> helpers;
   std::unique_ptr<Recognizer> recognizer;
   std::string error;  // one line: why there is no model base
 };
@@ -220,8 +223,12 @@ const BenchRecognition& bench_recognition() {
     try {
       loaded.base = std::make_unique<ModelBase>(read_model_base(path));
       // The base was built with the default parameters (tests/CMakeLists.txt).
-      loaded.recognizer =
-          std::make_unique<Recognizer>(*loaded.base, CosmosParameters{}, RecognitionParameters{});
+      const char* helpers = std::getenv("COSMOS_BENCH_RECOGNITION_HELPERS");
+      loaded.helpers = std::make_unique<HelperThreads>(
+          helpers != nullptr && *helpers != '\0' ? std::atoi(helpers)
+                                                 : CellThreadSettings{}.recognition_helpers);
+      loaded.recognizer = std::make_unique<Recognizer>(
+          *loaded.base, CosmosParameters{}, RecognitionParameters{}, loaded.helpers.get());
     } catch (const std::exception& e) {
       loaded.error = "cannot read the model base " + path.string() + " (" + e.what() +
                      "): set COSMOS_BENCH_MODEL_BASE or build it with ctest";

@@ -57,9 +57,15 @@ const char* to_string(RecognitionStatus status) {
   return status == RecognitionStatus::kOk ? "ok" : "rejected";
 }
 
+const TaskRunner& one_after_another() {
+  static const SequentialTaskRunner runner;
+  return runner;
+}
+
 Recognizer::Recognizer(const ModelBase& model_base, const CosmosParameters& cosmos,
-                       const RecognitionParameters& parameters)
+                       const RecognitionParameters& parameters, const TaskRunner* tasks)
     : model_base_(model_base),
+      tasks_(tasks != nullptr ? *tasks : one_after_another()),
       cosmos_(cosmos),
       parameters_(parameters),
       selector_(model_base, parameters.selection) {
@@ -143,6 +149,31 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   // decision needs the best other part to compare with (part_ambiguity.hpp): once a view or a
   // search has explained the scene, the next selected views of parts not verified yet are
   // verified as its rivals, whichever order the views and the searches ran in.
+  // The first views_before_search selected views are verified in nearly every scene (all but
+  // a view of the part the first one found, passed over as its rival). With threads to spare
+  // they are verified at once, each with its own surfaces, and taken in order below as though
+  // verified there.
+  const std::size_t first_views =
+      tasks_.threads() > 1
+          ? std::min(selected.size(), static_cast<std::size_t>(parameters_.views_before_search))
+          : 0;
+  std::vector<RecognitionCandidate> first_verified(first_views);
+  std::vector<RecognitionTimings> first_timings(first_views);
+  tasks_.run(static_cast<int>(first_views), [&](int k) {
+    const auto view = static_cast<std::size_t>(k);
+    ModelSurfaces own(model_base_, parameters_.surfaces);
+    first_verified[view] =
+        verify(analysis, points, selected[view], k == 0 ? surfaces : own,
+               first_timings[view].matching_ms, first_timings[view].registration_ms);
+  });
+  const auto verified = [&](std::size_t view) {
+    if (view >= first_views)
+      return verify(analysis, points, selected[view], surfaces, result.timings.matching_ms,
+                    result.timings.registration_ms);
+    result.timings.matching_ms += first_timings[view].matching_ms;
+    result.timings.registration_ms += first_timings[view].registration_ms;
+    return std::move(first_verified[view]);
+  };
   std::size_t next = 0;
   bool rivals_verified = false;
   const auto verify_rivals = [&] {
@@ -153,18 +184,14 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
       if (std::any_of(result.candidates.begin(), result.candidates.end(),
                       [part](const RecognitionCandidate& c) { return c.part == part; }))
         continue;
-      result.candidates.push_back(verify(analysis, points, selected[next], surfaces,
-                                         result.timings.matching_ms,
-                                         result.timings.registration_ms));
+      result.candidates.push_back(verified(next));
       ++result.views_examined;
       ++rivals;
     }
   };
   const auto verify_selected = [&](std::size_t end) {
     while (next < end) {
-      result.candidates.push_back(verify(analysis, points, selected[next++], surfaces,
-                                         result.timings.matching_ms,
-                                         result.timings.registration_ms));
+      result.candidates.push_back(verified(next++));
       ++result.views_examined;
       if (explains_scene(result.candidates.back())) return verify_rivals();
     }

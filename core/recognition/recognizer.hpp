@@ -57,6 +57,7 @@
 #include "core/recognition/resting_pose_search.hpp"
 #include "core/recognition/size_variants.hpp"
 #include "core/recognition/surface_seen.hpp"
+#include "core/recognition/task_runner.hpp"
 #include "core/recognition/thin_scene.hpp"
 #include "core/registration/free_motion_search.hpp"
 #include "core/registration/registration_points.hpp"
@@ -365,8 +366,11 @@ struct RecognitionResult {
 class Recognizer {
  public:
   // The base must outlive the recognizer. `cosmos` must be what the base was built with.
+  // `tasks` (outliving the recognizer too) runs the independent work of a recognition: the
+  // first selected views' verifications, the parts' quick fits; none: one after another. The
+  // results are the same with any runner (task_runner.hpp).
   Recognizer(const ModelBase& model_base, const CosmosParameters& cosmos,
-             const RecognitionParameters& parameters);
+             const RecognitionParameters& parameters, const TaskRunner* tasks = nullptr);
 
   // `parts`: whether the scene holds one part, as a scan of a single part does, or possibly
   // several touching (part_size_gate.hpp: only one part bounds a part's size by the scene's).
@@ -404,6 +408,8 @@ class Recognizer {
   // empty when it is not. May search the rival's part and the winner's other sizes first.
   std::string decide(const ViewAnalysis& analysis, const ScenePoints& points,
                      ModelSurfaces& surfaces, RecognitionResult& result) const;
+  // The part's quick field fit (catalog_rank), what the search over every part ranks it by.
+  QuickFieldFit quick_fit(int part, const ScenePoints& scene_points) const;
 
   // A scene without enough fitted surface, from its range points (thin_scene.hpp): sets the
   // result's part, pose and figures when accepted; returns why the scene is rejected, empty
@@ -451,6 +457,7 @@ class Recognizer {
                           RecognitionCandidate& candidate) const;
 
   const ModelBase& model_base_;
+  const TaskRunner& tasks_;
   CosmosParameters cosmos_;
   RecognitionParameters parameters_;
   SpectralViewSelector selector_;

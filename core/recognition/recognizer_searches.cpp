@@ -13,6 +13,13 @@
 #include "core/stage_clock.hpp"
 
 namespace cosmos {
+namespace {
+
+// The shares of the parts whose quick fits a task runner may fit at once: a few per core of a
+// small machine, so that a share of slow parts does not leave the other cores idle at its end.
+constexpr int kQuickFitShares = 8;
+
+}  // namespace
 
 std::vector<int> close_fitting_parts(std::span<const QuickFieldFit> quick_fits,
                                      double close_fit_mm2) {
@@ -94,21 +101,17 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
   std::vector<QuickFieldFit>& ranked = result.quick_fits;
   if (quick_ranked) {
     const StageClock::time_point stage = StageClock::now();
-    ranked.clear();
-    for (int part : parts) {
-      std::vector<FieldHypothesis> quick =
-          quick_field_poses(scene_points.all, model_base_, part_search_model(part),
-                            parameters_.search, parameters_.catalog_rank);
-      const double unconstrained_fit_mm2 = quick.empty() ? std::numeric_limits<double>::infinity()
-                                                         : quick.front().truncated_mean_square_mm2;
-      drop_floating_poses(part, quick);
-      drop_poses_over_belt(part, scene_points.image, quick);
-      if (quick.empty())
-        ranked.push_back(
-            {part, parameters_.catalog_rank.floating_fit_factor * unconstrained_fit_mm2, false});
-      else
-        ranked.push_back({part, quick.front().truncated_mean_square_mm2, true});
-    }
+    ranked.assign(parts.size(), QuickFieldFit{});
+    // Each part's quick fit reads the scene and its own field alone: a few shares of the parts,
+    // each fitting its own into its own slots.
+    const int shares = std::min(static_cast<int>(parts.size()), kQuickFitShares);
+    tasks_.run(shares, [&](int share) {
+      const auto share_of = [&](int s) {
+        return parts.size() * static_cast<std::size_t>(s) / static_cast<std::size_t>(shares);
+      };
+      for (std::size_t k = share_of(share); k < share_of(share + 1); ++k)
+        ranked[k] = quick_fit(parts[k], scene_points);
+    });
     std::stable_sort(
         ranked.begin(), ranked.end(),
         [](const QuickFieldFit& a, const QuickFieldFit& b) { return a.fit_mm2 < b.fit_mm2; });
@@ -231,6 +234,19 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
     if (register_part(part.part, part.field_poses)) break;
   }
   return every_part;
+}
+
+QuickFieldFit Recognizer::quick_fit(int part, const ScenePoints& scene_points) const {
+  std::vector<FieldHypothesis> quick =
+      quick_field_poses(scene_points.all, model_base_, part_search_model(part), parameters_.search,
+                        parameters_.catalog_rank);
+  const double unconstrained_fit_mm2 = quick.empty() ? std::numeric_limits<double>::infinity()
+                                                     : quick.front().truncated_mean_square_mm2;
+  drop_floating_poses(part, quick);
+  drop_poses_over_belt(part, scene_points.image, quick);
+  if (quick.empty())
+    return {part, parameters_.catalog_rank.floating_fit_factor * unconstrained_fit_mm2, false};
+  return {part, quick.front().truncated_mean_square_mm2, true};
 }
 
 void Recognizer::drop_floating_poses(int part, std::vector<FieldHypothesis>& field_poses) const {

@@ -40,6 +40,11 @@ struct CellThreadSettings {
   // fraction of a core, so on two cores a second worker uses what it leaves; each worker in
   // use adds its recognition's working memory to the cell's peak.
   int recognizer_threads = 2;
+  // Threads besides the workers that take a share of one recognition's independent work (the
+  // first views' verifications, the parts' quick fits; helper_threads.hpp): while a single
+  // part is recognized, the core the other worker leaves idle shortens its latency. The poses
+  // are the same for any count.
+  int recognition_helpers = 1;
   // Blobs recognized between two trims of the heap (heap_policy.hpp). A trim gives the free
   // pages of the recognitions back to the system, and the next recognition faults its working
   // memory in anew, page by page: trimming after every blob keeps the memory flattest but puts
@@ -59,6 +64,10 @@ struct CellThreadSettings {
       "blobs recognized at once, each on its own thread; poses are published in the order "
       "the parts completed whatever the count",
       Range{1, 64});
+    v("recognition_helpers", recognition_helpers,
+      "threads that share a recognition's independent work with its worker (0: none); the "
+      "poses are the same for any count",
+      Range{0, 64});
     v("heap_trim_blobs", heap_trim_blobs,
       "blobs recognized between two trims of the heap's free pages (1: after each; more "
       "keeps recent recognitions' pages, tens of MB, and spares the next ones their faults)",

@@ -13,6 +13,7 @@
 #include "core/recognition/recognizer.hpp"
 #include "realtime/cell/cell_runner.hpp"
 #include "realtime/lcm/memory_publisher.hpp"
+#include "realtime/rt/helper_threads.hpp"
 #include "tests/regression_model_base.hpp"
 
 namespace cosmos {
@@ -70,10 +71,13 @@ class CellThreads : public ::testing::Test {
     search.coarse_registration_iterations = 2;
     search.fine_registration_iterations = 1;
     search.searched_parts = 0;
-    recognizer_ = std::make_unique<Recognizer>(*base_, CosmosParameters{}, search);
+    // The cell's helpers, so that a recognition's first views are verified on two threads.
+    helpers_ = std::make_unique<HelperThreads>(CellThreadSettings{}.recognition_helpers);
+    recognizer_ = std::make_unique<Recognizer>(*base_, CosmosParameters{}, search, helpers_.get());
   }
   static void TearDownTestSuite() {
     recognizer_.reset();
+    helpers_.reset();
     base_.reset();
   }
 
@@ -102,6 +106,7 @@ class CellThreads : public ::testing::Test {
   }
 
   static inline std::unique_ptr<ModelBase> base_;
+  static inline std::unique_ptr<HelperThreads> helpers_;
   static inline std::unique_ptr<Recognizer> recognizer_;
 };
 
