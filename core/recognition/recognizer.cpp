@@ -51,15 +51,15 @@ double candidate_score(double inlier_fraction, double rms_mm, double goodness,
   return inlier_fraction * residual_factor * (0.8 + 0.2 * std::clamp(goodness, 0.0, 1.0));
 }
 
+const TaskRunner& one_after_another() {
+  static const SequentialTaskRunner runner;
+  return runner;
+}
+
 }  // namespace
 
 const char* to_string(RecognitionStatus status) {
   return status == RecognitionStatus::kOk ? "ok" : "rejected";
-}
-
-const TaskRunner& one_after_another() {
-  static const SequentialTaskRunner runner;
-  return runner;
 }
 
 Recognizer::Recognizer(const ModelBase& model_base, const CosmosParameters& cosmos,
@@ -145,10 +145,6 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   points.coarse = spread_subset(points.all, parameters_.coarse_points);
   points.extent = scene_extent(points.all, scene);
   ModelSurfaces surfaces(model_base_, parameters_.surfaces);
-  // Verifies the selected views from `next` up to `end` until one explains the scene. The
-  // decision needs the best other part to compare with (part_ambiguity.hpp): once a view or a
-  // search has explained the scene, the next selected views of parts not verified yet are
-  // verified as its rivals, whichever order the views and the searches ran in.
   // The first views_before_search selected views are verified in nearly every scene (all but
   // a view of the part the first one found, passed over as its rival). With threads to spare
   // they are verified at once, each with its own surfaces, and taken in order below as though
@@ -161,10 +157,14 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   std::vector<RecognitionTimings> first_timings(first_views);
   tasks_.run(static_cast<int>(first_views), [&](int k) {
     const auto view = static_cast<std::size_t>(k);
+    const auto verify_with = [&](ModelSurfaces& view_surfaces) {
+      first_verified[view] =
+          verify(analysis, points, selected[view], view_surfaces, first_timings[view].matching_ms,
+                 first_timings[view].registration_ms);
+    };
+    if (k == 0) return verify_with(surfaces);
     ModelSurfaces own(model_base_, parameters_.surfaces);
-    first_verified[view] =
-        verify(analysis, points, selected[view], k == 0 ? surfaces : own,
-               first_timings[view].matching_ms, first_timings[view].registration_ms);
+    verify_with(own);
   });
   const auto verified = [&](std::size_t view) {
     if (view >= first_views)
@@ -174,6 +174,10 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
     result.timings.registration_ms += first_timings[view].registration_ms;
     return std::move(first_verified[view]);
   };
+  // Verifies the selected views from `next` up to `end` until one explains the scene. The
+  // decision needs the best other part to compare with (part_ambiguity.hpp): once a view or a
+  // search has explained the scene, the next selected views of parts not verified yet are
+  // verified as its rivals, whichever order the views and the searches ran in.
   std::size_t next = 0;
   bool rivals_verified = false;
   const auto verify_rivals = [&] {
