@@ -206,9 +206,12 @@ void install(CLI::App& root) {
   command->add_option("--threads", options->threads, "worker threads (timings are per thread)")
       ->check(within_range<int>(Range{1, kMaxThreads}))
       ->capture_default_str();
-  command->add_option("--helpers", options->helpers,
-                      "threads sharing each recognition's independent work, as in the cell "
-                      "(0: none, the recognition on one core; the results are the same)");
+  command
+      ->add_option("--helpers", options->helpers,
+                   "threads sharing each recognition's independent work, as in the cell "
+                   "(0: none, the recognition on one core; the results are the same)")
+      ->check(within_range<int>(Range{0, kMaxThreads}))
+      ->capture_default_str();
   command->add_option("--out", options->out, "output directory")->type_name("DIR");
   command->callback([options] { run(*options); });
 }

@@ -1,10 +1,10 @@
 #pragma once
 // A TaskRunner (core/recognition/task_runner.hpp) with helper threads: the calling thread runs
-// a batch's tasks itself and the helpers take what it has not reached yet, so a batch ends no
-// later than it would on the caller alone, and sooner when a helper's core is free. In the
-// cell a recognition worker is the caller: while the other worker is idle (one part at a time
-// on the belt), the helpers give the one recognition in flight the core the acquisition thread
-// leaves. Several callers may run batches at once; the helpers serve the oldest first.
+// a batch's tasks itself and the helpers take what it has not reached yet, so the caller only
+// ever waits for a task that has started, and a batch ends sooner when a helper's core is free.
+// In the cell a recognition worker is the caller: while the other worker is idle (one part at a
+// time on the belt), the helpers give the one recognition in flight the core the acquisition
+// thread leaves. Several callers may run batches at once; the helpers serve the oldest first.
 //
 // Under a lock and a condition variable: for the recognizer's batches (each task a view's
 // verification or a share of the parts' quick fits), never for the acquisition thread.
@@ -36,7 +36,7 @@ class HelperThreads final : public TaskRunner {
     const std::function<void(int)>* task = nullptr;
     int count = 0;
     int next = 0;                // the next task not taken yet
-    int running = 0;             // taken by a helper and not ended
+    int running = 0;             // taken (by the caller or a helper) and not ended
     std::exception_ptr failure;  // the first task's exception, rethrown by the caller
   };
   // Takes the batch's next task under the lock, runs it without, and records its end.
