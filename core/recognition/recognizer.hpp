@@ -390,13 +390,12 @@ class Recognizer {
 
  private:
   // The scene's control points, the spread subset of coarse_points taken once, the scene's
-  // image, where a placed candidate's surface is looked up (surface_seen.hpp), and its size
-  // with whether it holds one part (part_size_gate.hpp).
+  // image, where a placed candidate's surface is looked up (surface_seen.hpp), and whether it
+  // holds one part (part_size_gate.hpp).
   struct ScenePoints {
     RegistrationPoints all;
     RegistrationPoints coarse;
     const RangeImage& image;
-    SceneExtent extent;
     SceneParts parts = SceneParts::kOne;
   };
   // The candidate reaches sufficient_support, at rest, with sufficient_seen_fraction of its

@@ -87,10 +87,11 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
   // (part_size_gate.hpp): in a large catalog many of them, before any is fitted.
   if (only_parts.empty()) {
     result.parts_smaller_than_scene = result.parts_thicker_than_scene = 0;
+    const SceneExtent extent = scene_extent(scene_points.all, scene_points.image);
     std::erase_if(parts, [&](int part) {
-      const SizeVerdict verdict = judge_part_size(
-          part_extents_[static_cast<std::size_t>(part)], scene_points.extent, scene_points.parts,
-          parameters_.resting.parts_touch_belt, parameters_.size_gate);
+      const SizeVerdict verdict =
+          judge_part_size(part_extents_[static_cast<std::size_t>(part)], extent, scene_points.parts,
+                          parameters_.resting.parts_touch_belt, parameters_.size_gate);
       result.parts_smaller_than_scene += verdict == SizeVerdict::kSmallerThanScene ? 1 : 0;
       result.parts_thicker_than_scene += verdict == SizeVerdict::kThickerThanScene ? 1 : 0;
       return verdict != SizeVerdict::kFits;

@@ -102,7 +102,10 @@ bool PieceJoiner::recognize_together(const Piece& piece, const PartBuilder& buil
     if (held.shadow && near(held, piece)) images.push_back(&held.image);
   if (images.size() < 2) return false;
   RangeImage joined = union_image(images);
-  RecognitionResult result = context_.recognizer->recognize(joined);
+  // Recognized together on the premise that the pieces are one part's, cut apart by its
+  // shadow: that part spans them all (part_size_gate.hpp), and pieces of several parts are
+  // explained by none.
+  RecognitionResult result = context_.recognizer->recognize(joined, SceneParts::kOne);
   if (result.status != RecognitionStatus::kOk) return false;
   PartRecognition together = recognition_of(std::move(result), builder.built(), context_, 0);
   mark_stream_fault(together, builder, context_);
