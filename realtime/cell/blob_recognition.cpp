@@ -91,14 +91,16 @@ struct Unrecognized {
 // its necks, or reported.
 class SceneRecognition {
  public:
-  SceneRecognition(const BuiltPart& built, const PartRecognitionContext& context,
+  // `pieces`: the blob's builders' parts, one or a group's (recognize_blob_group).
+  SceneRecognition(std::vector<BuiltPart> pieces, const PartRecognitionContext& context,
                    std::int64_t part_seq)
-      : built_(built),
+      : pieces_(std::move(pieces)),
+        built_(group_stamps(pieces_)),
         context_(context),
         parameters_(context.blob),
         part_seq_(part_seq),
         start_(std::chrono::steady_clock::now()) {
-    whole_ = extract_part_view(built, context);
+    whole_ = extract_group_view(pieces_, context);
     const PartView& view = *whole_;
     width_ = view.image.width();
     height_ = view.image.height();
@@ -108,18 +110,6 @@ class SceneRecognition {
     blob_.points_loop_mm = sampled_points(view.image);
     blob_.image = view.image;
     explained_.assign(pixel_count(), 0);
-  }
-
-  const std::vector<Eigen::Vector3d>& points_loop_mm() const { return blob_.points_loop_mm; }
-
-  // The blob, not recognized: a piece of the part recognized after it.
-  BlobRecognition piece_of_successor() {
-    RecognitionResult result;
-    result.reason = "a piece of the part after it";
-    Unrecognized piece{recognition_of(std::move(result), built_, context_, next_seq()),
-                       remaining_of(whole_->image), whole_->image};
-    report(piece, false);
-    return std::move(blob_);
   }
 
   BlobRecognition run() {
@@ -173,7 +163,7 @@ class SceneRecognition {
                                                std::optional<PartView> prepared = {}) {
     for (std::size_t i = 0; i < excluded.size(); ++i) excluded[i] |= explained_[i];
     PartView view =
-        prepared ? std::move(*prepared) : extract_part_view(built_, context_, &excluded);
+        prepared ? std::move(*prepared) : extract_group_view(pieces_, context_, &excluded);
     Remaining remaining = remaining_of(view.image);
     if (min_start_mm2 > 0 && unexplained_mm2(view.image, remaining) < min_start_mm2) return {};
     double features_ms =
@@ -212,7 +202,7 @@ class SceneRecognition {
       // a segmentation on the part's latency path.
       remaining = remaining_of(blob_.image, &excluded);
       if (unexplained_mm2(blob_.image, remaining) < min_unexplained_mm2_) return {};
-      view = extract_part_view(built_, context_, &excluded);
+      view = extract_group_view(pieces_, context_, &excluded);
       if (static_cast<int>(blob_.parts.size()) >= parameters_.max_parts_per_blob) {
         // What remains is reported, not recognized: the blob has used its recognitions.
         PartRecognition rest = blob_.parts.back();
@@ -331,7 +321,8 @@ class SceneRecognition {
     blob_.parts.push_back(std::move(rest));
   }
 
-  const BuiltPart& built_;
+  const std::vector<BuiltPart> pieces_;
+  const BuiltPart built_;  // the pieces' stamps as one
   const PartRecognitionContext& context_;
   const BlobRecognitionParameters& parameters_;
   std::int64_t part_seq_;
@@ -348,28 +339,48 @@ class SceneRecognition {
 
 BlobRecognition recognize_blob(const BuiltPart& built, const PartRecognitionContext& context,
                                std::int64_t part_seq) {
-  return SceneRecognition(built, context, part_seq).run();
+  return SceneRecognition({built}, context, part_seq).run();
+}
+
+BlobRecognition recognize_blob(const std::vector<BuiltPart>& pieces,
+                               const PartRecognitionContext& context, std::int64_t part_seq) {
+  return SceneRecognition(pieces, context, part_seq).run();
 }
 
 BlobRecognition recognize_blob(PartBuilder& builder, const PartRecognitionContext& context,
                                std::int64_t part_seq) {
-  builder.cosmos.finish();
-  BlobRecognition blob = recognize_blob(builder.built(), context, part_seq);
-  for (PartRecognition& part : blob.parts) mark_stream_fault(part, builder, context);
-  return blob;
+  return recognize_blob_group({&builder}, context, part_seq);
 }
 
-BlobRecognition recognize_blob_unless_explained(PartBuilder& builder,
-                                                const PartRecognitionContext& context,
-                                                const std::vector<PartInLoop>& successor_parts,
-                                                std::size_t successor_points,
-                                                std::int64_t part_seq) {
-  builder.cosmos.finish();
-  SceneRecognition scene(builder.built(), context, part_seq);
-  const bool explained = scene.points_loop_mm().size() < successor_points &&
-                         piece_explained_by(scene.points_loop_mm(), successor_parts, context);
-  BlobRecognition blob = explained ? scene.piece_of_successor() : scene.run();
-  for (PartRecognition& part : blob.parts) mark_stream_fault(part, builder, context);
+BuiltPart group_stamps(const std::vector<BuiltPart>& pieces) {
+  if (pieces.size() == 1) return pieces.front();
+  BuiltPart group = pieces.front();
+  const BuiltPart& last = pieces.back();
+  group.cosmos = nullptr;
+  group.rows = static_cast<int>(last.first_profile + last.rows - group.first_profile);
+  group.last_data_profile = last.last_data_profile;
+  group.last_data_encoder_ticks = last.last_data_encoder_ticks;
+  group.last_data_t_us = last.last_data_t_us;
+  for (const BuiltPart& piece : pieces) {
+    group.column_min = std::min(group.column_min, piece.column_min);
+    group.column_max = std::max(group.column_max, piece.column_max);
+    group.max_z_mm = std::max(group.max_z_mm, piece.max_z_mm);
+  }
+  group.truncated = last.truncated;
+  group.tracked_rows = group.rows + (last.tracked_rows - last.rows);
+  return group;
+}
+
+BlobRecognition recognize_blob_group(const std::vector<PartBuilder*>& pieces,
+                                     const PartRecognitionContext& context, std::int64_t part_seq) {
+  std::vector<BuiltPart> built;
+  for (PartBuilder* piece : pieces) {
+    piece->cosmos.finish();
+    built.push_back(piece->built());
+  }
+  BlobRecognition blob = recognize_blob(built, context, part_seq);
+  for (PartRecognition& part : blob.parts)
+    for (const PartBuilder* piece : pieces) mark_stream_fault(part, *piece, context);
   return blob;
 }
 

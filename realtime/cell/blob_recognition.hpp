@@ -16,7 +16,6 @@
 #include <vector>
 
 #include "realtime/cell/part_recognition.hpp"
-#include "realtime/cell/piece_explained.hpp"
 
 namespace cosmos {
 
@@ -43,23 +42,26 @@ struct BlobRecognition {
 // built part's rows must be final (extract_part_view); stream faults are not marked.
 BlobRecognition recognize_blob(const BuiltPart& built, const PartRecognitionContext& context,
                                std::int64_t part_seq);
+// A group's pieces (recognize_blob_group) whose rows are final, in the order they started.
+BlobRecognition recognize_blob(const std::vector<BuiltPart>& pieces,
+                               const PartRecognitionContext& context, std::int64_t part_seq);
 // A completed builder: its COSMOS finished, the blob recognized and its stream faults marked
 // (mark_stream_fault).
 BlobRecognition recognize_blob(PartBuilder& builder, const PartRecognitionContext& context,
                                std::int64_t part_seq);
 
-// A leading piece: a completed builder whose successor, a blob the tracker linked to it
-// softly across a gap its shadow can explain, is recognized already. When one of the
-// successor's parts explains most of the piece and the piece is the smaller of the two (the
-// joiner would then drop the piece whatever it was recognized as, piece_joiner.hpp), it is
-// not recognized: it comes out as a rejection the joiner drops. A shadow-cut feature in
-// front of a part (an elephant's trunk tip) is too small to be recognized and floats above the
-// belt, and its failed recognition was the costliest of a cell's. Otherwise: recognize_blob.
-BlobRecognition recognize_blob_unless_explained(PartBuilder& builder,
-                                                const PartRecognitionContext& context,
-                                                const std::vector<PartInLoop>& successor_parts,
-                                                std::size_t successor_points,
-                                                std::int64_t part_seq);
+// A group of completed builders that the tracker linked softly, each to the one before, across
+// gaps a part's own shadow can explain (part_tracker.hpp): a part its shadows cut into
+// pieces, or neighbours close enough for the shadow of one to reach the other. The pieces
+// are recognized as one blob, from one view of them all (extract_group_view): a piece is no
+// part alone, and recognized alone it floats above the belt and fits nearly nothing, after
+// the costliest search of all; neighbours are taken apart as touching parts are. The poses
+// hold at the last piece's last row; stream faults are marked. One builder: recognize_blob.
+BlobRecognition recognize_blob_group(const std::vector<PartBuilder*>& pieces,
+                                     const PartRecognitionContext& context, std::int64_t part_seq);
+// The stamps of a group's pieces (in the order they started) as one built part: its rows run
+// from the first piece's first to the last piece's last; it has no pipeline of its own.
+BuiltPart group_stamps(const std::vector<BuiltPart>& pieces);
 
 // The ERROR pose of a part the loop dropped, at the centre of its tracked extent.
 PartRecognition report_lost_part(const LostPart& lost, const PartRecognitionContext& context,

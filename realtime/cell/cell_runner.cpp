@@ -92,29 +92,52 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
   std::vector<std::optional<BlobRecognition>> results(builders);
   std::deque<int> ahead_queue;      // speculative parts waiting for a worker
   std::deque<int> completed_order;  // completed builders, oldest first
-  // A leading piece (a blob with a soft successor, part_tracker.hpp) waits for its successor's
-  // recognition, and is then recognized only when none of the successor's parts explains it
-  // (recognize_blob_unless_explained); per builder: whether it waits, and the successor's
-  // recognized parts and surface size once known.
-  std::vector<std::uint8_t> awaits_successor(builders, 0);
-  std::vector<std::vector<PartInLoop>> successor_parts(builders);
-  std::vector<std::size_t> successor_points(builders, 0);
-  // Jobs: a builder index; kAhead plus it for a speculative one; kAfterSuccessor plus it for
-  // a leading piece whose successor is recognized. A blob's recognition depends on its rows
-  // (and a leading piece's on its successor's) alone; its part_seq is given in order by
-  // publish().
+  // Blobs the tracker linked softly, each to the one before (part_tracker.hpp), are one group,
+  // recognized as one blob (recognize_blob_group) once its last piece has completed; their
+  // own speculative recognitions are not used. Per builder: its group's first piece (-1:
+  // none); per first piece: the group's pieces in order, and whether one may still join it.
+  // The groups follow from the tracker's links alone, so the poses do not depend on timing.
+  std::vector<int> group_of(builders, -1);
+  std::vector<std::vector<int>> group_pieces(builders);
+  std::vector<std::vector<PartBuilder*>> group_builders(builders);
+  std::vector<std::uint8_t> group_open(builders, 0);
+  // A speculative part that continues an open group is recognized ahead with the group's
+  // pieces: per builder, the tracker's soft link when it was sent ahead, and the pieces its
+  // speculative recognition took (empty: it alone). The result holds at completion when the
+  // group turned out to be those pieces, each the same.
+  std::vector<std::int64_t> ahead_link(builders, -1);
+  std::vector<std::vector<int>> ahead_pieces(builders);
+  // Per builder: speculative group recognitions reading it as an earlier piece.
+  std::vector<int> read_ahead(builders, 0);
+  const auto idle = [&](int piece) {
+    const auto k = static_cast<std::size_t>(piece);
+    return read_ahead[k] == 0 && (stage[k] == Stage::kNone || stage[k] == Stage::kAheadDone);
+  };
+  // Jobs: a builder index; kAhead plus it for a speculative one; kGroup plus its first
+  // piece for a group; kAheadGroup plus its last piece for a group with a speculative last
+  // piece. A blob's recognition depends on its rows (a group's on its pieces') alone; its
+  // part_seq is given in order by publish().
   constexpr int kAhead = 1 << 20;
-  constexpr int kAfterSuccessor = 2 << 20;
+  constexpr int kGroup = 2 << 20;
+  constexpr int kAheadGroup = 3 << 20;
   OrderedWorkers<BlobRecognition> workers(
       settings.threads.recognizer_threads,
       [&](int job) {
         if (settings.recognizer_delay_ms > 0)
           std::this_thread::sleep_for(std::chrono::milliseconds(settings.recognizer_delay_ms));
-        if (job >= kAfterSuccessor) {
-          const auto k = static_cast<std::size_t>(job - kAfterSuccessor);
-          return recognize_blob_unless_explained(loop.builder(job - kAfterSuccessor), context,
-                                                 successor_parts[k], successor_points[k], 0);
+        if (job >= kAheadGroup) {
+          const int last = job - kAheadGroup;
+          std::vector<BuiltPart> pieces;
+          for (const int piece : ahead_pieces[static_cast<std::size_t>(last)]) {
+            loop.builder(piece).cosmos.finish();
+            pieces.push_back(piece == last ? ahead[static_cast<std::size_t>(last)]
+                                           : loop.builder(piece).built());
+          }
+          return recognize_blob(pieces, context, 0);
         }
+        if (job >= kGroup)
+          return recognize_blob_group(group_builders[static_cast<std::size_t>(job - kGroup)],
+                                      context, 0);
         if (job >= kAhead) {
           // The loop left the builder's pipeline to this worker (ScanLoop::speculate).
           loop.builder(job - kAhead).cosmos.finish();
@@ -126,14 +149,35 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
   const auto end_ahead = [&](int index) {
     while (!loop.speculated().try_push(index)) std::this_thread::sleep_for(kIdleWait);
   };
-  // The completed blob the tracker linked softly to `piece` as its continuation, or -1.
-  const auto successor_of = [&](int piece) {
-    const PartBuilder& leading = loop.builder(piece);
-    for (const int later : completed_order) {
-      const std::int64_t link = loop.builder(later).soft_link_of;
-      if (later != piece && link >= 0 && leading.owns(link)) return later;
+  // The first piece of the open group whose last piece owns the tracker id `link`, or -1.
+  const auto group_continued_by = [&](std::int64_t link) {
+    if (link < 0) return -1;
+    for (const int earlier : completed_order) {
+      const int first = group_of[static_cast<std::size_t>(earlier)];
+      if (first >= 0 && group_open[static_cast<std::size_t>(first)] &&
+          group_pieces[static_cast<std::size_t>(first)].back() == earlier &&
+          loop.builder(earlier).owns(link))
+        return first;
     }
     return -1;
+  };
+  // A completed blob joins the open group whose last piece it continues, or starts one when
+  // a later blob may continue it.
+  const auto join_group = [&](int index) {
+    const auto k = static_cast<std::size_t>(index);
+    const PartBuilder& completed = loop.builder(index);
+    group_of[k] = -1;
+    const int first = group_continued_by(completed.soft_link_of);
+    if (first >= 0) {
+      group_of[k] = first;
+      group_pieces[static_cast<std::size_t>(first)].push_back(index);
+    }
+    const bool continued = completed.has_soft_successor && !completed.truncated;
+    if (group_of[k] < 0 && continued) {
+      group_of[k] = index;
+      group_pieces[k] = {index};
+    }
+    if (group_of[k] >= 0) group_open[static_cast<std::size_t>(group_of[k])] = continued ? 1 : 0;
   };
   for (;;) {
     const std::uint32_t seen = status.recognizer_wake.epoch();
@@ -148,6 +192,7 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
     while (loop.speculative().try_pop(early)) {
       const auto k = static_cast<std::size_t>(early.builder);
       ahead[k] = early.built;
+      ahead_link[k] = early.soft_link_of;
       results[k].reset();
       stage[k] = Stage::kAheadQueued;
       ahead_queue.push_back(early.builder);
@@ -155,20 +200,66 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
     int index = -1;
     while (loop.completed().try_pop(index)) {
       completed_order.push_back(index);
-      const PartBuilder& completed = loop.builder(index);
-      awaits_successor[static_cast<std::size_t>(index)] =
-          completed.has_soft_successor && !completed.truncated;
+      join_group(index);
     }
     // Completed parts first (they are on the latency path), oldest first.
     for (const int done : completed_order) {
       const auto k = static_cast<std::size_t>(done);
+      if (group_of[k] >= 0) {
+        if (stage[k] == Stage::kAheadQueued) {
+          ahead_queue.erase(std::find(ahead_queue.begin(), ahead_queue.end(), done));
+          end_ahead(done);
+          stage[k] = Stage::kNone;
+        }
+        // A later piece's speculative recognition is judged with the first piece.
+        if (group_of[k] != done) continue;
+        if (stage[k] == Stage::kAheadDone) {
+          results[k].reset();  // of the first piece alone
+          stage[k] = Stage::kNone;
+        }
+        if (stage[k] != Stage::kNone) continue;
+        const std::vector<int>& pieces = group_pieces[k];
+        const auto last = static_cast<std::size_t>(pieces.back());
+        // The last piece's successor started before it completed: it has completed and joined,
+        // is still open, or is gone (merged into another part, lost) once every part that
+        // started by then has completed.
+        if (group_open[k] && unfinished_from_profile > loop.builder(pieces.back()).last_profile)
+          group_open[k] = 0;
+        // A piece's speculative recognition still reads the builders' pipelines.
+        const bool pieces_idle = std::all_of(pieces.begin(), pieces.end(), idle);
+        if (group_open[k] || !pieces_idle) continue;
+        if (stage[last] == Stage::kAheadDone && ahead_pieces[last] == pieces &&
+            ahead[last].same_as(loop.builder(pieces.back()).built())) {
+          // Recognized ahead as this very group.
+          results[k] = std::move(results[last]);
+          for (PartRecognition& part : results[k]->parts)
+            for (const int piece : pieces) mark_stream_fault(part, loop.builder(piece), context);
+          for (const int piece : pieces) {
+            if (piece != done) results[static_cast<std::size_t>(piece)].emplace();
+            stage[static_cast<std::size_t>(piece)] = Stage::kReady;
+          }
+          status.blobs_recognized_ahead.fetch_add(1, std::memory_order_relaxed);
+          continue;
+        }
+        if (!workers.can_submit()) continue;
+        group_builders[k].clear();
+        for (const int piece : pieces) {
+          results[static_cast<std::size_t>(piece)].reset();
+          stage[static_cast<std::size_t>(piece)] = Stage::kRunning;
+          group_builders[k].push_back(&loop.builder(piece));
+        }
+        workers.submit(done + kGroup);
+        status.blobs_recognized_at_completion.fetch_add(1, std::memory_order_relaxed);
+        continue;
+      }
       if (stage[k] == Stage::kAheadQueued) {
         // Completed before a worker took it up: recognized as any completed part.
         ahead_queue.erase(std::find(ahead_queue.begin(), ahead_queue.end(), done));
         end_ahead(done);
         stage[k] = Stage::kNone;
       } else if (stage[k] == Stage::kAheadDone) {
-        if (ahead[k].same_as(loop.builder(done).built())) {
+        // Recognized ahead alone, not as the last piece of a group it did not join.
+        if (ahead_pieces[k].empty() && ahead[k].same_as(loop.builder(done).built())) {
           for (PartRecognition& part : results[k]->parts)
             mark_stream_fault(part, loop.builder(done), context);
           stage[k] = Stage::kReady;
@@ -178,54 +269,57 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
           stage[k] = Stage::kNone;
         }
       }
-      if (stage[k] == Stage::kNone && awaits_successor[k]) {
-        // Its successor started before it completed: it is in completed_order, still open,
-        // or gone (merged into another part, lost) once every part that started by then has
-        // completed; then the piece is recognized as any blob.
-        const int successor = successor_of(done);
-        if (successor >= 0 && stage[static_cast<std::size_t>(successor)] == Stage::kReady &&
-            workers.can_submit()) {
-          const BlobRecognition& after = *results[static_cast<std::size_t>(successor)];
-          successor_parts[k].clear();
-          for (const PartRecognition& part : after.parts)
-            if (part.pose.status == PoseStatus::kOk)
-              successor_parts[k].push_back({part.result.part, part.result.T_scanner_part});
-          successor_points[k] = after.points_loop_mm.size();
-          workers.submit(done + kAfterSuccessor);
-          stage[k] = Stage::kRunning;
-          awaits_successor[k] = 0;
-          status.blobs_recognized_at_completion.fetch_add(1, std::memory_order_relaxed);
-          continue;
-        }
-        if (successor >= 0 || unfinished_from_profile <= loop.builder(done).last_profile) continue;
-        awaits_successor[k] = 0;
-      }
       if (stage[k] == Stage::kNone && workers.can_submit()) {
         workers.submit(done);
         stage[k] = Stage::kRunning;
         status.blobs_recognized_at_completion.fetch_add(1, std::memory_order_relaxed);
       }
     }
-    while (workers.can_submit() && !ahead_queue.empty()) {
-      const int next = ahead_queue.front();
-      ahead_queue.pop_front();
-      stage[static_cast<std::size_t>(next)] = Stage::kAheadRunning;
-      workers.submit(next + kAhead);
+    for (auto next = ahead_queue.begin(); next != ahead_queue.end() && workers.can_submit();) {
+      const auto k = static_cast<std::size_t>(*next);
+      ahead_pieces[k].clear();
+      const int first = group_continued_by(ahead_link[k]);
+      if (first >= 0) {
+        // It continues an open group: recognized ahead with the group's pieces, once no other
+        // recognition reads them.
+        const std::vector<int>& pieces = group_pieces[static_cast<std::size_t>(first)];
+        if (!std::all_of(pieces.begin(), pieces.end(), idle)) {
+          ++next;
+          continue;
+        }
+        ahead_pieces[k] = pieces;
+        ahead_pieces[k].push_back(*next);
+        for (const int piece : pieces) ++read_ahead[static_cast<std::size_t>(piece)];
+      }
+      stage[k] = Stage::kAheadRunning;
+      workers.submit(*next + (first >= 0 ? kAheadGroup : kAhead));
+      next = ahead_queue.erase(next);
     }
     bool progressed = false;
     while (auto finished = workers.take_oldest()) {
       progressed = true;
-      const bool early_job = finished->job >= kAhead && finished->job < kAfterSuccessor;
-      const int job = finished->job >= kAfterSuccessor ? finished->job - kAfterSuccessor
-                      : early_job                      ? finished->job - kAhead
-                                                       : finished->job;
+      const bool group_job = finished->job >= kGroup && finished->job < kAheadGroup;
+      const bool early_job = finished->job >= kAhead && !group_job;
+      const int job = finished->job >= kAheadGroup ? finished->job - kAheadGroup
+                      : group_job                  ? finished->job - kGroup
+                      : early_job                  ? finished->job - kAhead
+                                                   : finished->job;
       const auto k = static_cast<std::size_t>(job);
       results[k] = std::move(finished->result);
       stage[k] = early_job ? Stage::kAheadDone : Stage::kReady;
       if (early_job) end_ahead(job);
+      for (const int piece : ahead_pieces[k])
+        if (piece != job && finished->job >= kAheadGroup)
+          --read_ahead[static_cast<std::size_t>(piece)];
+      if (group_job)
+        for (const int piece : group_pieces[k])
+          if (piece != job) {
+            results[static_cast<std::size_t>(piece)].emplace();
+            stage[static_cast<std::size_t>(piece)] = Stage::kReady;
+          }
     }
     // Blobs are joined and published in the order they completed, whichever worker is done
-    // first.
+    // first; a group's blob with its first piece, the others adding nothing.
     while (!completed_order.empty() &&
            stage[static_cast<std::size_t>(completed_order.front())] == Stage::kReady) {
       const int done = completed_order.front();
@@ -234,10 +328,15 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
       BlobRecognition blob = std::move(*results[k]);
       results[k].reset();
       stage[k] = Stage::kNone;
-      status.blobs_merged.fetch_add(blob.merged ? 1 : 0, std::memory_order_relaxed);
-      std::vector<JoinedRecognition> ready = joiner.add(std::move(blob), loop.builder(done));
+      const int first = group_of[k];
+      group_of[k] = -1;
+      if (first < 0 || first == done) {
+        status.blobs_merged.fetch_add(blob.merged ? 1 : 0, std::memory_order_relaxed);
+        const PartBuilder& last = loop.builder(first < 0 ? done : group_pieces[k].back());
+        for (JoinedRecognition& joined : joiner.add(std::move(blob), loop.builder(done), last))
+          publish(std::move(joined));
+      }
       loop.returned().try_push(done);  // room for every builder: never full
-      for (JoinedRecognition& joined : ready) publish(std::move(joined));
       if (++blobs_since_trim >= settings.threads.heap_trim_blobs) {
         return_free_heap_pages();
         blobs_since_trim = 0;

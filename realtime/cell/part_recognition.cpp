@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "core/representation/cosmos_pipeline.hpp"
 
@@ -29,28 +30,30 @@ int part_view_first_column(const BuiltPart& built) {
   return std::max(0, built.column_min - kColumnMargin);
 }
 
-PartView extract_part_view(const BuiltPart& built, const PartRecognitionContext& context,
-                           const std::vector<std::uint8_t>* excluded) {
-  const IncrementalCosmos& source = *built.cosmos;
-  const int full_width = source.width();
-  const int c0 = part_view_first_column(built);
-  const int c1 = std::min(full_width - 1, built.column_max + kColumnMargin);
-  const int width = c1 - c0 + 1;
-  const int height = built.rows;
+namespace {
 
-  PartView part;
-  part.image = RangeImage(width, height, context.grid_mm, context.grid_mm);
-  part.image.origin_x_mm = source.origin_x_mm() + c0 * context.grid_mm;
-  part.image.origin_y_mm = source.origin_y_mm();
-  // Where the belt was measured, over the whole view: a pixel of another part or of a shadow
-  // is not belt (surface_seen.hpp).
-  part.image.belt_seen = PixelGrid<std::uint8_t>(width, height, 0);
+// The loop-frame columns [first, last] of a part's view.
+std::pair<int, int> view_columns(const BuiltPart& built) {
+  return {part_view_first_column(built),
+          std::min(built.cosmos->width() - 1, built.column_max + kColumnMargin)};
+}
+
+// Copies the pixels the part owns (and `excluded`, over the whole view, does not take away)
+// into `part`, whose row 0 is `row0` rows above the part's first and whose column 0 is
+// loop-frame column `c0`: range, belt, frames and fields.
+void copy_part_pixels(const BuiltPart& built, const std::vector<std::uint8_t>* excluded, int c0,
+                      int row0, PartView& part) {
+  const IncrementalCosmos& source = *built.cosmos;
+  const auto [first_column, last_column] = view_columns(built);
+  const int view_width = part.image.width();
+  const int width = last_column - first_column + 1;
+  const int dx = first_column - c0;
+  const int height = built.rows;
   for (int row = 0; row < height; ++row)
-    for (int x = 0; x < width; ++x) part.image.belt_seen(x, row) = source.belt_seen(c0 + x, row);
+    for (int x = 0; x < width; ++x)
+      part.image.belt_seen(x + dx, row + row0) = source.belt_seen(first_column + x, row);
   DarbouxFrameField& frames = part.analysis.frames;
-  frames = DarbouxFrameField(width, height);
   ShapeIndexField& field = part.analysis.field;
-  field = make_shape_index_field(width, height);
   // Which pixels of the part's columns belong to it, a row at a time (with one column of
   // margin on each side, never owned): the copy below reads each label once instead of nine
   // times (this runs between the part's end and its pose). A pixel outside its row's stored
@@ -63,8 +66,9 @@ PartView extract_part_view(const BuiltPart& built, const PartRecognitionContext&
   for (int row = 0; row < height; ++row) {
     const PartRow in = source.row(row);
     for (int x = 0; x < width; ++x) {
-      const int column = c0 + x;
-      const bool away = excluded && (*excluded)[static_cast<std::size_t>(row) * width + x] != 0;
+      const int column = first_column + x;
+      const std::size_t at = static_cast<std::size_t>(row + row0) * view_width + (x + dx);
+      const bool away = excluded && (*excluded)[at] != 0;
       owned_at(x, row) =
           !away && in.holds(column) && built.owns(in.tracker_label[in.at(column)]) ? 1 : 0;
     }
@@ -74,8 +78,8 @@ PartView extract_part_view(const BuiltPart& built, const PartRecognitionContext&
     const float y_mm = source.y_mm(row);
     for (int x = 0; x < width; ++x) {
       if (!owned_at(x, row)) continue;
-      const std::size_t from = in.at(c0 + x);
-      const std::size_t to = static_cast<std::size_t>(row) * width + x;
+      const std::size_t from = in.at(first_column + x);
+      const std::size_t to = static_cast<std::size_t>(row + row0) * view_width + (x + dx);
       part.image.z_mm[to] = in.z_mm[from];
       std::uint8_t same_side = in.same_side[from];
       for (int k = 0; k < 8; ++k)
@@ -83,7 +87,7 @@ PartView extract_part_view(const BuiltPart& built, const PartRecognitionContext&
           same_side &= static_cast<std::uint8_t>(~(1u << k));
       frames.valid[to] = in.valid[from];
       frames.same_side[to] = same_side;
-      frames.position_mm[0][to] = source.x_mm(c0 + x);
+      frames.position_mm[0][to] = source.x_mm(first_column + x);
       frames.position_mm[1][to] = y_mm;
       frames.position_mm[2][to] = in.fitted_z_mm[from];
       for (int c = 0; c < kFrameComponents; ++c) frames.frame[c][to] = in.frame[c][from];
@@ -94,6 +98,39 @@ PartView extract_part_view(const BuiltPart& built, const PartRecognitionContext&
       field.same_side[to] = same_side;
     }
   }
+}
+
+}  // namespace
+
+PartView extract_part_view(const BuiltPart& built, const PartRecognitionContext& context,
+                           const std::vector<std::uint8_t>* excluded) {
+  return extract_group_view({built}, context, excluded);
+}
+
+PartView extract_group_view(const std::vector<BuiltPart>& pieces,
+                            const PartRecognitionContext& context,
+                            const std::vector<std::uint8_t>* excluded) {
+  const BuiltPart& first = pieces.front();
+  const BuiltPart& last = pieces.back();
+  int c0 = view_columns(first).first, c1 = view_columns(first).second;
+  for (const BuiltPart& piece : pieces) {
+    c0 = std::min(c0, view_columns(piece).first);
+    c1 = std::max(c1, view_columns(piece).second);
+  }
+  const int width = c1 - c0 + 1;
+  const int height = static_cast<int>(last.first_profile + last.rows - first.first_profile);
+  PartView part;
+  part.image = RangeImage(width, height, context.grid_mm, context.grid_mm);
+  part.image.origin_x_mm = first.cosmos->origin_x_mm() + c0 * context.grid_mm;
+  part.image.origin_y_mm = first.cosmos->origin_y_mm();
+  // Where the belt was measured, over the pieces' views: a pixel of another part or of a
+  // shadow is not belt (surface_seen.hpp), and between the pieces nothing was measured.
+  part.image.belt_seen = PixelGrid<std::uint8_t>(width, height, 0);
+  part.analysis.frames = DarbouxFrameField(width, height);
+  part.analysis.field = make_shape_index_field(width, height);
+  for (const BuiltPart& piece : pieces)
+    copy_part_pixels(piece, excluded, c0,
+                     static_cast<int>(piece.first_profile - first.first_profile), part);
   finish_view_analysis(part.analysis, context.cosmos);
   return part;
 }

@@ -179,6 +179,11 @@ std::vector<std::uint8_t> PieceJoiner::hold_remnants(BlobRecognition& blob,
 }
 
 std::vector<JoinedRecognition> PieceJoiner::add(BlobRecognition blob, const PartBuilder& builder) {
+  return add(std::move(blob), builder, builder);
+}
+
+std::vector<JoinedRecognition> PieceJoiner::add(BlobRecognition blob, const PartBuilder& first,
+                                                const PartBuilder& builder) {
   std::vector<JoinedRecognition> out;
   std::vector<Recognized> parts;
   for (const PartRecognition& part : blob.parts)
@@ -186,10 +191,10 @@ std::vector<JoinedRecognition> PieceJoiner::add(BlobRecognition blob, const Part
       parts.push_back({part.result.part, part.result.T_scanner_part, part.first_profile,
                        part.last_profile, part.result.registration_rms_mm});
   const bool any_recognized = !parts.empty();
-  const bool soft_linked = builder.has_soft_successor || builder.soft_link_of >= 0;
+  const bool soft_linked = builder.has_soft_successor || first.soft_link_of >= 0;
   Piece current;
   current.points_loop_mm = std::move(blob.points_loop_mm);
-  current.first_profile = builder.first_profile;
+  current.first_profile = first.first_profile;
   current.last_profile = builder.first_profile + builder.rows_added - 1;
   current.recognized = any_recognized;
   current.parts = parts;

@@ -17,7 +17,9 @@
 // are dropped. A recognized blob waits for its soft successor only while one of its parts, as
 // placed, reaches past the blob's last row into the shadow, or nearly failed recognition: a
 // part clearly recognized that ends in its own blob is not continued behind it, and its pose
-// goes out at once.
+// goes out at once. The cell recognizes a chain of softly linked blobs as one group
+// (recognize_blob_group), added here as one blob, so the soft links seen here are those no
+// group could take: of a truncated blob, or of a group to a blob that did not join it.
 #include <cstdint>
 #include <deque>
 #include <list>
@@ -40,6 +42,12 @@ class PieceJoiner {
   // A recognized blob (the builder it came from, still held); returns what is now final,
   // in order (part_seq still to be assigned by the publisher of the poses).
   std::vector<JoinedRecognition> add(BlobRecognition blob, const PartBuilder& builder);
+  // A group's blob (recognize_blob_group): the builders of its first and last pieces. Its
+  // rows run from the first's first to the last's last, where its poses hold and its part
+  // ends; the group is linked softly to what the first's predecessor and the last's successor
+  // are.
+  std::vector<JoinedRecognition> add(BlobRecognition blob, const PartBuilder& first,
+                                     const PartBuilder& last);
   // The held pieces that no blob still to be added can join any more: every blob that starts
   // before `unfinished_from_profile` has been added (ScanLoop::unfinished_from_profile, and
   // none of the completed blobs still being recognized starts earlier). A piece waits for

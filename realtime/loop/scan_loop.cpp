@@ -279,7 +279,8 @@ void ScanLoop::speculate() {
     }
     if (!blank_below) continue;
     describe(builder, *part);
-    if (!speculative_.try_push(SpeculativePart{index, builder.built()})) continue;
+    if (!speculative_.try_push(SpeculativePart{index, builder.built(), part->soft_link_of}))
+      continue;
     speculation_sent_[k] = speculation_running_[k] = 1;
   }
 }

@@ -181,6 +181,9 @@ struct ScanLoopSettings {
 struct SpeculativePart {
   int builder = -1;
   BuiltPart built;
+  // The tracker id of the part it may continue, across a gap its shadow can explain (-1:
+  // none), as the tracker knew it then (PartBuilder::soft_link_of once it completes).
+  std::int64_t soft_link_of = -1;
 };
 
 struct ScanLoopCounters {

@@ -2,8 +2,8 @@
 // to 0 (touching end to end) and pairs side by side across the belt. No part passes
 // unreported: poses plus rejections equal the parts placed; and parts a few millimetres apart
 // are identified (the tracker's shadow geometry keeps them apart, scene-level recognition
-// takes touching ones apart). A leading piece that its successor's part explains is not
-// recognized on its own.
+// takes touching ones apart). A part its shadow cut into pieces is recognized from them all as
+// one.
 #include "realtime/cell/blob_recognition.hpp"
 
 #include <gtest/gtest.h>
@@ -150,8 +150,10 @@ TEST_F(BlobRecognition, PartsTouchingEndToEndGetOnePoseEach) {
   EXPECT_EQ(outcome.wrong, 0) << outcome.text;
 }
 
-// One seeded part through a fresh loop, to its completion: the loop's builder index.
-int scan_one_part(ScanLoop& loop, const testing::RegressionRecognizer& world, std::uint64_t seed) {
+// One seeded part through a fresh loop, to its end: the builders of the blobs it came in, in
+// the order they completed.
+std::vector<int> scan_one_part(ScanLoop& loop, const testing::RegressionRecognizer& world,
+                               std::uint64_t seed, std::string& name) {
   SimulatedSourceSettings one;
   one.parts = 1;
   one.seed = seed;
@@ -165,48 +167,47 @@ int scan_one_part(ScanLoop& loop, const testing::RegressionRecognizer& world, st
     while (loop.speculative().try_pop(ahead)) loop.speculated().try_push(ahead.builder);
   }
   loop.flush();
-  int index = -1;
-  EXPECT_TRUE(loop.completed().try_pop(index));
-  return index;
+  name = source.placed_parts().front().name;
+  std::vector<int> blobs;
+  for (int index = -1; loop.completed().try_pop(index);) blobs.push_back(index);
+  return blobs;
 }
 
-TEST_F(BlobRecognition, ALeadingPieceThatItsSuccessorsPartExplainsIsNotRecognized) {
+TEST_F(BlobRecognition, APartItsShadowCutIntoPiecesIsRecognizedFromThemAllAsOne) {
   PartRecognitionContext context;
   context.recognizer = &world_->recognizer;
   context.model_base = &world_->base;
   context.catalog_index_of_base_part.assign(world_->base.parts.size(), -1);
-  ScanLoop first{ScanLoopSettings{}};
-  const cosmos::BlobRecognition alone =
-      recognize_blob(first.builder(scan_one_part(first, *world_, 5)), context, 0);
-  ASSERT_EQ(alone.parts.size(), 1U);
-  ASSERT_EQ(alone.parts[0].pose.status, PoseStatus::kOk) << alone.parts[0].pose.reason;
-  const std::vector<PartInLoop> successor{
-      {alone.parts[0].result.part, alone.parts[0].result.T_scanner_part}};
-  const std::size_t points = alone.points_loop_mm.size();
-  // The same surface as the successor's part placed there, and a larger successor: a piece.
-  ScanLoop second{ScanLoopSettings{}};
-  const cosmos::BlobRecognition piece = recognize_blob_unless_explained(
-      second.builder(scan_one_part(second, *world_, 5)), context, successor, points + 1, 0);
-  ASSERT_EQ(piece.parts.size(), 1U);
-  EXPECT_EQ(piece.parts[0].pose.status, PoseStatus::kRejected);
-  EXPECT_EQ(piece.parts[0].pose.reason, "a piece of the part after it");
-  EXPECT_EQ(piece.points_loop_mm.size(), points);
-  // A successor no larger than the piece: the piece is recognized as any blob.
-  ScanLoop third{ScanLoopSettings{}};
-  const cosmos::BlobRecognition larger = recognize_blob_unless_explained(
-      third.builder(scan_one_part(third, *world_, 5)), context, successor, points, 0);
-  ASSERT_EQ(larger.parts.size(), 1U);
-  EXPECT_EQ(larger.parts[0].pose.status, PoseStatus::kOk);
-  EXPECT_EQ(larger.parts[0].result.part, alone.parts[0].result.part);
-  // Nor is a part another part does not explain taken for a piece of it.
-  const std::vector<PartInLoop> elsewhere{
-      {successor[0].part, RigidTransform{Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, 500)} *
-                              successor[0].T_loop_part}};
-  ScanLoop fourth{ScanLoopSettings{}};
-  const cosmos::BlobRecognition own = recognize_blob_unless_explained(
-      fourth.builder(scan_one_part(fourth, *world_, 5)), context, elsewhere, points + 1, 0);
-  ASSERT_EQ(own.parts.size(), 1U);
-  EXPECT_EQ(own.parts[0].pose.status, PoseStatus::kOk);
+  int groups = 0;
+  for (std::uint64_t seed = 1; seed <= 40 && groups == 0; ++seed) {
+    ScanLoop loop{ScanLoopSettings{}};
+    std::string name;
+    const std::vector<int> blobs = scan_one_part(loop, *world_, seed, name);
+    if (blobs.size() < 2) continue;
+    // The tracker kept the pieces apart, each linked softly to the one before.
+    std::vector<PartBuilder*> pieces;
+    for (const int blob : blobs) pieces.push_back(&loop.builder(blob));
+    for (std::size_t k = 1; k < pieces.size(); ++k) {
+      ASSERT_GE(pieces[k]->soft_link_of, 0) << "seed " << seed;
+      ASSERT_TRUE(pieces[k - 1]->owns(pieces[k]->soft_link_of)) << "seed " << seed;
+      ASSERT_TRUE(pieces[k - 1]->has_soft_successor) << "seed " << seed;
+    }
+    ++groups;
+    const cosmos::BlobRecognition group = recognize_blob_group(pieces, context, 0);
+    ASSERT_EQ(group.parts.size(), 1U) << "seed " << seed << " " << name;
+    const PartRecognition& part = group.parts[0];
+    EXPECT_EQ(part.pose.status, PoseStatus::kOk) << "seed " << seed << " " << part.pose.reason;
+    EXPECT_EQ(part.pose.part_name, name) << "seed " << seed;
+    // Its rows run over every piece's, and its pose holds at the last one's last row.
+    EXPECT_EQ(part.first_profile, pieces.front()->first_profile) << "seed " << seed;
+    EXPECT_EQ(part.pose.encoder_ticks, pieces.back()->built().last_data_encoder_ticks);
+    // Its view holds every piece's pixels, and nothing else.
+    std::size_t piece_pixels = 0;
+    for (PartBuilder* piece : pieces)
+      piece_pixels += extract_part_view(piece->built(), context).image.count_valid();
+    EXPECT_EQ(group.image.count_valid(), piece_pixels) << "seed " << seed;
+  }
+  EXPECT_EQ(groups, 1) << "no part in 40 seeded scans came in pieces";
 }
 
 }  // namespace
