@@ -114,7 +114,7 @@ class SceneRecognition {
 
   BlobRecognition run() {
     std::optional<Unrecognized> rest = recognize_region(nothing_outside(), 0, std::move(whole_));
-    if (rest && !take_apart_at_necks(*rest)) report(*rest, any_recognized());
+    if (rest && !take_apart(*rest)) report(*rest, any_recognized());
     if (built_.truncated && built_.tracked_rows > built_.rows) report_unscanned_rest();
     blob_.merged = blob_.parts.size() > 1;
     return std::move(blob_);
@@ -257,13 +257,36 @@ class SceneRecognition {
     return outside;
   }
 
-  // What was not recognized, where it narrows to necks (touching parts meet in a few pixels):
-  // each stretch between necks recognized on its own, along the belt first, then across it.
-  // Parts recognized in the stretches leave the rest as one region again (a part the cuts
-  // split is whole in it), recognized or reported once; none recognized either way, the
-  // failures of the last way tried are reported, one per stretch. False when no stretch was
-  // big enough to try.
-  bool take_apart_at_necks(const Unrecognized& unrecognized) {
+  // What the whole blob's recognition left unrecognized. A group's pieces are taken apart
+  // where the tracker cut them: each piece as the blob it came in would have been, recognized
+  // on its own whatever its size (a small part whose neighbour's shadow linked it to a part
+  // that is not recognized is still a part), what it leaves taken apart at its necks or
+  // reported. A single blob is taken apart at its necks. False when nothing was tried.
+  bool take_apart(const Unrecognized& unrecognized) {
+    if (pieces_.size() == 1) return take_apart_at_necks(unrecognized, nothing_outside());
+    // Any piece with surface left is tried: the threshold only passes over empty ones.
+    constexpr double kAnySurfaceMm2 = 1e-9;
+    int begin = 0;
+    for (std::size_t k = 1; k <= pieces_.size(); ++k) {
+      const int end = k < pieces_.size()
+                          ? static_cast<int>(pieces_[k].first_profile - pieces_[0].first_profile)
+                          : height_;
+      const std::vector<std::uint8_t> outside = outside_stretch(begin, end, true);
+      std::optional<Unrecognized> failure = recognize_region(outside, kAnySurfaceMm2);
+      if (failure && !take_apart_at_necks(*failure, outside)) report(*failure, any_recognized());
+      begin = end;
+    }
+    return true;
+  }
+
+  // What was not recognized of the region outside `outside`, where it narrows to necks
+  // (touching parts meet in a few pixels): each stretch between necks recognized on its own,
+  // along the belt first, then across it. Parts recognized in the stretches leave the rest of
+  // the region as one region again (a part the cuts split is whole in it), recognized or
+  // reported once; none recognized either way, the failures of the last way tried are
+  // reported, one per stretch. False when no stretch was big enough to try.
+  bool take_apart_at_necks(const Unrecognized& unrecognized,
+                           const std::vector<std::uint8_t>& outside) {
     std::vector<Unrecognized> unresolved;
     for (const bool along_rows : {true, false}) {
       const std::vector<int> cuts = necks(pixels_per(unrecognized.image, along_rows));
@@ -273,14 +296,14 @@ class SceneRecognition {
       int begin = 0;
       for (std::size_t k = 0; k <= cuts.size(); ++k) {
         const int end = k < cuts.size() ? cuts[k] : (along_rows ? height_ : width_);
-        std::optional<Unrecognized> failure =
-            recognize_region(outside_stretch(begin, end, along_rows), min_stretch_mm2_);
+        std::vector<std::uint8_t> stretch = outside_stretch(begin, end, along_rows);
+        for (std::size_t i = 0; i < stretch.size(); ++i) stretch[i] |= outside[i];
+        std::optional<Unrecognized> failure = recognize_region(stretch, min_stretch_mm2_);
         if (failure) failures.push_back(std::move(*failure));
         begin = end;
       }
       if (blob_.parts.size() > parts_before) {
-        std::optional<Unrecognized> rest =
-            recognize_region(nothing_outside(), min_unexplained_mm2_);
+        std::optional<Unrecognized> rest = recognize_region(outside, min_unexplained_mm2_);
         if (rest) report(*rest, true);
         return true;
       }

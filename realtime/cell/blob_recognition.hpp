@@ -51,12 +51,13 @@ BlobRecognition recognize_blob(PartBuilder& builder, const PartRecognitionContex
                                std::int64_t part_seq);
 
 // A group of completed builders that the tracker linked softly, each to the one before, across
-// gaps a part's own shadow can explain (part_tracker.hpp): a part its shadows cut into
-// pieces, or neighbours close enough for the shadow of one to reach the other. The pieces
+// gaps a part's own shadow can explain (part_tracker.hpp), the first too small to be a part
+// alone: a part its shadows cut into pieces (cell_runner.cpp forms the groups). The pieces
 // are recognized as one blob, from one view of them all (extract_group_view): a piece is no
 // part alone, and recognized alone it floats above the belt and fits nearly nothing, after
-// the costliest search of all; neighbours are taken apart as touching parts are. The poses
-// hold at the last piece's last row; stream faults are marked. One builder: recognize_blob.
+// the costliest search of all. What that leaves is taken apart piece by piece, each as the
+// blob it came in would be. The poses hold at the last piece's last row; stream faults are
+// marked. One builder: recognize_blob.
 BlobRecognition recognize_blob_group(const std::vector<PartBuilder*>& pieces,
                                      const PartRecognitionContext& context, std::int64_t part_seq);
 // The stamps of a group's pieces (in the order they started) as one built part: its rows run

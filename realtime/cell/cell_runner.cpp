@@ -92,11 +92,20 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
   std::vector<std::optional<BlobRecognition>> results(builders);
   std::deque<int> ahead_queue;      // speculative parts waiting for a worker
   std::deque<int> completed_order;  // completed builders, oldest first
-  // Blobs the tracker linked softly, each to the one before (part_tracker.hpp), are one group,
-  // recognized as one blob (recognize_blob_group) once its last piece has completed; their
-  // own speculative recognitions are not used. Per builder: its group's first piece (-1:
-  // none); per first piece: the group's pieces in order, and whether one may still join it.
-  // The groups follow from the tracker's links alone, so the poses do not depend on timing.
+  // A blob too small to be a part alone (under blob.min_stretch_fraction of a typical view's
+  // area, as the stretches of a blob recognized on their own) that the tracker linked softly
+  // to the blob after it (part_tracker.hpp) is a piece of a part its shadow cut: it and the
+  // blobs linked on from it are one group, recognized as one blob (recognize_blob_group) once
+  // its last piece has completed; their own speculative recognitions are not used. Two blobs
+  // each large enough to be a part are recognized apart, at once on two workers: softly
+  // linked neighbours on a dense belt, whose duplicates the joiner drops. Per builder: its
+  // group's first piece (-1: none); per first piece: the group's pieces in order, and whether
+  // one may still join it. The groups follow from the tracker alone, so the poses do not
+  // depend on timing.
+  const double small_piece_mm2 = context.model_base ? context.blob.min_stretch_fraction *
+                                                          typical_view_area_mm2(*context.model_base)
+                                                    : 0.0;
+  const double small_piece_pixels = small_piece_mm2 / (context.grid_mm * context.grid_mm);
   std::vector<int> group_of(builders, -1);
   std::vector<std::vector<int>> group_pieces(builders);
   std::vector<std::vector<PartBuilder*>> group_builders(builders);
@@ -173,7 +182,8 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
       group_pieces[static_cast<std::size_t>(first)].push_back(index);
     }
     const bool continued = completed.has_soft_successor && !completed.truncated;
-    if (group_of[k] < 0 && continued) {
+    if (group_of[k] < 0 && continued &&
+        static_cast<double>(completed.pixels) < small_piece_pixels) {
       group_of[k] = index;
       group_pieces[k] = {index};
     }
@@ -220,10 +230,11 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
         if (stage[k] != Stage::kNone) continue;
         const std::vector<int>& pieces = group_pieces[k];
         const auto last = static_cast<std::size_t>(pieces.back());
-        // The last piece's successor started before it completed: it has completed and joined,
-        // is still open, or is gone (merged into another part, lost) once every part that
-        // started by then has completed.
-        if (group_open[k] && unfinished_from_profile > loop.builder(pieces.back()).last_profile)
+        // The last piece's successor started by the time it completed: it has completed and
+        // joined, is still open, or is gone (merged into another part, lost) once every part
+        // that started by then has completed.
+        if (group_open[k] &&
+            unfinished_from_profile > loop.builder(pieces.back()).completed_profile)
           group_open[k] = 0;
         // A piece's speculative recognition still reads the builders' pipelines.
         const bool pieces_idle = std::all_of(pieces.begin(), pieces.end(), idle);

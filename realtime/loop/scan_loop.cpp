@@ -213,6 +213,7 @@ void ScanLoop::complete(const TrackedPart& part) {
     builder.truncated = true;
   builder.soft_link_of = part.soft_link_of;
   builder.has_soft_successor = part.has_soft_successor;
+  builder.completed_profile = row_profile_;
   builder.completed_ns = monotonic_now_ns();
   counters_.parts_seen.fetch_add(1, std::memory_order_relaxed);
   counters_.parts_truncated.fetch_add(builder.truncated ? 1 : 0, std::memory_order_relaxed);
@@ -233,6 +234,7 @@ void ScanLoop::describe(PartBuilder& builder, const TrackedPart& part) {
   builder.column_min = width() - 1 - part.column_max;
   builder.column_max = width() - 1 - part.column_min;
   builder.max_z_mm = part.max_z_mm;
+  builder.pixels = part.pixels;
   builder.tracked_rows = part.last_row - part.first_row + 1;
   builder.last_data_row = part.last_row;
   // The pose holds at its last row with data: the empty rows the tracker waited through after
@@ -372,6 +374,7 @@ void ScanLoop::add_row(const float* z_mm, const std::uint8_t* belt, const RowSta
     std::reverse_copy(belt, belt + width(), belt_loop_.begin());
   else
     std::fill(belt_loop_.begin(), belt_loop_.end(), 0);
+  row_profile_ = stamp.profile;
   for (const TrackedPart& part : tracker_.add_row(z_mm, row_index_, belt)) complete(part);
   counters_.runs_dropped.store(tracker_.dropped_runs(), std::memory_order_relaxed);
   start_parts(stamp);
@@ -425,6 +428,7 @@ void ScanLoop::flush() {
   for (int k = 0; k <= settings_.tracking.link_gap_rows + 1 && !tracker_.open_parts().empty();
        ++k) {
     stamp_of_row(row_index_) = last;
+    row_profile_ = last.profile;
     for (const TrackedPart& part : tracker_.add_row(row_belt_.data(), row_index_)) complete(part);
     ++row_index_;
   }

@@ -77,6 +77,9 @@ struct PartBuilder {
   // of the last row added, up to tracking.link_gap_rows of empty belt later.
   std::int64_t last_data_profile = 0;
   std::int64_t last_profile = 0;
+  // The profile index of the row at which the tracker completed it: a piece that continues it
+  // (soft_link_of) started by then.
+  std::int64_t completed_profile = 0;
   // The encoder counts and exposure times (data time) of its first row and, once the tracker
   // completed it, of its last row with data, where its pose holds.
   std::int64_t first_encoder_ticks = 0;
@@ -85,7 +88,8 @@ struct PartBuilder {
   std::int64_t last_data_t_us = 0;
   int column_min = 0;  // the tracked part's extent, loop-frame columns
   int column_max = 0;
-  float max_z_mm = 0;  // the tracked part's highest sample
+  float max_z_mm = 0;       // the tracked part's highest sample
+  std::int64_t pixels = 0;  // the tracked part's data pixels
   // The tracker's soft links (PartTrackerParameters::shadow_rows_per_mm): the earlier piece
   // (tracker id) this one may continue, and whether a later piece may continue this one.
   std::int64_t soft_link_of = -1;
@@ -304,6 +308,7 @@ class ScanLoop {
   std::vector<std::uint8_t> belt_loop_;  // belt_seen_ of the row added, mirrored like row_loop_
   std::int64_t input_index_ = 0;         // the next profile's row
   std::int64_t row_index_ = 0;           // the next row to the tracker and the builders
+  std::int64_t row_profile_ = 0;         // the profile index of the row the tracker is given
   std::atomic<std::int64_t> unfinished_from_profile_{0};
   ScanLoopCounters counters_;
 };
