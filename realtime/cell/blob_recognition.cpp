@@ -8,6 +8,7 @@
 
 #include "core/recognition/explained_surface.hpp"
 #include "realtime/cell/blob_regions.hpp"
+#include "realtime/cell/piece_explained.hpp"
 
 namespace cosmos {
 namespace {
@@ -79,6 +80,14 @@ double typical_view_area_mm2(const ModelBase& base) {
 
 namespace {
 
+// A group's pieces in the order they started (the view's rows, first to last).
+std::vector<BuiltPart> in_start_order(std::vector<BuiltPart> pieces) {
+  std::stable_sort(pieces.begin(), pieces.end(), [](const BuiltPart& a, const BuiltPart& b) {
+    return a.first_profile < b.first_profile;
+  });
+  return pieces;
+}
+
 // A recognition that failed on what remained of a region of the blob, with what remained.
 struct Unrecognized {
   PartRecognition recognition;
@@ -94,7 +103,7 @@ class SceneRecognition {
   // `pieces`: the blob's builders' parts, one or a group's (recognize_blob_group).
   SceneRecognition(std::vector<BuiltPart> pieces, const PartRecognitionContext& context,
                    std::int64_t part_seq)
-      : pieces_(std::move(pieces)),
+      : pieces_(in_start_order(std::move(pieces))),
         built_(group_stamps(pieces_)),
         context_(context),
         parameters_(context.blob),
@@ -177,9 +186,10 @@ class SceneRecognition {
       const auto cut = std::chrono::steady_clock::now();
       const PartSearchModel& model =
           context_.recognizer->part_search_model(recognition.result.part);
-      const std::vector<std::uint8_t> explained =
+      std::vector<std::uint8_t> explained =
           explained_pixels(blob_.image, model.field, recognition.result.T_scanner_part,
                            parameters_.explained_distance_mm);
+      add_explained_pieces(recognition.result.part, recognition.result.T_scanner_part, explained);
       set_profiles_of(explained, width_, built_, recognition);
       std::size_t newly_excluded = 0;
       for (std::size_t i = 0; i < excluded.size(); ++i) {
@@ -226,6 +236,44 @@ class SceneRecognition {
     }
   }
 
+  // The view rows of a group's piece k: [piece_row(k), piece_row(k + 1)).
+  int piece_row(std::size_t k) const {
+    return k < pieces_.size()
+               ? static_cast<int>(pieces_[k].first_profile - pieces_[0].first_profile)
+               : height_;
+  }
+
+  // A group's piece too small to be a part alone (min_stretch_mm2_) that the part recognized,
+  // so placed, explains (piece_explained.hpp: the joiner's test, most of its surface on the
+  // part's) is all the part's: a feature its shadow cut off, which its explained surface only
+  // partly covers where the pose or the model is off at the part's far end.
+  void add_explained_pieces(int part, const RigidTransform& T_loop_part,
+                            std::vector<std::uint8_t>& explained) const {
+    if (pieces_.size() < 2) return;
+    const RangeImage& image = blob_.image;
+    const double pixel_area_mm2 = image.pixel_size_x_mm * image.pixel_size_y_mm;
+    const std::vector<PartInLoop> placed{{part, T_loop_part}};
+    for (std::size_t k = 0; k < pieces_.size(); ++k) {
+      std::vector<Eigen::Vector3d> points_loop_mm;
+      std::size_t pixels = 0;
+      for (int row = piece_row(k); row < piece_row(k + 1); ++row)
+        for (int column = 0; column < width_; ++column) {
+          const float z = image.z_mm(column, row);
+          if (std::isnan(z)) continue;
+          ++pixels;
+          if (row % 2 == 0 && column % 2 == 0)
+            points_loop_mm.emplace_back(image.x_mm(column), image.y_mm(row), z);
+        }
+      if (static_cast<double>(pixels) * pixel_area_mm2 >= min_stretch_mm2_ ||
+          !piece_explained_by(points_loop_mm, placed, context_))
+        continue;
+      for (int row = piece_row(k); row < piece_row(k + 1); ++row)
+        for (int column = 0; column < width_; ++column)
+          if (!std::isnan(image.z_mm(column, row)))
+            explained[static_cast<std::size_t>(row) * width_ + column] = 1;
+    }
+  }
+
   // A rejection for what was not recognized: one per part it is estimated to hold.
   void report(Unrecognized& unrecognized, bool beside_others) {
     PartRecognition& recognition = unrecognized.recognition;
@@ -266,15 +314,11 @@ class SceneRecognition {
     if (pieces_.size() == 1) return take_apart_at_necks(unrecognized, nothing_outside());
     // Any piece with surface left is tried: the threshold only passes over empty ones.
     constexpr double kAnySurfaceMm2 = 1e-9;
-    int begin = 0;
-    for (std::size_t k = 1; k <= pieces_.size(); ++k) {
-      const int end = k < pieces_.size()
-                          ? static_cast<int>(pieces_[k].first_profile - pieces_[0].first_profile)
-                          : height_;
-      const std::vector<std::uint8_t> outside = outside_stretch(begin, end, true);
+    for (std::size_t k = 0; k < pieces_.size(); ++k) {
+      const std::vector<std::uint8_t> outside =
+          outside_stretch(piece_row(k), piece_row(k + 1), true);
       std::optional<Unrecognized> failure = recognize_region(outside, kAnySurfaceMm2);
       if (failure && !take_apart_at_necks(*failure, outside)) report(*failure, any_recognized());
-      begin = end;
     }
     return true;
   }
@@ -377,20 +421,28 @@ BlobRecognition recognize_blob(PartBuilder& builder, const PartRecognitionContex
 
 BuiltPart group_stamps(const std::vector<BuiltPart>& pieces) {
   if (pieces.size() == 1) return pieces.front();
-  BuiltPart group = pieces.front();
-  const BuiltPart& last = pieces.back();
+  const auto first = std::min_element(
+      pieces.begin(), pieces.end(),
+      [](const BuiltPart& a, const BuiltPart& b) { return a.first_profile < b.first_profile; });
+  const auto last =
+      std::max_element(pieces.begin(), pieces.end(), [](const BuiltPart& a, const BuiltPart& b) {
+        return a.last_data_profile < b.last_data_profile;
+      });
+  BuiltPart group = *first;
   group.cosmos = nullptr;
-  group.rows = static_cast<int>(last.first_profile + last.rows - group.first_profile);
-  group.last_data_profile = last.last_data_profile;
-  group.last_data_encoder_ticks = last.last_data_encoder_ticks;
-  group.last_data_t_us = last.last_data_t_us;
+  group.rows = 0;
   for (const BuiltPart& piece : pieces) {
+    group.rows = std::max(group.rows,
+                          static_cast<int>(piece.first_profile + piece.rows - group.first_profile));
     group.column_min = std::min(group.column_min, piece.column_min);
     group.column_max = std::max(group.column_max, piece.column_max);
     group.max_z_mm = std::max(group.max_z_mm, piece.max_z_mm);
   }
-  group.truncated = last.truncated;
-  group.tracked_rows = group.rows + (last.tracked_rows - last.rows);
+  group.last_data_profile = last->last_data_profile;
+  group.last_data_encoder_ticks = last->last_data_encoder_ticks;
+  group.last_data_t_us = last->last_data_t_us;
+  group.truncated = last->truncated;
+  group.tracked_rows = group.rows + (last->tracked_rows - last->rows);
   return group;
 }
 

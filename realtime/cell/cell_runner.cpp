@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <deque>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <thread>
@@ -158,13 +159,13 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
   const auto end_ahead = [&](int index) {
     while (!loop.speculated().try_push(index)) std::this_thread::sleep_for(kIdleWait);
   };
-  // The first piece of the open group whose last piece owns the tracker id `link`, or -1.
+  // The first piece of the open group one of whose pieces owns the tracker id `link`, or -1
+  // (pieces may branch: a feature and the body behind it can both continue one piece).
   const auto group_continued_by = [&](std::int64_t link) {
     if (link < 0) return -1;
     for (const int earlier : completed_order) {
       const int first = group_of[static_cast<std::size_t>(earlier)];
       if (first >= 0 && group_open[static_cast<std::size_t>(first)] &&
-          group_pieces[static_cast<std::size_t>(first)].back() == earlier &&
           loop.builder(earlier).owns(link))
         return first;
     }
@@ -181,13 +182,12 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
       group_of[k] = first;
       group_pieces[static_cast<std::size_t>(first)].push_back(index);
     }
-    const bool continued = completed.has_soft_successor && !completed.truncated;
-    if (group_of[k] < 0 && continued &&
+    if (group_of[k] < 0 && completed.has_soft_successor && !completed.truncated &&
         static_cast<double>(completed.pixels) < small_piece_pixels) {
       group_of[k] = index;
       group_pieces[k] = {index};
+      group_open[k] = 1;
     }
-    if (group_of[k] >= 0) group_open[static_cast<std::size_t>(group_of[k])] = continued ? 1 : 0;
   };
   for (;;) {
     const std::uint32_t seen = status.recognizer_wake.epoch();
@@ -230,11 +230,14 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
         if (stage[k] != Stage::kNone) continue;
         const std::vector<int>& pieces = group_pieces[k];
         const auto last = static_cast<std::size_t>(pieces.back());
-        // The last piece's successor started by the time it completed: it has completed and
+        // A piece's successor started by the time the piece completed: it has completed and
         // joined, is still open, or is gone (merged into another part, lost) once every part
         // that started by then has completed.
-        if (group_open[k] &&
-            unfinished_from_profile > loop.builder(pieces.back()).completed_profile)
+        if (group_open[k] && std::none_of(pieces.begin(), pieces.end(), [&](int piece) {
+              const PartBuilder& builder = loop.builder(piece);
+              return builder.has_soft_successor && !builder.truncated &&
+                     unfinished_from_profile <= builder.completed_profile;
+            }))
           group_open[k] = 0;
         // A piece's speculative recognition still reads the builders' pipelines.
         const bool pieces_idle = std::all_of(pieces.begin(), pieces.end(), idle);
@@ -307,6 +310,15 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
       next = ahead_queue.erase(next);
     }
     bool progressed = false;
+    // The blobs from the first open group's first piece on wait for a part still open: the
+    // loop must not wait for their builders.
+    const auto first_waiting =
+        std::find_if(completed_order.begin(), completed_order.end(), [&](int done) {
+          const int first = group_of[static_cast<std::size_t>(done)];
+          return first >= 0 && group_open[static_cast<std::size_t>(first)];
+        });
+    loop.set_builders_waiting_on_open_parts(
+        static_cast<int>(std::distance(first_waiting, completed_order.end())));
     while (auto finished = workers.take_oldest()) {
       progressed = true;
       const bool group_job = finished->job >= kGroup && finished->job < kAheadGroup;

@@ -110,15 +110,18 @@ PartView extract_part_view(const BuiltPart& built, const PartRecognitionContext&
 PartView extract_group_view(const std::vector<BuiltPart>& pieces,
                             const PartRecognitionContext& context,
                             const std::vector<std::uint8_t>* excluded) {
-  const BuiltPart& first = pieces.front();
-  const BuiltPart& last = pieces.back();
+  const BuiltPart& first = *std::min_element(
+      pieces.begin(), pieces.end(),
+      [](const BuiltPart& a, const BuiltPart& b) { return a.first_profile < b.first_profile; });
   int c0 = view_columns(first).first, c1 = view_columns(first).second;
+  std::int64_t end_profile = first.first_profile;
   for (const BuiltPart& piece : pieces) {
     c0 = std::min(c0, view_columns(piece).first);
     c1 = std::max(c1, view_columns(piece).second);
+    end_profile = std::max(end_profile, piece.first_profile + piece.rows);
   }
   const int width = c1 - c0 + 1;
-  const int height = static_cast<int>(last.first_profile + last.rows - first.first_profile);
+  const int height = static_cast<int>(end_profile - first.first_profile);
   PartView part;
   part.image = RangeImage(width, height, context.grid_mm, context.grid_mm);
   part.image.origin_x_mm = first.cosmos->origin_x_mm() + c0 * context.grid_mm;

@@ -72,11 +72,11 @@ struct PartView {
 // parts already recognized in the blob explain (blob_recognition.hpp).
 PartView extract_part_view(const BuiltPart& built, const PartRecognitionContext& context,
                            const std::vector<std::uint8_t>* excluded = nullptr);
-// The view of a group's pieces (builders the tracker linked softly, in the order they
-// started, blob_recognition.hpp) as one: each piece's pixels as extract_part_view cuts them
-// out, in one image from the first piece's first row to the last's last, and the COSMOS of
-// them all (finish_view_analysis). The pieces' rows are final, and none shares a row with
-// another (a soft link spans rows without data). `excluded`: over the whole view.
+// The view of a group's pieces (builders the tracker linked softly, blob_recognition.hpp) as
+// one: each piece's pixels as extract_part_view cuts them out, in one image from the first
+// piece's first row to the last row of any, and the COSMOS of them all
+// (finish_view_analysis). The pieces' rows are final; they are different tracked parts, so no
+// pixel is two pieces'. `excluded`: over the whole view.
 PartView extract_group_view(const std::vector<BuiltPart>& pieces,
                             const PartRecognitionContext& context,
                             const std::vector<std::uint8_t>* excluded = nullptr);

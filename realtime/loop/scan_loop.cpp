@@ -136,11 +136,16 @@ std::size_t ScanLoop::builders_at_recognizer() const {
   return builders_.size() - free_builders_.size() - open_builders_.size();
 }
 
+bool ScanLoop::recognizer_returns_builders() const {
+  const int waiting = builders_waiting_on_open_parts_.load(std::memory_order_acquire);
+  return builders_at_recognizer() > static_cast<std::size_t>(std::max(waiting, 0));
+}
+
 int ScanLoop::acquire_builder() {
   reclaim_returned();
   // Wait only for builders the recognizer holds: those of open parts come back only when
   // their parts complete, which needs this very loop to go on.
-  while (free_builders_.empty() && settings_.wait_for_recognizer && builders_at_recognizer() > 0) {
+  while (free_builders_.empty() && settings_.wait_for_recognizer && recognizer_returns_builders()) {
     std::this_thread::yield();
     reclaim_returned();
   }
@@ -335,7 +340,7 @@ bool ScanLoop::add_row_to(int index, const RowStamp& stamp) {
   // Unpaced, the blocks of the parts at the recognizer are waited for (as builders are): what
   // is lost must not depend on how fast the recognizer was.
   while (added == AddRowResult::kNoMemory && settings_.wait_for_recognizer &&
-         builders_at_recognizer() > 0) {
+         recognizer_returns_builders()) {
     std::this_thread::yield();
     reclaim_returned();
     added = builder.cosmos.add_row(row_loop_.data(), belt_loop_.data());

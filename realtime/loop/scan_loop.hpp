@@ -222,6 +222,13 @@ class ScanLoop {
   // be finished: extract_part_view does it on the recognizer's thread), and their return.
   SpscRing<int>& completed() { return completed_; }
   SpscRing<int>& returned() { return returned_; }
+  // How many of the builders the recognizer holds come back only once a part still open here
+  // completes (a group of pieces waiting for its last piece's successor, and the blobs queued
+  // behind it for publication). The recognizer sets it; a loop that waits for the recognizer
+  // (ScanLoopSettings::wait_for_recognizer) does not wait for those, which would never come.
+  void set_builders_waiting_on_open_parts(int count) {
+    builders_waiting_on_open_parts_.store(count, std::memory_order_release);
+  }
   // Parts to recognize before they complete (ScanLoopSettings::parts.speculative_recognition),
   // and the builders whose speculative recognition has ended or was dropped (no worker reads
   // them any more): until then the loop neither frees nor reuses the builder.
@@ -257,8 +264,10 @@ class ScanLoop {
   };
 
   void reclaim_returned();
-  // Builders handed to the recognizer and not yet returned.
+  // Builders handed to the recognizer and not yet returned, and of those the ones the loop
+  // may wait for: all but those waiting on open parts (set_builders_waiting_on_open_parts).
   std::size_t builders_at_recognizer() const;
+  bool recognizer_returns_builders() const;
   int acquire_builder();
   void free_builder(int index);
   // The conditioned (and de-sheared) row row_index_, stamped `stamp`, to the tracker and the
@@ -310,6 +319,7 @@ class ScanLoop {
   std::int64_t row_index_ = 0;           // the next row to the tracker and the builders
   std::int64_t row_profile_ = 0;         // the profile index of the row the tracker is given
   std::atomic<std::int64_t> unfinished_from_profile_{0};
+  std::atomic<int> builders_waiting_on_open_parts_{0};
   ScanLoopCounters counters_;
 };
 
