@@ -259,12 +259,13 @@ void run(const CellOptions& options) {
   }
   std::printf(
       "cell: latency end of part -> pose published: median %.1f ms, p99 %.1f ms, max %.1f ms; "
-      "%lld blobs recognized ahead of their completion, %lld at it; %lld recognized blobs "
-      "waited for the part behind them (a soft successor: its shadow may have cut one part in "
-      "two)\n",
+      "%lld blobs recognized ahead of their completion, %lld at it; %lld groups of pieces a "
+      "part's shadow cut apart recognized as one; %lld recognized blobs waited for the part "
+      "behind them (a soft successor: its shadow may have cut one part in two)\n",
       latencies.p50_ns() / 1e6, latencies.p99_ns() / 1e6, latencies.max_ns() / 1e6,
       static_cast<long long>(summary.blobs_recognized_ahead),
       static_cast<long long>(summary.blobs_recognized_at_completion),
+      static_cast<long long>(summary.blob_groups_recognized),
       static_cast<long long>(summary.blobs_held_for_successor));
   const RowBlockPool& row_pool = loop.row_pool();
   const double block_mb = static_cast<double>(row_pool.block_bytes()) / (1024.0 * 1024.0);

@@ -18,7 +18,8 @@
 //                     acquisition thread, so the end of part -> pose latency_p50_ms and
 //                     latency_p99_ms are the loop's and the recognizer's alone; blobs_ahead
 //                     and blobs_at_completion: how many were recognized before the tracker
-//                     completed them (speculative recognition) and how many at completion
+//                     completed them (speculative recognition) and how many at completion;
+//                     groups: pieces a part's shadow cut apart, recognized as one
 // Needs the catalog meshes (scripts/fetch_catalog.sh). The whole-cell runs also need the
 // regression model base: $COSMOS_BENCH_MODEL_BASE, else build/test-data/regression-80.cmb
 // (ctest builds it, tests/CMakeLists.txt). $COSMOS_BENCH_CATALOG replaces the regression
@@ -388,7 +389,7 @@ void PacedReplayLatency(benchmark::State& state) {
   CellRunSummary summary;
   std::vector<double> latencies_ms, recognize_ms;
   int searched = 0;
-  std::int64_t ahead = 0, at_completion = 0, held_for_successor = 0;
+  std::int64_t ahead = 0, at_completion = 0, held_for_successor = 0, groups = 0;
   for (auto _ : state) {
     ReplaySource source(log_path);
     if (source.start() != SourceStatus::kOk) {
@@ -411,6 +412,7 @@ void PacedReplayLatency(benchmark::State& state) {
     ahead += summary.blobs_recognized_ahead;
     at_completion += summary.blobs_recognized_at_completion;
     held_for_successor += summary.blobs_held_for_successor;
+    groups += summary.blob_groups_recognized;
   }
   fs::remove(log_path);
   state.counters["recognize_p50_ms"] = median(recognize_ms);
@@ -420,6 +422,7 @@ void PacedReplayLatency(benchmark::State& state) {
   state.counters["blobs_ahead"] = static_cast<double>(ahead);
   state.counters["blobs_at_completion"] = static_cast<double>(at_completion);
   state.counters["held_for_successor"] = static_cast<double>(held_for_successor);
+  state.counters["groups"] = static_cast<double>(groups);
   state.counters["latency_max_ms"] =
       latencies_ms.empty() ? 0 : *std::max_element(latencies_ms.begin(), latencies_ms.end());
   state.counters["poses"] = static_cast<double>(latencies_ms.size());

@@ -51,6 +51,7 @@ struct SharedStatus {
   std::atomic<std::int64_t> parts_recognized{0}, parts_rejected{0}, blobs_merged{0};
   std::atomic<std::int64_t> blobs_recognized_ahead{0}, blobs_recognized_at_completion{0};
   std::atomic<std::int64_t> blobs_held_for_successor{0};
+  std::atomic<std::int64_t> blob_groups_recognized{0};
   std::atomic<bool> fault{false};
   // The source's one line, written before `fault` is set (release) and read after it.
   std::array<char, 256> fault_reason{};
@@ -355,6 +356,8 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
       group_of[k] = -1;
       if (first < 0 || first == done) {
         status.blobs_merged.fetch_add(blob.merged ? 1 : 0, std::memory_order_relaxed);
+        if (first >= 0 && group_pieces[k].size() > 1)
+          status.blob_groups_recognized.fetch_add(1, std::memory_order_relaxed);
         const PartBuilder& last = loop.builder(first < 0 ? done : group_pieces[k].back());
         for (JoinedRecognition& joined : joiner.add(std::move(blob), loop.builder(done), last))
           publish(std::move(joined));
@@ -604,6 +607,7 @@ CellRunSummary run_cell(ScannerSource& source, ScanLoop& loop,
   summary.blobs_recognized_ahead = shared.blobs_recognized_ahead;
   summary.blobs_recognized_at_completion = shared.blobs_recognized_at_completion;
   summary.blobs_held_for_successor = shared.blobs_held_for_successor;
+  summary.blob_groups_recognized = shared.blob_groups_recognized;
   summary.profile_time_p50_us = processing.p50_ns() / 1e3;
   summary.profile_time_p99_us = processing.p99_ns() / 1e3;
   summary.profile_time_p999_us = processing.p999_ns() / 1e3;

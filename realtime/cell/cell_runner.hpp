@@ -115,6 +115,9 @@ struct CellRunSummary {
   // as placed, reaches past its blob into the shadow, or nearly failed recognition; their
   // latency is the part behind's, not their own recognition's.
   std::int64_t blobs_held_for_successor = 0;
+  // Groups of blobs recognized as one (recognize_blob_group): a piece too small to be a part
+  // alone and the blobs the tracker linked softly to it.
+  std::int64_t blob_groups_recognized = 0;
   double profile_time_p50_us = 0, profile_time_p99_us = 0, profile_time_p999_us = 0,
          profile_time_max_us = 0;
   double start_jitter_p50_us = 0, start_jitter_p99_us = 0, start_jitter_max_us = 0;
