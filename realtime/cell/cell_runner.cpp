@@ -172,8 +172,8 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
     }
     return -1;
   };
-  // A completed blob joins the open group whose last piece it continues, or starts one when
-  // a later blob may continue it.
+  // A completed blob joins the open group one of whose pieces it continues, or starts one when
+  // it is a small piece that a later blob may continue.
   const auto join_group = [&](int index) {
     const auto k = static_cast<std::size_t>(index);
     const PartBuilder& completed = loop.builder(index);
