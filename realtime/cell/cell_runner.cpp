@@ -4,12 +4,12 @@
 #include <array>
 #include <chrono>
 #include <deque>
-#include <iterator>
 #include <optional>
 #include <string>
 #include <thread>
 
 #include "firmware_bridge/kernel_timestamp.hpp"
+#include "realtime/cell/blob_groups.hpp"
 #include "realtime/cell/blob_recognition.hpp"
 #include "realtime/cell/cell_state_rule.hpp"
 #include "realtime/cell/piece_joiner.hpp"
@@ -94,24 +94,15 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
   std::vector<std::optional<BlobRecognition>> results(builders);
   std::deque<int> ahead_queue;      // speculative parts waiting for a worker
   std::deque<int> completed_order;  // completed builders, oldest first
-  // A blob too small to be a part alone (under blob.min_stretch_fraction of a typical view's
-  // area, as the stretches of a blob recognized on their own) that the tracker linked softly
-  // to the blob after it (part_tracker.hpp) is a piece of a part its shadow cut: it and the
-  // blobs linked on from it are one group, recognized as one blob (recognize_blob_group) once
-  // its last piece has completed; their own speculative recognitions are not used. Two blobs
-  // each large enough to be a part are recognized apart, at once on two workers: softly
-  // linked neighbours on a dense belt, whose duplicates the joiner drops. Per builder: its
-  // group's first piece (-1: none); per first piece: the group's pieces in order, and whether
-  // one may still join it. The groups follow from the tracker alone, so the poses do not
-  // depend on timing.
+  // Blobs recognized together, one group per piece a part's shadow cut off (blob_groups.hpp),
+  // once the group's last piece has completed; their own speculative recognitions are not
+  // used. A blob is no part alone under blob.min_stretch_fraction of a typical view's area.
   const double small_piece_mm2 = context.model_base ? context.blob.min_stretch_fraction *
                                                           typical_view_area_mm2(*context.model_base)
                                                     : 0.0;
-  const double small_piece_pixels = small_piece_mm2 / (context.grid_mm * context.grid_mm);
-  std::vector<int> group_of(builders, -1);
-  std::vector<std::vector<int>> group_pieces(builders);
+  BlobGroups groups(static_cast<int>(builders),
+                    small_piece_mm2 / (context.grid_mm * context.grid_mm));
   std::vector<std::vector<PartBuilder*>> group_builders(builders);
-  std::vector<std::uint8_t> group_open(builders, 0);
   // A speculative part that continues an open group is recognized ahead with the group's
   // pieces: per builder, the tracker's soft link when it was sent ahead, and the pieces its
   // speculative recognition took (empty: it alone). The result holds at completion when the
@@ -160,36 +151,6 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
   const auto end_ahead = [&](int index) {
     while (!loop.speculated().try_push(index)) std::this_thread::sleep_for(kIdleWait);
   };
-  // The first piece of the open group one of whose pieces owns the tracker id `link`, or -1
-  // (pieces may branch: a feature and the body behind it can both continue one piece).
-  const auto group_continued_by = [&](std::int64_t link) {
-    if (link < 0) return -1;
-    for (const int earlier : completed_order) {
-      const int first = group_of[static_cast<std::size_t>(earlier)];
-      if (first >= 0 && group_open[static_cast<std::size_t>(first)] &&
-          loop.builder(earlier).owns(link))
-        return first;
-    }
-    return -1;
-  };
-  // A completed blob joins the open group one of whose pieces it continues, or starts one when
-  // it is a small piece that a later blob may continue.
-  const auto join_group = [&](int index) {
-    const auto k = static_cast<std::size_t>(index);
-    const PartBuilder& completed = loop.builder(index);
-    group_of[k] = -1;
-    const int first = group_continued_by(completed.soft_link_of);
-    if (first >= 0) {
-      group_of[k] = first;
-      group_pieces[static_cast<std::size_t>(first)].push_back(index);
-    }
-    if (group_of[k] < 0 && completed.has_soft_successor && !completed.truncated &&
-        static_cast<double>(completed.pixels) < small_piece_pixels) {
-      group_of[k] = index;
-      group_pieces[k] = {index};
-      group_open[k] = 1;
-    }
-  };
   for (;;) {
     const std::uint32_t seen = status.recognizer_wake.epoch();
     // Read before the completed parts are drained: every blob that starts before it is then
@@ -211,38 +172,30 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
     int index = -1;
     while (loop.completed().try_pop(index)) {
       completed_order.push_back(index);
-      join_group(index);
+      groups.add_completed(index, links_of(loop.builder(index)), completed_order);
     }
     // Completed parts first (they are on the latency path), oldest first.
     for (const int done : completed_order) {
       const auto k = static_cast<std::size_t>(done);
-      if (group_of[k] >= 0) {
+      if (groups.first_of(done) >= 0) {
         if (stage[k] == Stage::kAheadQueued) {
           ahead_queue.erase(std::find(ahead_queue.begin(), ahead_queue.end(), done));
           end_ahead(done);
           stage[k] = Stage::kNone;
         }
         // A later piece's speculative recognition is judged with the first piece.
-        if (group_of[k] != done) continue;
+        if (groups.first_of(done) != done) continue;
         if (stage[k] == Stage::kAheadDone) {
           results[k].reset();  // of the first piece alone
           stage[k] = Stage::kNone;
         }
         if (stage[k] != Stage::kNone) continue;
-        const std::vector<int>& pieces = group_pieces[k];
+        const std::vector<int>& pieces = groups.pieces(done);
         const auto last = static_cast<std::size_t>(pieces.back());
-        // A piece's successor started by the time the piece completed: it has completed and
-        // joined, is still open, or is gone (merged into another part, lost) once every part
-        // that started by then has completed.
-        if (group_open[k] && std::none_of(pieces.begin(), pieces.end(), [&](int piece) {
-              const PartBuilder& builder = loop.builder(piece);
-              return builder.has_soft_successor && !builder.truncated &&
-                     unfinished_from_profile <= builder.completed_profile;
-            }))
-          group_open[k] = 0;
+        if (groups.open(done)) groups.close_if_settled(done, unfinished_from_profile);
         // A piece's speculative recognition still reads the builders' pipelines.
         const bool pieces_idle = std::all_of(pieces.begin(), pieces.end(), idle);
-        if (group_open[k] || !pieces_idle) continue;
+        if (groups.open(done) || !pieces_idle) continue;
         if (stage[last] == Stage::kAheadDone && ahead_pieces[last] == pieces &&
             ahead[last].same_as(loop.builder(pieces.back()).built())) {
           // Recognized ahead as this very group.
@@ -293,11 +246,11 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
     for (auto next = ahead_queue.begin(); next != ahead_queue.end() && workers.can_submit();) {
       const auto k = static_cast<std::size_t>(*next);
       ahead_pieces[k].clear();
-      const int first = group_continued_by(ahead_link[k]);
+      const int first = groups.open_group_continued_by(ahead_link[k], completed_order);
       if (first >= 0) {
         // It continues an open group: recognized ahead with the group's pieces, once no other
         // recognition reads them.
-        const std::vector<int>& pieces = group_pieces[static_cast<std::size_t>(first)];
+        const std::vector<int>& pieces = groups.pieces(first);
         if (!std::all_of(pieces.begin(), pieces.end(), idle)) {
           ++next;
           continue;
@@ -311,15 +264,8 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
       next = ahead_queue.erase(next);
     }
     bool progressed = false;
-    // The blobs from the first open group's first piece on wait for a part still open: the
-    // loop must not wait for their builders.
-    const auto first_waiting =
-        std::find_if(completed_order.begin(), completed_order.end(), [&](int done) {
-          const int first = group_of[static_cast<std::size_t>(done)];
-          return first >= 0 && group_open[static_cast<std::size_t>(first)];
-        });
-    loop.set_builders_waiting_on_open_parts(
-        static_cast<int>(std::distance(first_waiting, completed_order.end())));
+    // Those wait for a part still open: the loop must not wait for their builders.
+    loop.set_builders_waiting_on_open_parts(groups.waiting_on_open_parts(completed_order));
     while (auto finished = workers.take_oldest()) {
       progressed = true;
       const bool group_job = finished->job >= kGroup && finished->job < kAheadGroup;
@@ -336,7 +282,7 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
         if (piece != job && finished->job >= kAheadGroup)
           --read_ahead[static_cast<std::size_t>(piece)];
       if (group_job)
-        for (const int piece : group_pieces[k])
+        for (const int piece : groups.pieces(job))
           if (piece != job) {
             results[static_cast<std::size_t>(piece)].emplace();
             stage[static_cast<std::size_t>(piece)] = Stage::kReady;
@@ -352,13 +298,13 @@ void run_recognizer(ScanLoop& loop, const PartRecognitionContext& context,
       BlobRecognition blob = std::move(*results[k]);
       results[k].reset();
       stage[k] = Stage::kNone;
-      const int first = group_of[k];
-      group_of[k] = -1;
+      const int first = groups.first_of(done);
+      groups.leave(done);
       if (first < 0 || first == done) {
         status.blobs_merged.fetch_add(blob.merged ? 1 : 0, std::memory_order_relaxed);
-        if (first >= 0 && group_pieces[k].size() > 1)
+        if (first >= 0 && groups.pieces(done).size() > 1)
           status.blob_groups_recognized.fetch_add(1, std::memory_order_relaxed);
-        const PartBuilder& last = loop.builder(first < 0 ? done : group_pieces[k].back());
+        const PartBuilder& last = loop.builder(first < 0 ? done : groups.pieces(done).back());
         for (JoinedRecognition& joined : joiner.add(std::move(blob), loop.builder(done), last))
           publish(std::move(joined));
       }

@@ -2,11 +2,17 @@
 
 namespace cosmos {
 
-bool BuiltPart::owns(std::int64_t id) const {
+bool owns_tracker_id(std::int64_t part_id,
+                     const std::array<std::int64_t, kMaxMergedIds>& merged_ids, int merged_count,
+                     std::int64_t id) {
   if (id == part_id) return true;
   for (int k = 0; k < merged_count; ++k)
     if (merged_ids[static_cast<std::size_t>(k)] == id) return true;
   return false;
+}
+
+bool BuiltPart::owns(std::int64_t id) const {
+  return owns_tracker_id(part_id, merged_ids, merged_count, id);
 }
 
 bool BuiltPart::same_as(const BuiltPart& other) const {

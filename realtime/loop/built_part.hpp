@@ -15,6 +15,12 @@ namespace cosmos {
 
 inline constexpr int kMaxMergedIds = 16;
 
+// Whether tracker id `id` is a part's own (`part_id`) or one of the `merged_count` ids merged
+// into it.
+bool owns_tracker_id(std::int64_t part_id,
+                     const std::array<std::int64_t, kMaxMergedIds>& merged_ids, int merged_count,
+                     std::int64_t id);
+
 struct BuiltPart {
   const IncrementalCosmos* cosmos = nullptr;
   int rows = 0;  // rows [0, rows) of *cosmos: up to its last row with data

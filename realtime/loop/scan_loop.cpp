@@ -46,10 +46,7 @@ BuiltPart PartBuilder::built() const {
 }
 
 bool PartBuilder::owns(std::int64_t id) const {
-  if (id == part_id) return true;
-  for (int k = 0; k < merged_count; ++k)
-    if (merged_ids[static_cast<std::size_t>(k)] == id) return true;
-  return false;
+  return owns_tracker_id(part_id, merged_ids, merged_count, id);
 }
 
 namespace {
