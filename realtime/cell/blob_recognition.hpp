@@ -52,7 +52,7 @@ BlobRecognition recognize_blob(PartBuilder& builder, const PartRecognitionContex
 
 // A group of completed builders that the tracker linked softly, each to the one before, across
 // gaps a part's own shadow can explain (part_tracker.hpp), the first too small to be a part
-// alone: a part its shadows cut into pieces (cell_runner.cpp forms the groups). The pieces
+// alone: a part its shadows cut into pieces (blob_groups.hpp forms the groups). The pieces
 // are recognized as one blob, from one view of them all (extract_group_view): a piece is no
 // part alone, and recognized alone it floats above the belt and fits nearly nothing, after
 // the costliest search of all. What that leaves is taken apart piece by piece, each as the

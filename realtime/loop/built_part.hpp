@@ -5,7 +5,7 @@
 // rows it names are final (their COSMOS is done and never written again, PartRows keeps each
 // row where it was put) and later rows go to other places of the pool. That is how a part is
 // recognized in the rows after its end, before the tracker has completed it (speculative
-// recognition, realtime/cell/cell_runner.cpp).
+// recognition, realtime/cell/recognizer_thread.cpp).
 #include <array>
 #include <cstdint>
 

@@ -1,8 +1,8 @@
 #pragma once
 // Jobs run on several worker threads and handed back in the order they were submitted,
-// whichever finishes first. The cell's recognizer uses it for blobs (cell_runner.cpp): a slow
-// part (a pose search over the catalog) no longer holds up the parts behind it while a core
-// sits idle, and since the results come back in submission order, whatever follows them
+// whichever finishes first. The cell's recognizer uses it for blobs (recognizer_thread.cpp):
+// a slow part (a pose search over the catalog) no longer holds up the parts behind it while a
+// core sits idle, and since the results come back in submission order, whatever follows them
 // (joining pieces, numbering and publishing poses) sees the same sequence for any number of
 // workers and any timing.
 //
