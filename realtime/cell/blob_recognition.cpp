@@ -406,7 +406,7 @@ class SceneRecognition {
 
 BlobRecognition recognize_blob(const BuiltPart& built, const PartRecognitionContext& context,
                                std::int64_t part_seq) {
-  return SceneRecognition({built}, context, part_seq).run();
+  return recognize_blob(std::vector<BuiltPart>{built}, context, part_seq);
 }
 
 BlobRecognition recognize_blob(const std::vector<BuiltPart>& pieces,
