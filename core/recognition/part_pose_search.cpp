@@ -19,37 +19,54 @@ struct FieldStage {
   std::size_t keep = 0;
 };
 
+// Fewer hypotheses than this per share are not worth handing to another thread.
+constexpr std::size_t kMinHypothesesPerShare = 32;
+
 // The stages in turn (each on fewer hypotheses, most of them on more points): best first at the
-// end; ties keep generation order (views in base order, turns by angle).
+// end; ties keep generation order (views in base order, turns by angle). Each stage's
+// hypotheses are aligned and scored in contiguous shares on `tasks`.
 void run_field_stages(const PartDistanceField& field, double truncation_mm,
                       std::initializer_list<FieldStage> stages,
-                      std::vector<FieldHypothesis>& hypotheses) {
-  std::vector<double> kept_scores;  // a max-heap of the best `keep` scores so far
+                      std::vector<FieldHypothesis>& hypotheses, const TaskRunner& tasks) {
+  std::vector<std::vector<double>> kept_scores;  // per share, a max-heap of its best scores
   std::vector<std::size_t> order;
   std::vector<FieldHypothesis> kept;
   for (const FieldStage& stage : stages) {
     const std::size_t keep = std::min(stage.keep, hypotheses.size());
     // A stage that only scores keeps the best few of many: a start whose partial sum already
-    // exceeds the keep-th best score so far cannot be among them and is scored no further.
+    // exceeds the keep-th best score its share has seen cannot be among the best `keep` of
+    // all, and is scored no further (its value is then some value above that bound). The
+    // others' scores are exact, so the kept ones do not depend on the shares.
     const bool abandon = stage.iterations == 0 && keep > 0 && keep < hypotheses.size();
-    kept_scores.clear();
-    for (FieldHypothesis& hypothesis : hypotheses) {
-      if (stage.iterations > 0)
-        hypothesis.T_part_scene = align_in_distance_field(
-            stage.points, field, hypothesis.T_part_scene, stage.iterations, truncation_mm);
-      const double bound = abandon && kept_scores.size() == keep
-                               ? kept_scores.front()
-                               : std::numeric_limits<double>::infinity();
-      hypothesis.truncated_mean_square_mm2 = field_truncated_mean_square_mm2(
-          stage.points, field, hypothesis.T_part_scene, truncation_mm, bound);
-      if (!abandon || hypothesis.truncated_mean_square_mm2 > bound) continue;
-      kept_scores.push_back(hypothesis.truncated_mean_square_mm2);
-      std::push_heap(kept_scores.begin(), kept_scores.end());
-      if (kept_scores.size() > keep) {
-        std::pop_heap(kept_scores.begin(), kept_scores.end());
-        kept_scores.pop_back();
+    const int shares = static_cast<int>(std::clamp<std::size_t>(
+        hypotheses.size() / kMinHypothesesPerShare, 1, static_cast<std::size_t>(tasks.threads())));
+    kept_scores.resize(static_cast<std::size_t>(shares));
+    const auto score_share = [&](int share) {
+      std::vector<double>& heap = kept_scores[static_cast<std::size_t>(share)];
+      heap.clear();
+      const ShareRange range = share_range(static_cast<int>(hypotheses.size()), shares, share);
+      for (int k = range.begin; k < range.end; ++k) {
+        FieldHypothesis& hypothesis = hypotheses[static_cast<std::size_t>(k)];
+        if (stage.iterations > 0)
+          hypothesis.T_part_scene = align_in_distance_field(
+              stage.points, field, hypothesis.T_part_scene, stage.iterations, truncation_mm);
+        const double bound =
+            abandon && heap.size() == keep ? heap.front() : std::numeric_limits<double>::infinity();
+        hypothesis.truncated_mean_square_mm2 = field_truncated_mean_square_mm2(
+            stage.points, field, hypothesis.T_part_scene, truncation_mm, bound);
+        if (!abandon || hypothesis.truncated_mean_square_mm2 > bound) continue;
+        heap.push_back(hypothesis.truncated_mean_square_mm2);
+        std::push_heap(heap.begin(), heap.end());
+        if (heap.size() > keep) {
+          std::pop_heap(heap.begin(), heap.end());
+          heap.pop_back();
+        }
       }
-    }
+    };
+    if (shares == 1)
+      score_share(0);
+    else
+      tasks.run(shares, score_share);
     // The best `keep` by score, ties in generation order (a stable sort's order), moved once.
     order.resize(hypotheses.size());
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
@@ -157,7 +174,8 @@ PartSearchModel build_part_search_model(const ModelBase& base, int part) {
 std::vector<FieldHypothesis> rank_field_starts(const RegistrationPoints& scene,
                                                const PartDistanceField& field,
                                                std::vector<FieldHypothesis> starts,
-                                               const PartPoseSearchParameters& parameters) {
+                                               const PartPoseSearchParameters& parameters,
+                                               const TaskRunner& tasks) {
   const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
   if (scoring.size() == 0 || field.empty()) return {};
   // The first stages on a sparser subset still: most starts are far off, and which few
@@ -170,19 +188,20 @@ std::vector<FieldHypothesis> rank_field_starts(const RegistrationPoints& scene,
                     {sparse, 1, static_cast<std::size_t>(parameters.field_aligned)},
                     {scoring, parameters.field_iterations,
                      static_cast<std::size_t>(parameters.refined_hypotheses)}},
-                   starts);
+                   starts, tasks);
   return starts;
 }
 
 std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& scene,
                                                    const ModelBase& base,
                                                    const PartSearchModel& model,
-                                                   const PartPoseSearchParameters& parameters) {
+                                                   const PartPoseSearchParameters& parameters,
+                                                   const TaskRunner& tasks) {
   const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
   if (scoring.size() == 0 || model.field.empty()) return {};
   return rank_field_starts(scene, model.field,
                            turned_view_starts(scoring, base, model, parameters.in_plane_turns),
-                           parameters);
+                           parameters, tasks);
 }
 
 std::vector<ViewPoseHypothesis> register_field_hypotheses(
@@ -245,7 +264,7 @@ std::vector<ViewPoseHypothesis> align_view_starts_in_field(
   run_field_stages(model.field, parameters.field_truncation_mm,
                    {{scoring, 0, static_cast<std::size_t>(parameters.aligned_starts)},
                     {scoring, parameters.field_iterations, kKeepAll}},
-                   hypotheses);
+                   hypotheses, one_after_another());
   for (const FieldHypothesis& hypothesis : hypotheses) {
     const int nearest = nearest_view(base, model, hypothesis.T_part_scene);
     best.push_back(
@@ -268,7 +287,7 @@ std::vector<FieldHypothesis> quick_field_poses(const RegistrationPoints& scene,
   run_field_stages(model.field, search.field_truncation_mm,
                    {{scoring, 0, static_cast<std::size_t>(parameters.aligned)},
                     {aligning, parameters.iterations, kKeepAll}},
-                   starts);
+                   starts, one_after_another());
   return starts;
 }
 

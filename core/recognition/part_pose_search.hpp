@@ -21,6 +21,7 @@
 #include "core/registration/registration_points.hpp"
 #include "core/registration/view_registration.hpp"
 #include "core/rigid_transform.hpp"
+#include "core/task_runner.hpp"
 
 namespace cosmos {
 
@@ -124,16 +125,19 @@ int nearest_view(const ModelBase& base, const PartSearchModel& model,
 std::vector<FieldHypothesis> rank_field_starts(const RegistrationPoints& scene,
                                                const PartDistanceField& field,
                                                std::vector<FieldHypothesis> starts,
-                                               const PartPoseSearchParameters& parameters);
+                                               const PartPoseSearchParameters& parameters,
+                                               const TaskRunner& tasks = one_after_another());
 
 // The search's field stages alone, from every start view's turns: at most
 // parameters.refined_hypotheses poses, best first. Their best score already tells the scene's part
 // from the others (on the 25-part cell catalog: 0.02-0.07 mm^2 against 2-47 mm^2), at half the cost
-// of the whole search.
+// of the whole search. Each stage's hypotheses are aligned and scored in shares on `tasks`;
+// the poses are the same for any runner.
 std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& scene,
                                                    const ModelBase& base,
                                                    const PartSearchModel& model,
-                                                   const PartPoseSearchParameters& parameters);
+                                                   const PartPoseSearchParameters& parameters,
+                                                   const TaskRunner& tasks = one_after_another());
 
 // How well the part can fit the scene, at a small fraction of the field stages' cost: every
 // start view's turns scored on start_points spread scene points, the best `aligned` of them

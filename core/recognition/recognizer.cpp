@@ -51,11 +51,6 @@ double candidate_score(double inlier_fraction, double rms_mm, double goodness,
   return inlier_fraction * residual_factor * (0.8 + 0.2 * std::clamp(goodness, 0.0, 1.0));
 }
 
-const TaskRunner& one_after_another() {
-  static const SequentialTaskRunner runner;
-  return runner;
-}
-
 }  // namespace
 
 const char* to_string(RecognitionStatus status) {
@@ -240,7 +235,7 @@ bool Recognizer::refine_free_motion(const ScenePoints& scene_points, ModelSurfac
       register_views(scene_points.all, model, candidate.T_model_scene, fine);
   const std::optional<RigidTransform> start =
       search_free_motion(scene_points.coarse, model, registered, parameters_.registration,
-                         parameters_.support.inlier_distance_mm, parameters_.free_motion);
+                         parameters_.support.inlier_distance_mm, parameters_.free_motion, tasks_);
   if (!start) return false;
   const RegistrationResult again = register_views(scene_points.all, model, *start, fine);
   if (again.status == RegistrationStatus::kInvalidInput) return false;

@@ -57,13 +57,13 @@
 #include "core/recognition/resting_pose_search.hpp"
 #include "core/recognition/size_variants.hpp"
 #include "core/recognition/surface_seen.hpp"
-#include "core/recognition/task_runner.hpp"
 #include "core/recognition/thin_scene.hpp"
 #include "core/registration/free_motion_search.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/registration/view_registration.hpp"
 #include "core/representation/cosmos_pipeline.hpp"
 #include "core/rigid_transform.hpp"
+#include "core/task_runner.hpp"
 
 namespace cosmos {
 

@@ -196,7 +196,7 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
             ? resting_pose_hypotheses(scene_points.all, model_base_, part, part_search_model(part),
                                       parameters_.search, parameters_.resting)
             : field_pose_hypotheses(scene_points.all, model_base_, part_search_model(part),
-                                    parameters_.search);
+                                    parameters_.search, tasks_);
     if (!resting_poses) {
       drop_floating_poses(part, field_poses);
       drop_poses_over_belt(part, scene_points.image, field_poses);

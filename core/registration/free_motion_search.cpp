@@ -1,8 +1,10 @@
 #include "core/registration/free_motion_search.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace cosmos {
 
@@ -11,7 +13,8 @@ std::optional<RigidTransform> search_free_motion(const RegistrationPoints& scene
                                                  const RegistrationResult& registered,
                                                  const RegistrationParameters& registration,
                                                  double inlier_distance_mm,
-                                                 const FreeMotionSearchParameters& parameters) {
+                                                 const FreeMotionSearchParameters& parameters,
+                                                 const TaskRunner& tasks) {
   const RigidTransform& T_registered = registered.T_model_scene;
   if (!parameters.enabled || registered.status == RegistrationStatus::kInvalidInput ||
       !(registered.weakest_constraint < parameters.max_constraint))
@@ -57,20 +60,26 @@ std::optional<RigidTransform> search_free_motion(const RegistrationPoints& scene
     step_mm = parameters.turn_step_deg * std::numbers::pi / 180 * mm_per_rad;
     steps = static_cast<int>(std::floor(180.0 / parameters.turn_step_deg));
   }
-  const double registered_fraction = explained(T_registered);
+  // Position k (0 the registered pose) at step k - steps; each scored into its own slot.
+  const int positions = 2 * steps + 1;
+  std::vector<double> fractions(static_cast<std::size_t>(positions));
+  const int shares = std::min(tasks.threads(), positions);
+  tasks.run(shares, [&](int share) {
+    const ShareRange range = share_range(positions, shares, share);
+    for (int k = range.begin; k < range.end; ++k)
+      fractions[static_cast<std::size_t>(k)] =
+          explained(k == steps ? T_registered : moved_by((k - steps) * step_mm));
+  });
+  const double registered_fraction = fractions[static_cast<std::size_t>(steps)];
   double best_fraction = registered_fraction;
-  RigidTransform best = T_registered;
-  for (int k = -steps; k <= steps; ++k) {
-    if (k == 0) continue;
-    const RigidTransform T = moved_by(k * step_mm);
-    const double fraction = explained(T);
-    if (fraction > best_fraction) {
-      best_fraction = fraction;
-      best = T;
+  int best = steps;
+  for (int k = 0; k < positions; ++k)
+    if (fractions[static_cast<std::size_t>(k)] > best_fraction) {
+      best_fraction = fractions[static_cast<std::size_t>(k)];
+      best = k;
     }
-  }
   if (best_fraction < registered_fraction + parameters.min_gain) return std::nullopt;
-  return best;
+  return moved_by((best - steps) * step_mm);
 }
 
 }  // namespace cosmos

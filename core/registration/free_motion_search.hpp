@@ -17,6 +17,7 @@
 #include "core/registration/registration_points.hpp"
 #include "core/registration/view_registration.hpp"
 #include "core/rigid_transform.hpp"
+#include "core/task_runner.hpp"
 
 namespace cosmos {
 
@@ -48,12 +49,14 @@ struct FreeMotionSearchParameters {
 
 // The position along `registered`'s weakest motion that explains the most of `scene` on
 // `model` (points within `inlier_distance_mm`, one correspondence pass each), when it
-// explains at least min_gain more than registered.T_model_scene does; else none.
+// explains at least min_gain more than registered.T_model_scene does; else none. The
+// positions are scored in shares on `tasks` and compared in their order along the motion.
 std::optional<RigidTransform> search_free_motion(const RegistrationPoints& scene,
                                                  const RegistrationPoints& model,
                                                  const RegistrationResult& registered,
                                                  const RegistrationParameters& registration,
                                                  double inlier_distance_mm,
-                                                 const FreeMotionSearchParameters& parameters);
+                                                 const FreeMotionSearchParameters& parameters,
+                                                 const TaskRunner& tasks = one_after_another());
 
 }  // namespace cosmos

@@ -1,5 +1,5 @@
 #pragma once
-// A TaskRunner (core/recognition/task_runner.hpp) with helper threads: the calling thread runs
+// A TaskRunner (core/task_runner.hpp) with helper threads: the calling thread runs
 // a batch's tasks itself and the helpers take what it has not reached yet, so the caller only
 // ever waits for a task that has started, and a batch ends sooner when a helper's core is free.
 // In the cell a recognition worker is the caller: while the other worker is idle (one part at a
@@ -16,7 +16,7 @@
 #include <thread>
 #include <vector>
 
-#include "core/recognition/task_runner.hpp"
+#include "core/task_runner.hpp"
 
 namespace cosmos {
 

@@ -20,6 +20,7 @@
 #include "sim/part_catalog.hpp"
 #include "sim/part_pose.hpp"
 #include "sim/part_scan.hpp"
+#include "tests/core/backwards_task_runner.hpp"
 #include "tests/regression_model_base.hpp"
 
 namespace cosmos {
@@ -156,6 +157,35 @@ TEST_F(PartPoseSearch, FieldStagesAloneTellTheScansPartFromTheOthers) {
   EXPECT_EQ(ranked_first, 10);
   EXPECT_EQ(convincing, 10);
   EXPECT_EQ(others_hopeless, 10);
+}
+
+// The field stages align and score their hypotheses in shares; threads that end in any order
+// (a backwards runner) give the same poses, scores and order to the bit, the first stage's
+// abandoned starts included.
+TEST_F(PartPoseSearch, FieldStagesInSharesGiveTheSamePoses) {
+  const RecognitionParameters parameters;
+  const int parts = static_cast<int>(base_->parts.size());
+  const std::vector<PartSearchModel> models = search_models();
+  const BackwardsTaskRunner backwards;
+  for (std::uint64_t seed = 101; seed < 104; ++seed) {
+    const Scan scene = scan(static_cast<int>(seed % parts), seed);
+    for (int candidate = 0; candidate < parts; ++candidate) {
+      const PartSearchModel& model = models[static_cast<std::size_t>(candidate)];
+      const std::vector<FieldHypothesis> alone =
+          field_pose_hypotheses(scene.points, *base_, model, parameters.search);
+      const std::vector<FieldHypothesis> shared =
+          field_pose_hypotheses(scene.points, *base_, model, parameters.search, backwards);
+      ASSERT_EQ(alone.size(), shared.size()) << seed << " " << candidate;
+      for (std::size_t k = 0; k < alone.size(); ++k) {
+        EXPECT_EQ(alone[k].truncated_mean_square_mm2, shared[k].truncated_mean_square_mm2);
+        EXPECT_EQ(alone[k].T_part_scene.rotation, shared[k].T_part_scene.rotation);
+        EXPECT_EQ(alone[k].T_part_scene.translation_mm, shared[k].T_part_scene.translation_mm);
+      }
+    }
+  }
+  // Every stage of every search went to the runner in two shares.
+  EXPECT_EQ(backwards.batches, 3 * parts * 3);
+  EXPECT_EQ(backwards.tasks, 2 * backwards.batches);
 }
 
 // The quick stage (CatalogRankParameters) orders the search over every part: on the same

@@ -14,6 +14,7 @@
 #include "core/range_image.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/registration/view_registration.hpp"
+#include "tests/core/backwards_task_runner.hpp"
 
 namespace cosmos::testing {
 namespace {
@@ -80,6 +81,14 @@ TEST(FreeMotionSearch, FindsTheTurnAboutABarrelsAxisThatRegistrationLeftFree) {
   const Eigen::AngleAxisd turn(again.T_model_scene.rotation);
   EXPECT_NEAR(turn.angle() / kDeg, 12.0, 1.5);
   EXPECT_GT(std::abs(turn.axis().x()), 0.95);
+  // Scored in shares that end in any order, the positions give the same pose to the bit.
+  const BackwardsTaskRunner backwards;
+  const std::optional<RigidTransform> in_shares =
+      search_free_motion(scene, model, registered, registration, 0.2, search, backwards);
+  ASSERT_TRUE(in_shares.has_value());
+  EXPECT_EQ(in_shares->rotation, found->rotation);
+  EXPECT_EQ(in_shares->translation_mm, found->translation_mm);
+  EXPECT_EQ(backwards.tasks, 2);
   RegistrationParameters strict = registration;
   strict.max_correspondence_distance_mm = 0.2;
   EXPECT_GT(

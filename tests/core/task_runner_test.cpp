@@ -1,17 +1,33 @@
-// The recognizer's task runner (task_runner.hpp): the sequential one runs a batch in order, and
-// a recognition's results do not depend on the runner. A runner that claims two threads and
-// runs every batch backwards stands in for threads that finish in any order, without timing.
-#include "core/recognition/task_runner.hpp"
+// The task runner (task_runner.hpp): the sequential one runs a batch in order, shares cover a
+// range once, and a recognition's results do not depend on the runner (a backwards runner,
+// backwards_task_runner.hpp, stands in for threads that finish in any order).
+#include "core/task_runner.hpp"
 
 #include <gtest/gtest.h>
 
 #include <vector>
 
 #include "core/recognition/recognizer.hpp"
+#include "tests/core/backwards_task_runner.hpp"
 #include "tests/core/recognition/recognizer_fixture.hpp"
 
 namespace cosmos {
 namespace {
+
+TEST(ShareRange, SharesCoverARangeOnceInOrderAndEvenly) {
+  for (const int count : {0, 1, 7, 100, 721})
+    for (const int shares : {1, 2, 3, 8}) {
+      int next = 0;
+      for (int share = 0; share < shares; ++share) {
+        const ShareRange range = share_range(count, shares, share);
+        EXPECT_EQ(range.begin, next) << count << " " << shares;
+        EXPECT_GE(range.end, range.begin);
+        EXPECT_LE(range.end - range.begin, count / shares + 1);
+        next = range.end;
+      }
+      EXPECT_EQ(next, count);
+    }
+}
 
 TEST(SequentialTaskRunner, RunsEveryTaskOnceInOrder) {
   const SequentialTaskRunner runner;
@@ -22,18 +38,6 @@ TEST(SequentialTaskRunner, RunsEveryTaskOnceInOrder) {
   runner.run(0, [&](int task) { ran.push_back(task); });
   EXPECT_EQ(ran.size(), 5u);
 }
-
-class BackwardsRunner final : public TaskRunner {
- public:
-  void run(int count, const std::function<void(int task)>& task) const override {
-    ++batches;
-    tasks += count;
-    for (int k = count - 1; k >= 0; --k) task(k);
-  }
-  int threads() const override { return 2; }
-  mutable int batches = 0;
-  mutable int tasks = 0;
-};
 
 void expect_same(const RecognitionResult& a, const RecognitionResult& b, std::uint64_t seed) {
   EXPECT_EQ(a.status, b.status) << seed;
@@ -63,7 +67,7 @@ void expect_same(const RecognitionResult& a, const RecognitionResult& b, std::ui
 // candidates and quick-fit order to the last bit, in scans that the first selected views
 // explain and in scans that go on to the search over every part.
 TEST_F(RecognizerOnRegressionBase, ResultsDoNotDependOnTheTaskRunner) {
-  const BackwardsRunner backwards;
+  const BackwardsTaskRunner backwards;
   const Recognizer with_runner(*base_, CosmosParameters{}, RecognitionParameters{}, &backwards);
   int ranked_quickly = 0, verified_first = 0;
   for (std::uint64_t seed = 201; seed < 211; ++seed) {
