@@ -30,4 +30,13 @@ const RegistrationPoints& ModelSurfaces::points(int view) {
   return slot.points;
 }
 
+std::vector<const RegistrationPoints*> ModelSurfaces::points_of(const std::vector<int>& views) {
+  // Each call evicts only the least recently asked view, never one of the last capacity()
+  // different views asked, and a slot's points stay where they are until it is evicted.
+  std::vector<const RegistrationPoints*> out;
+  out.reserve(views.size());
+  for (const int view : views) out.push_back(&points(view));
+  return out;
+}
+
 }  // namespace cosmos

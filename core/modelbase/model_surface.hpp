@@ -54,6 +54,10 @@ class ModelSurfaces {
 
   // The view's points; the reference stays valid until the next call.
   const RegistrationPoints& points(int view);
+  // The points of each of `views`, asked in that order (repeats allowed): with at most
+  // capacity() different views among them, every one stays unpacked until the next call, so
+  // the pointers may be read together (by several threads at once).
+  std::vector<const RegistrationPoints*> points_of(const std::vector<int>& views);
 
   int capacity() const { return static_cast<int>(slots_.size()); }
   // Views unpacked so far, a view unpacked again counted again.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <initializer_list>
 #include <limits>
+#include <set>
 
 #include "core/modelbase/model_surface.hpp"
 #include "core/recognition/pose_hypotheses.hpp"
@@ -207,28 +208,64 @@ std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& sce
 std::vector<ViewPoseHypothesis> register_field_hypotheses(
     const RegistrationPoints& scene, const ModelBase& base, const PartSearchModel& model,
     const std::vector<FieldHypothesis>& hypotheses, const RegistrationParameters& registration,
-    const PartPoseSearchParameters& parameters, ModelSurfaces& surfaces) {
+    const PartPoseSearchParameters& parameters, ModelSurfaces& surfaces, const TaskRunner& tasks) {
   std::vector<ViewPoseHypothesis> best;
   const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
   const PartDistanceField& field = model.field;
   if (scoring.size() == 0 || field.empty()) return best;
   // Each pose onto the part's view nearest to its viewing direction, registered there
-  // (ch. 6) on the subset, and ranked against the whole part again.
+  // (ch. 6) on the subset, and ranked against the whole part again. The gate and the
+  // registrations run in shares on `tasks`, each hypothesis into its own slot; the views are
+  // unpacked in between, in the hypotheses' order, on this thread.
   RegistrationParameters short_registration = registration;
   short_registration.max_iterations = parameters.refinement_iterations;
-  for (const FieldHypothesis& hypothesis : hypotheses) {
-    if (!parameters.refinement_gate.passes(scoring, field, hypothesis.T_part_scene)) continue;
-    const int view = nearest_view(base, model, hypothesis.T_part_scene);
-    const ModelBaseView& model_view = base.views[static_cast<std::size_t>(view)];
+  const int count = static_cast<int>(hypotheses.size());
+  const int shares = std::min(tasks.threads(), count);
+  const auto in_shares = [&](const auto& each) {
+    tasks.run(shares, [&](int share) {
+      const ShareRange range = share_range(count, shares, share);
+      for (int k = range.begin; k < range.end; ++k) each(static_cast<std::size_t>(k));
+    });
+  };
+  std::vector<std::uint8_t> passes(hypotheses.size());
+  in_shares([&](std::size_t k) {
+    passes[k] = parameters.refinement_gate.passes(scoring, field, hypotheses[k].T_part_scene);
+  });
+  std::vector<std::size_t> refined_hypotheses;
+  std::vector<int> views;
+  for (std::size_t k = 0; k < hypotheses.size(); ++k)
+    if (passes[k]) {
+      refined_hypotheses.push_back(k);
+      views.push_back(nearest_view(base, model, hypotheses[k].T_part_scene));
+    }
+  std::vector<const RegistrationPoints*> view_points;
+  const bool together = std::set<int>(views.begin(), views.end()).size() <=
+                        static_cast<std::size_t>(surfaces.capacity());
+  if (together) view_points = surfaces.points_of(views);
+  best.resize(refined_hypotheses.size());
+  const auto refine = [&](std::size_t r) {
+    const FieldHypothesis& hypothesis = hypotheses[refined_hypotheses[r]];
+    const ModelBaseView& model_view = base.views[static_cast<std::size_t>(views[r])];
     const RigidTransform T_model_scene = model_view.T_scanner_part * hypothesis.T_part_scene;
     const RegistrationResult refined =
-        register_views(scoring, surfaces.points(view), T_model_scene, short_registration);
+        register_views(scoring, together ? *view_points[r] : surfaces.points(views[r]),
+                       T_model_scene, short_registration);
     const RigidTransform& T =
         refined.status == RegistrationStatus::kInvalidInput ? T_model_scene : refined.T_model_scene;
-    best.push_back(
-        {view, T,
-         field_truncated_mean_square_mm2(scoring, field, model_view.T_scanner_part.inverse() * T,
-                                         parameters.field_truncation_mm)});
+    best[r] = {
+        views[r], T,
+        field_truncated_mean_square_mm2(scoring, field, model_view.T_scanner_part.inverse() * T,
+                                        parameters.field_truncation_mm)};
+  };
+  if (together) {
+    const int refined_count = static_cast<int>(refined_hypotheses.size());
+    const int refined_shares = std::min(tasks.threads(), refined_count);
+    tasks.run(refined_shares, [&](int share) {
+      const ShareRange range = share_range(refined_count, refined_shares, share);
+      for (int r = range.begin; r < range.end; ++r) refine(static_cast<std::size_t>(r));
+    });
+  } else {
+    for (std::size_t r = 0; r < refined_hypotheses.size(); ++r) refine(r);
   }
   std::stable_sort(best.begin(), best.end(),
                    [](const ViewPoseHypothesis& a, const ViewPoseHypothesis& b) {

@@ -182,11 +182,13 @@ std::vector<FieldHypothesis> quick_field_poses(const RegistrationPoints& scene,
                                                const CatalogRankParameters& parameters);
 
 // The search's second half: those poses moved onto the part's views nearest to them,
-// registered there and ranked by that view's fit.
+// registered there and ranked by that view's fit. The registrations run in shares on `tasks`
+// when their views fit in `surfaces` together; the poses are the same for any runner.
 std::vector<ViewPoseHypothesis> register_field_hypotheses(
     const RegistrationPoints& scene, const ModelBase& base, const PartSearchModel& model,
     const std::vector<FieldHypothesis>& hypotheses, const RegistrationParameters& registration,
-    const PartPoseSearchParameters& parameters, ModelSurfaces& surfaces);
+    const PartPoseSearchParameters& parameters, ModelSurfaces& surfaces,
+    const TaskRunner& tasks = one_after_another());
 
 // Both halves. `model`: the part's build_part_search_model.
 // The views' surfaces come from (and stay in) `surfaces`.

@@ -129,7 +129,7 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
         field_poses.front().truncated_mean_square_mm2 <= parameters_.convincing_field_fit_mm2;
     const std::vector<ViewPoseHypothesis> hypotheses = register_field_hypotheses(
         scene_points.all, model_base_, part_search_model(part), field_poses,
-        parameters_.registration, parameters_.search, surfaces);
+        parameters_.registration, parameters_.search, surfaces, tasks_);
     result.timings.registration_ms += elapsed_ms(stage);
     for (const ViewPoseHypothesis& hypothesis : hypotheses) {
       const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(hypothesis.view)];

@@ -188,6 +188,44 @@ TEST_F(PartPoseSearch, FieldStagesInSharesGiveTheSamePoses) {
   EXPECT_EQ(backwards.tasks, 2 * backwards.batches);
 }
 
+// The search's registrations on the views nearest the field poses run in shares too: the same
+// views, poses and scores to the bit, and they read the surfaces the views were unpacked into.
+TEST_F(PartPoseSearch, RegistrationsInSharesGiveTheSamePoses) {
+  const RecognitionParameters parameters;
+  const int parts = static_cast<int>(base_->parts.size());
+  const std::vector<PartSearchModel> models = search_models();
+  const BackwardsTaskRunner backwards;
+  int registered = 0;
+  for (std::uint64_t seed = 104; seed < 107; ++seed) {
+    const int part = static_cast<int>(seed % parts);
+    const Scan scene = scan(part, seed);
+    const PartSearchModel& model = models[static_cast<std::size_t>(part)];
+    const std::vector<FieldHypothesis> poses =
+        field_pose_hypotheses(scene.points, *base_, model, parameters.search);
+    ModelSurfaces alone_surfaces(*base_, parameters.surfaces),
+        shared_surfaces(*base_, parameters.surfaces);
+    const std::vector<ViewPoseHypothesis> alone =
+        register_field_hypotheses(scene.points, *base_, model, poses, parameters.registration,
+                                  parameters.search, alone_surfaces);
+    const std::vector<ViewPoseHypothesis> shared =
+        register_field_hypotheses(scene.points, *base_, model, poses, parameters.registration,
+                                  parameters.search, shared_surfaces, backwards);
+    ASSERT_EQ(alone.size(), shared.size()) << seed;
+    for (std::size_t k = 0; k < alone.size(); ++k) {
+      EXPECT_EQ(alone[k].view, shared[k].view) << seed;
+      EXPECT_EQ(alone[k].truncated_mean_square_mm2, shared[k].truncated_mean_square_mm2);
+      EXPECT_EQ(alone[k].T_model_scene.rotation, shared[k].T_model_scene.rotation);
+      EXPECT_EQ(alone[k].T_model_scene.translation_mm, shared[k].T_model_scene.translation_mm);
+    }
+    EXPECT_EQ(alone_surfaces.unpackings(), shared_surfaces.unpackings()) << seed;
+    registered += alone.empty() ? 0 : 1;
+  }
+  EXPECT_EQ(registered, 3);
+  // The gate and the registrations, each batch in two shares.
+  EXPECT_EQ(backwards.batches, 2 * 3);
+  EXPECT_EQ(backwards.tasks, 2 * backwards.batches);
+}
+
 // The quick stage (CatalogRankParameters) orders the search over every part: on the same
 // scans it puts the scan's own part first or second, its poses best first and no more than it
 // aligns. The regression base has a quarter of the cell's views, so its start views lie twice
