@@ -16,6 +16,7 @@
 #include "core/registration/registration_points.hpp"
 #include "core/registration/view_registration.hpp"
 #include "core/rigid_transform.hpp"
+#include "core/task_runner.hpp"
 
 namespace cosmos {
 
@@ -48,19 +49,22 @@ struct PartSupport {
 // `distance_mm`; returns the number of views asked. `matched` indexes ModelBase::views;
 // T_model_scene registers the scene onto it; `part_views` are the views of its part (indices
 // into ModelBase::views, in base order; PartSearchModel::views), the only ones asked. The
-// views' surfaces come from (and stay in) `surfaces`.
+// views' surfaces come from (and stay in) `surfaces`, unpacked on the calling thread; each
+// view's points are asked in shares on `tasks` (a point's distance depends on it alone).
 int part_surface_distances(const RegistrationPoints& scene, const ModelBase& base,
                            std::span<const int> part_views, int matched,
                            const RigidTransform& T_model_scene,
                            const RegistrationParameters& registration,
                            const PartSupportParameters& parameters, ModelSurfaces& surfaces,
-                           std::vector<double>& distance_mm);
+                           std::vector<double>& distance_mm,
+                           const TaskRunner& tasks = one_after_another());
 
 // The fraction of those within inlier_distance_mm, and their RMS distance.
 PartSupport measure_part_support(const RegistrationPoints& scene, const ModelBase& base,
                                  std::span<const int> part_views, int matched,
                                  const RigidTransform& T_model_scene,
                                  const RegistrationParameters& registration,
-                                 const PartSupportParameters& parameters, ModelSurfaces& surfaces);
+                                 const PartSupportParameters& parameters, ModelSurfaces& surfaces,
+                                 const TaskRunner& tasks = one_after_another());
 
 }  // namespace cosmos

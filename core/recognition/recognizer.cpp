@@ -241,7 +241,7 @@ bool Recognizer::refine_free_motion(const ScenePoints& scene_points, ModelSurfac
   if (again.status == RegistrationStatus::kInvalidInput) return false;
   const PartSupport support = measure_part_support(
       scene_points.all, model_base_, part_search_model(candidate.part).views, candidate.view,
-      again.T_model_scene, parameters_.registration, parameters_.support, surfaces);
+      again.T_model_scene, parameters_.registration, parameters_.support, surfaces, tasks_);
   if (!(support.inlier_fraction > candidate.inlier_fraction)) return false;
   candidate.T_model_scene = again.T_model_scene;
   candidate.rms_mm = support.rms_mm;
@@ -344,11 +344,11 @@ void Recognizer::register_candidate(const ScenePoints& scene_points,
   // a fraction of the cost, and only the plausible ones are measured on every point.
   PartSupport support = measure_part_support(
       scene_points.coarse, model_base_, part_search_model(candidate.part).views, candidate.view,
-      best.T_model_scene, parameters_.registration, parameters_.support, surfaces);
+      best.T_model_scene, parameters_.registration, parameters_.support, surfaces, tasks_);
   if (support.inlier_fraction >= parameters_.plausible_support)
     support = measure_part_support(
         scene_points.all, model_base_, part_search_model(candidate.part).views, candidate.view,
-        best.T_model_scene, parameters_.registration, parameters_.support, surfaces);
+        best.T_model_scene, parameters_.registration, parameters_.support, surfaces, tasks_);
   candidate.registration_status = best.status;
   candidate.T_model_scene = best.T_model_scene;
   candidate.rms_mm = support.rms_mm;

@@ -13,6 +13,7 @@
 #include "core/modelbase/model_surface.hpp"
 #include "core/registration/registration_points.hpp"
 #include "tests/common/plane_view_points.hpp"
+#include "tests/core/backwards_task_runner.hpp"
 
 namespace cosmos {
 namespace {
@@ -52,15 +53,16 @@ ModelBase two_view_base(double second_view_angle_deg) {
   return base;
 }
 
-// Scene points over x = -8.75, -8.25, ..., 8.75 (half of them at x < 0) and five rows of y,
-// each `offset_mm(index)` above the plane, normals +z.
+// Scene points over x = -8.75, -8.25, ..., 8.75 (half of them at x < 0) and `rows` rows of y
+// over [-6, 6] mm, each `offset_mm(index)` above the plane, normals +z.
 template <class Offset>
-RegistrationPoints scene_points(Offset offset_mm) {
+RegistrationPoints scene_points(Offset offset_mm, int rows = 5) {
   std::vector<Eigen::Vector3d> positions;
-  for (int row = 0; row < 5; ++row)
+  for (int row = 0; row < rows; ++row)
     for (int k = 0; k < 36; ++k) {
       const int index = static_cast<int>(positions.size());
-      positions.emplace_back(-8.75 + 0.5 * k, -6.0 + 3.0 * row, kPlaneHeightMm + offset_mm(index));
+      positions.emplace_back(-8.75 + 0.5 * k, -6.0 + 12.0 * row / (rows - 1),
+                             kPlaneHeightMm + offset_mm(index));
     }
   RegistrationPoints scene;
   const auto n = static_cast<Eigen::Index>(positions.size());
@@ -77,10 +79,11 @@ RegistrationPoints scene_points(Offset offset_mm) {
 }
 
 PartSupport support_of(const RegistrationPoints& scene, const ModelBase& base,
-                       const PartSupportParameters& parameters = {}) {
+                       const PartSupportParameters& parameters = {},
+                       const TaskRunner& tasks = one_after_another()) {
   ModelSurfaces surfaces(base, ModelSurfaceCacheParameters{});
   return measure_part_support(scene, base, kPartZeroViews, 0, RigidTransform::identity(),
-                              RegistrationParameters{}, parameters, surfaces);
+                              RegistrationParameters{}, parameters, surfaces, tasks);
 }
 
 TEST(PartSupport, CountsThePointsWithinTheInlierDistanceAndTheirRms) {
@@ -119,6 +122,26 @@ TEST(PartSupport, NeighbouringViewsOfThePartExplainWhatTheMatchedViewMisses) {
   const PartSupport wider =
       support_of(scene, two_view_base(50.0), {.neighbour_view_angle_deg = 60.0});
   EXPECT_NEAR(wider.inlier_fraction, 1.0, 1e-12);
+}
+
+// Each view's points asked in shares that end in any order (a backwards runner): the same
+// support to the bit, on the matched view and on the neighbour asked about what it missed.
+TEST(PartSupport, PointsAskedInSharesGiveTheSameSupport) {
+  const ModelBase base = two_view_base(30.0);
+  const auto offset = [](int i) { return i % 3 == 0 ? -0.05 : i % 3 == 1 ? 0.15 : 0.6; };
+  const RegistrationPoints scene = scene_points(offset, 30);
+  const PartSupport alone = support_of(scene, base);
+  const BackwardsTaskRunner backwards;
+  const PartSupport shared = support_of(scene, base, {}, backwards);
+  EXPECT_EQ(shared.inlier_fraction, alone.inlier_fraction);
+  EXPECT_EQ(shared.rms_mm, alone.rms_mm);
+  EXPECT_EQ(shared.views_used, 2);
+  EXPECT_EQ(alone.views_used, 2);
+  EXPECT_NEAR(alone.inlier_fraction, 2.0 / 3, 1e-12);
+  // 1,080 points on the matched view, the 720 it did not explain on its neighbour: two
+  // batches of two shares.
+  EXPECT_EQ(backwards.batches, 2);
+  EXPECT_EQ(backwards.tasks, 4);
 }
 
 // The scene registered 3 mm too high: nothing within 0.2 mm (the lines meet the plane 3 mm away).
