@@ -5,37 +5,6 @@
 #include <numbers>
 
 namespace cosmos {
-namespace {
-
-// Fewer points than this per share are not worth handing to another thread.
-constexpr int kMinPointsPerShare = 256;
-
-// Per point of `scene` listed in `indices` (every point when null), its distance to `model`
-// under T_model_scene, in contiguous shares of the points on `tasks`.
-void distances_in_shares(const RegistrationPoints& scene, const std::vector<int>* indices,
-                         const RegistrationPoints& model, const RigidTransform& T_model_scene,
-                         const RegistrationParameters& strict, const TaskRunner& tasks,
-                         std::vector<double>& distance_mm) {
-  const int count = indices ? static_cast<int>(indices->size()) : scene.size();
-  const int shares = std::clamp(count / kMinPointsPerShare, 1, tasks.threads());
-  if (shares == 1)
-    return correspondence_distances(indices ? select_points(scene, *indices) : scene, model,
-                                    T_model_scene, strict, distance_mm);
-  std::vector<std::vector<double>> share_distances(static_cast<std::size_t>(shares));
-  tasks.run(shares, [&](int share) {
-    const ShareRange range = share_range(count, shares, share);
-    std::vector<int> points(static_cast<std::size_t>(range.end - range.begin));
-    for (int k = range.begin; k < range.end; ++k)
-      points[static_cast<std::size_t>(k - range.begin)] = indices ? (*indices)[k] : k;
-    correspondence_distances(select_points(scene, points), model, T_model_scene, strict,
-                             share_distances[static_cast<std::size_t>(share)]);
-  });
-  distance_mm.clear();
-  for (const std::vector<double>& share : share_distances)
-    distance_mm.insert(distance_mm.end(), share.begin(), share.end());
-}
-
-}  // namespace
 
 int part_surface_distances(const RegistrationPoints& scene, const ModelBase& base,
                            std::span<const int> part_views, int matched,
@@ -49,8 +18,8 @@ int part_surface_distances(const RegistrationPoints& scene, const ModelBase& bas
   strict.max_correspondence_distance_mm = parameters.inlier_distance_mm;
   const ModelBaseView& view = base.views[static_cast<std::size_t>(matched)];
   std::vector<double> distance_mm;
-  distances_in_shares(scene, nullptr, surfaces.points(matched), T_model_scene, strict, tasks,
-                      nearest_mm);
+  correspondence_distances(scene, surfaces.points(matched), T_model_scene, strict, nearest_mm,
+                           tasks);
   int views_used = 1;
 
   const RigidTransform T_part_scene = view.T_scanner_part.inverse() * T_model_scene;
@@ -75,8 +44,8 @@ int part_surface_distances(const RegistrationPoints& scene, const ModelBase& bas
         unexplained.push_back(static_cast<int>(i));
     if (unexplained.empty()) break;
     const ModelBaseView& other = base.views[static_cast<std::size_t>(v)];
-    distances_in_shares(scene, &unexplained, surfaces.points(v),
-                        other.T_scanner_part * T_part_scene, strict, tasks, distance_mm);
+    correspondence_distances(select_points(scene, unexplained), surfaces.points(v),
+                             other.T_scanner_part * T_part_scene, strict, distance_mm, tasks);
     for (std::size_t k = 0; k < unexplained.size(); ++k) {
       double& nearest = nearest_mm[static_cast<std::size_t>(unexplained[k])];
       nearest = std::min(nearest, distance_mm[k]);

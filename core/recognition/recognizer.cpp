@@ -27,10 +27,10 @@ struct Support {
 
 Support measure_support(const RegistrationPoints& scene, const RegistrationPoints& model,
                         const RigidTransform& T_model_scene,
-                        const RecognitionParameters& parameters) {
+                        const RecognitionParameters& parameters, const TaskRunner& tasks) {
   RegistrationParameters strict = parameters.registration;
   strict.max_correspondence_distance_mm = parameters.support.inlier_distance_mm;
-  const AlignmentScore score = score_alignment(scene, model, T_model_scene, strict);
+  const AlignmentScore score = score_alignment(scene, model, T_model_scene, strict, tasks);
   Support support;
   support.inlier_fraction = score.matched_fraction;
   // The truncated mean square counts unmatched points at the limit; take them out again.
@@ -232,12 +232,12 @@ bool Recognizer::refine_free_motion(const ScenePoints& scene_points, ModelSurfac
   fine.max_iterations = parameters_.fine_registration_iterations;
   // One more pass from the registered pose tells which motion its inliers leave free.
   const RegistrationResult registered =
-      register_views(scene_points.all, model, candidate.T_model_scene, fine);
+      register_views(scene_points.all, model, candidate.T_model_scene, fine, tasks_);
   const std::optional<RigidTransform> start =
       search_free_motion(scene_points.coarse, model, registered, parameters_.registration,
                          parameters_.support.inlier_distance_mm, parameters_.free_motion, tasks_);
   if (!start) return false;
-  const RegistrationResult again = register_views(scene_points.all, model, *start, fine);
+  const RegistrationResult again = register_views(scene_points.all, model, *start, fine, tasks_);
   if (again.status == RegistrationStatus::kInvalidInput) return false;
   const PartSupport support = measure_part_support(
       scene_points.all, model_base_, part_search_model(candidate.part).views, candidate.view,
@@ -325,13 +325,14 @@ void Recognizer::register_candidate(const ScenePoints& scene_points,
       continue;
     const RegistrationPoints& model = surfaces.points(start.view);
     RegistrationResult registration =
-        register_views(scene_points.coarse, model, start.T_model_scene, coarse);
+        register_views(scene_points.coarse, model, start.T_model_scene, coarse, tasks_);
     if (registration.status == RegistrationStatus::kInvalidInput) continue;
-    registration = register_views(scene_points.all, model, registration.T_model_scene, fine);
+    registration =
+        register_views(scene_points.all, model, registration.T_model_scene, fine, tasks_);
     // A degenerate (still planar) result is kept: its support decides.
     if (registration.status == RegistrationStatus::kInvalidInput) continue;
     const Support support =
-        measure_support(scene_points.all, model, registration.T_model_scene, parameters_);
+        measure_support(scene_points.all, model, registration.T_model_scene, parameters_, tasks_);
     if (candidate.registered && support.inlier_fraction <= best_support.inlier_fraction) continue;
     candidate.registered = true;
     best = registration;

@@ -44,35 +44,58 @@ bool valid_input(const RegistrationPoints& scene, const RegistrationPoints& mode
          p.max_normal_angle_deg > 0 && p.rejection_mad_factor > 0 && p.min_distance_sigma_mm > 0;
 }
 
+// Fewer control points than this per share are not worth handing to another thread.
+constexpr int kMinPointsPerShare = 256;
+
 // Step (i) of §6.4 for every control point; candidates that pass the geometric tests (line
-// met the model close enough, compatible normals). Returns the intersection steps spent.
+// met the model close enough, compatible normals), in the points' order. Returns the
+// intersection steps spent. A point's correspondence depends on it alone: the points are
+// taken in contiguous shares on `tasks`, their lists joined in share order.
 long find_correspondences(const RegistrationPoints& scene, const RegistrationPoints& model,
                           const RigidTransform& T_model_scene, const RegistrationParameters& p,
-                          std::vector<Correspondence>& out) {
+                          std::vector<Correspondence>& out, const TaskRunner& tasks) {
   out.clear();
   const double min_normal_cosine = std::cos(p.max_normal_angle_deg * std::numbers::pi / 180.0);
   const Eigen::Vector3d scene_view_axis = T_model_scene.rotation.col(2);
   const double scene_sigma2 = scene.z_noise_sigma_mm * scene.z_noise_sigma_mm;
   const double min_variance = p.min_distance_sigma_mm * p.min_distance_sigma_mm;
-  long steps = 0;
-  for (int i = 0; i < scene.size(); ++i) {
-    const Eigen::Vector3d point = T_model_scene.apply(scene.position_mm.col(i));
-    const Eigen::Vector3d normal = T_model_scene.rotate(scene.normal.col(i));
-    TangentPlaneCorrespondence c;
-    const CorrespondenceStatus status =
-        find_tangent_plane(model, point, normal, p.max_intersection_steps, c);
-    steps += c.steps;
-    if (status != CorrespondenceStatus::kFound) continue;
-    if (c.travel_mm > p.max_correspondence_distance_mm) continue;
-    if (c.model_normal.dot(normal) < min_normal_cosine) continue;
-    double weight = 1.0;
-    if (p.estimator == RegistrationEstimator::kMinimumVariance) {
-      const double scene_height_variance = scene_sigma2 * scene.fit_cofactor(kHeight, kHeight);
-      const double variance =
-          distance_variance_mm2(model, c, point, scene_height_variance, scene_view_axis);
-      weight = 1.0 / std::max(variance, min_variance);
+  const auto correspond = [&](int begin, int end, std::vector<Correspondence>& into) {
+    long steps = 0;
+    for (int i = begin; i < end; ++i) {
+      const Eigen::Vector3d point = T_model_scene.apply(scene.position_mm.col(i));
+      const Eigen::Vector3d normal = T_model_scene.rotate(scene.normal.col(i));
+      TangentPlaneCorrespondence c;
+      const CorrespondenceStatus status =
+          find_tangent_plane(model, point, normal, p.max_intersection_steps, c);
+      steps += c.steps;
+      if (status != CorrespondenceStatus::kFound) continue;
+      if (c.travel_mm > p.max_correspondence_distance_mm) continue;
+      if (c.model_normal.dot(normal) < min_normal_cosine) continue;
+      double weight = 1.0;
+      if (p.estimator == RegistrationEstimator::kMinimumVariance) {
+        const double scene_height_variance = scene_sigma2 * scene.fit_cofactor(kHeight, kHeight);
+        const double variance =
+            distance_variance_mm2(model, c, point, scene_height_variance, scene_view_axis);
+        weight = 1.0 / std::max(variance, min_variance);
+      }
+      into.push_back({i, point, c.model_normal, c.distance_mm, weight});
     }
-    out.push_back({i, point, c.model_normal, c.distance_mm, weight});
+    return steps;
+  };
+  const int shares = std::clamp(scene.size() / kMinPointsPerShare, 1, tasks.threads());
+  if (shares == 1) return correspond(0, scene.size(), out);
+  std::vector<std::vector<Correspondence>> share_out(static_cast<std::size_t>(shares));
+  std::vector<long> share_steps(static_cast<std::size_t>(shares), 0);
+  tasks.run(shares, [&](int share) {
+    const ShareRange range = share_range(scene.size(), shares, share);
+    share_steps[static_cast<std::size_t>(share)] =
+        correspond(range.begin, range.end, share_out[static_cast<std::size_t>(share)]);
+  });
+  long steps = 0;
+  for (int share = 0; share < shares; ++share) {
+    const std::vector<Correspondence>& part = share_out[static_cast<std::size_t>(share)];
+    out.insert(out.end(), part.begin(), part.end());
+    steps += share_steps[static_cast<std::size_t>(share)];
   }
   return steps;
 }
@@ -169,7 +192,8 @@ SolveStatus solve_increment(const std::vector<Correspondence>& inliers, Incremen
 
 RegistrationResult register_views(const RegistrationPoints& scene, const RegistrationPoints& model,
                                   const RigidTransform& T_model_scene_initial,
-                                  const RegistrationParameters& parameters) {
+                                  const RegistrationParameters& parameters,
+                                  const TaskRunner& tasks) {
   RegistrationResult result;
   result.T_model_scene = T_model_scene_initial;
   if (!valid_input(scene, model, parameters)) return result;
@@ -185,7 +209,7 @@ RegistrationResult register_views(const RegistrationPoints& scene, const Registr
   result.status = RegistrationStatus::kIterationBudgetExhausted;
   for (int iteration = 1; iteration <= parameters.max_iterations; ++iteration) {
     result.intersection_steps +=
-        find_correspondences(scene, model, result.T_model_scene, parameters, candidates);
+        find_correspondences(scene, model, result.T_model_scene, parameters, candidates, tasks);
     if (static_cast<int>(candidates.size()) < parameters.min_inliers) {
       result.status = RegistrationStatus::kTooFewCorrespondences;
       break;
@@ -255,13 +279,13 @@ RegistrationResult register_views(const RegistrationPoints& scene, const Registr
 
 AlignmentScore score_alignment(const RegistrationPoints& scene, const RegistrationPoints& model,
                                const RigidTransform& T_model_scene,
-                               const RegistrationParameters& parameters) {
+                               const RegistrationParameters& parameters, const TaskRunner& tasks) {
   AlignmentScore score;
   if (!valid_input(scene, model, parameters)) return score;
   RegistrationParameters unweighted = parameters;
   unweighted.estimator = RegistrationEstimator::kChenMedioni;
   std::vector<Correspondence> candidates;
-  find_correspondences(scene, model, T_model_scene, unweighted, candidates);
+  find_correspondences(scene, model, T_model_scene, unweighted, candidates, tasks);
   const double limit2 =
       parameters.max_correspondence_distance_mm * parameters.max_correspondence_distance_mm;
   double sum = limit2 * static_cast<double>(scene.size() - static_cast<int>(candidates.size()));
@@ -279,14 +303,14 @@ AlignmentScore score_alignment(const RegistrationPoints& scene, const Registrati
 void correspondence_distances(const RegistrationPoints& scene, const RegistrationPoints& model,
                               const RigidTransform& T_model_scene,
                               const RegistrationParameters& parameters,
-                              std::vector<double>& abs_distance_mm) {
+                              std::vector<double>& abs_distance_mm, const TaskRunner& tasks) {
   abs_distance_mm.assign(static_cast<std::size_t>(scene.size()),
                          std::numeric_limits<double>::infinity());
   if (!valid_input(scene, model, parameters)) return;
   RegistrationParameters unweighted = parameters;
   unweighted.estimator = RegistrationEstimator::kChenMedioni;
   std::vector<Correspondence> candidates;
-  find_correspondences(scene, model, T_model_scene, unweighted, candidates);
+  find_correspondences(scene, model, T_model_scene, unweighted, candidates, tasks);
   for (const Correspondence& c : candidates)
     abs_distance_mm[static_cast<std::size_t>(c.scene_index)] = std::abs(c.distance_mm);
 }

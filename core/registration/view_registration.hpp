@@ -30,6 +30,7 @@
 #include "core/parameter_visitor.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/rigid_transform.hpp"
+#include "core/task_runner.hpp"
 
 namespace cosmos {
 
@@ -119,9 +120,12 @@ struct RegistrationResult {
   Eigen::Vector3d twist_centre_mm = Eigen::Vector3d::Zero();
 };
 
+// Each pass's correspondences are found in shares of the scene's points on `tasks` and used in
+// the points' order: the result is the same for any runner.
 RegistrationResult register_views(const RegistrationPoints& scene, const RegistrationPoints& model,
                                   const RigidTransform& T_model_scene_initial,
-                                  const RegistrationParameters& parameters);
+                                  const RegistrationParameters& parameters,
+                                  const TaskRunner& tasks = one_after_another());
 
 // How well T_model_scene aligns the views, from one correspondence pass: the mean over all
 // scene control points of min(d_s^2, D^2) (no correspondence counts D^2), with D the
@@ -133,7 +137,8 @@ struct AlignmentScore {
 };
 AlignmentScore score_alignment(const RegistrationPoints& scene, const RegistrationPoints& model,
                                const RigidTransform& T_model_scene,
-                               const RegistrationParameters& parameters);
+                               const RegistrationParameters& parameters,
+                               const TaskRunner& tasks = one_after_another());
 
 // Per scene control point, |d_s| of its correspondence under T_model_scene (the geometric
 // tests of one registration pass), +infinity where it has none: for measuring how much of a
@@ -141,6 +146,7 @@ AlignmentScore score_alignment(const RegistrationPoints& scene, const Registrati
 void correspondence_distances(const RegistrationPoints& scene, const RegistrationPoints& model,
                               const RigidTransform& T_model_scene,
                               const RegistrationParameters& parameters,
-                              std::vector<double>& abs_distance_mm);
+                              std::vector<double>& abs_distance_mm,
+                              const TaskRunner& tasks = one_after_another());
 
 }  // namespace cosmos
