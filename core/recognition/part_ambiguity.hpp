@@ -58,7 +58,8 @@ struct PartAmbiguityParameters {
   // that the winner has a rival to be compared with.
   int rival_verifications = 1;
   // The rival part, when only verification proposed it, is searched over all its views
-  // (part_pose_search.hpp) before the comparison.
+  // (part_pose_search.hpp) before the comparison, unless the search over every part found its
+  // quick fit hopeless (RecognitionResult::rival_left_unsearched).
   bool search_rival_part = true;
   // A scene that more than max_uncompared_close_parts parts fit about as closely as a scene
   // fits its own part (their quick field fits within close_fit_mm2, part_pose_search.hpp),

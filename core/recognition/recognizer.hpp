@@ -36,6 +36,7 @@
 //
 // Everything is counted in operations (views, hypotheses, iterations), so the result depends
 // only on the input; only the timings vary between runs.
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -356,6 +357,13 @@ struct RecognitionResult {
   // The order of the search over every part, best first; empty when it did not run in the
   // order of the quick field fits.
   std::vector<QuickFieldFit> quick_fits;
+  // The best full field fit that search reached (its parts' field stages; infinity when it did
+  // not run in quick order): a part whose quick fit is hopeless beside it is searched no
+  // further, there or as a rival (search.kept_score_factor, kept_score_margin_mm2).
+  double best_field_fit_mm2 = std::numeric_limits<double>::infinity();
+  // The decision's rival was not searched over its part's views, its quick fit being hopeless
+  // beside best_field_fit_mm2: it was compared as its selected view registered it.
+  bool rival_left_unsearched = false;
   // The parts that search left out, too small or too thick for the scene (part_size_gate.hpp).
   int parts_smaller_than_scene = 0;
   int parts_thicker_than_scene = 0;
@@ -367,8 +375,10 @@ class Recognizer {
  public:
   // The base must outlive the recognizer. `cosmos` must be what the base was built with.
   // `tasks` (outliving the recognizer too) runs the independent work of a recognition: the
-  // first selected views' verifications, the parts' quick fits; none: one after another. The
-  // results are the same with any runner (task_runner.hpp).
+  // first selected views' verifications, the parts' quick fits, a searched part's field
+  // stages and short registrations, the points of each registration pass and support
+  // measurement, the free-motion positions; none: one after another. The results are the same
+  // with any runner (task_runner.hpp).
   Recognizer(const ModelBase& model_base, const CosmosParameters& cosmos,
              const RecognitionParameters& parameters, const TaskRunner* tasks = nullptr);
 

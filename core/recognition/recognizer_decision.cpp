@@ -93,9 +93,20 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
         result.candidates.begin(), result.candidates.end(),
         [part](const RecognitionCandidate& c) { return c.part == part && c.from_pose_search; });
   };
+  // Unless the search over every part found its quick fit hopeless beside the best full fit
+  // there: as in that search, its full stages would rarely lower the fit that much, and the
+  // search left every part ranked behind it unsearched for that reason.
+  const auto hopeless = [&](int part) {
+    const auto quick = std::find_if(result.quick_fits.begin(), result.quick_fits.end(),
+                                    [part](const QuickFieldFit& fit) { return fit.part == part; });
+    return quick != result.quick_fits.end() &&
+           quick->fit_mm2 > parameters_.search.worst_kept_score_mm2(result.best_field_fit_mm2);
+  };
   std::vector<int> unsearched;
-  if (rival && parameters_.ambiguity.search_rival_part && !pose_searched(rival->part))
-    unsearched.push_back(rival->part);
+  if (rival && parameters_.ambiguity.search_rival_part && !pose_searched(rival->part)) {
+    result.rival_left_unsearched = hopeless(rival->part);
+    if (!result.rival_left_unsearched) unsearched.push_back(rival->part);
+  }
   if (winner && parameters_.size_variants.search)
     for (int variant : size_variants_[static_cast<std::size_t>(winner->part)])
       if (!pose_searched(variant) &&

@@ -205,6 +205,7 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
     const double best_fit_mm2 = field_poses.empty() ? std::numeric_limits<double>::infinity()
                                                     : field_poses.front().truncated_mean_square_mm2;
     best_fit_mm2_of_all = std::min(best_fit_mm2_of_all, best_fit_mm2);
+    if (quick_ranked) result.best_field_fit_mm2 = best_fit_mm2_of_all;
     // The resting poses' field stages are cheap: every part's are run and the parts
     // registered in the order of their fit. In quick order the first part is the scene's
     // own nearly always, and is registered whatever its fit; so is the rival after it.
