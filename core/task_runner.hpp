@@ -5,6 +5,7 @@
 // (SequentialTaskRunner, the default). An algorithm gives it only tasks that read shared
 // inputs and each write their own slots, and merges the slots in task order afterwards, so its
 // results are the same whichever runner runs them, on however many threads, in whatever order.
+#include <algorithm>
 #include <functional>
 
 namespace cosmos {
@@ -29,7 +30,7 @@ class SequentialTaskRunner final : public TaskRunner {
 // The default runner of the functions that take one: every task on the calling thread.
 const TaskRunner& one_after_another();
 
-// The ranges [begin, end) of `count` items in `shares` contiguous shares, share `share`'s.
+// The range [begin, end) of share `share` of `count` items in `shares` contiguous shares.
 struct ShareRange {
   int begin = 0;
   int end = 0;
@@ -39,6 +40,23 @@ inline ShareRange share_range(int count, int shares, int share) {
     return static_cast<int>(static_cast<long long>(count) * s / shares);
   };
   return {at(share), at(share + 1)};
+}
+
+// How many shares `count` items make on `tasks`, none of fewer than `min_per_share` items
+// (a smaller share is not worth handing to another thread): at least one.
+inline int share_count(const TaskRunner& tasks, int count, int min_per_share) {
+  return std::clamp(count / std::max(min_per_share, 1), 1, std::max(tasks.threads(), 1));
+}
+
+// each(share, begin, end) for the `shares` contiguous shares of [0, count): as tasks on
+// `tasks`, or on the calling thread when there is one share.
+template <class Each>
+void run_in_shares(const TaskRunner& tasks, int count, int shares, const Each& each) {
+  if (shares <= 1) return each(0, 0, count);
+  tasks.run(shares, [&](int share) {
+    const ShareRange range = share_range(count, shares, share);
+    each(share, range.begin, range.end);
+  });
 }
 
 }  // namespace cosmos

@@ -21,7 +21,7 @@ struct FieldStage {
 };
 
 // Fewer hypotheses than this per share are not worth handing to another thread.
-constexpr std::size_t kMinHypothesesPerShare = 32;
+constexpr int kMinHypothesesPerShare = 32;
 
 // The stages in turn (each on fewer hypotheses, most of them on more points): best first at the
 // end; ties keep generation order (views in base order, turns by angle). Each stage's
@@ -39,14 +39,13 @@ void run_field_stages(const PartDistanceField& field, double truncation_mm,
     // all, and is scored no further (its value is then some value above that bound). The
     // others' scores are exact, so the kept ones do not depend on the shares.
     const bool abandon = stage.iterations == 0 && keep > 0 && keep < hypotheses.size();
-    const int shares = static_cast<int>(std::clamp<std::size_t>(
-        hypotheses.size() / kMinHypothesesPerShare, 1, static_cast<std::size_t>(tasks.threads())));
+    const int count = static_cast<int>(hypotheses.size());
+    const int shares = share_count(tasks, count, kMinHypothesesPerShare);
     kept_scores.resize(static_cast<std::size_t>(shares));
-    const auto score_share = [&](int share) {
+    run_in_shares(tasks, count, shares, [&](int share, int begin, int end) {
       std::vector<double>& heap = kept_scores[static_cast<std::size_t>(share)];
       heap.clear();
-      const ShareRange range = share_range(static_cast<int>(hypotheses.size()), shares, share);
-      for (int k = range.begin; k < range.end; ++k) {
+      for (int k = begin; k < end; ++k) {
         FieldHypothesis& hypothesis = hypotheses[static_cast<std::size_t>(k)];
         if (stage.iterations > 0)
           hypothesis.T_part_scene = align_in_distance_field(
@@ -63,11 +62,7 @@ void run_field_stages(const PartDistanceField& field, double truncation_mm,
           heap.pop_back();
         }
       }
-    };
-    if (shares == 1)
-      score_share(0);
-    else
-      tasks.run(shares, score_share);
+    });
     // The best `keep` by score, ties in generation order (a stable sort's order), moved once.
     order.resize(hypotheses.size());
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
@@ -220,16 +215,10 @@ std::vector<ViewPoseHypothesis> register_field_hypotheses(
   RegistrationParameters short_registration = registration;
   short_registration.max_iterations = parameters.refinement_iterations;
   const int count = static_cast<int>(hypotheses.size());
-  const int shares = std::min(tasks.threads(), count);
-  const auto in_shares = [&](const auto& each) {
-    tasks.run(shares, [&](int share) {
-      const ShareRange range = share_range(count, shares, share);
-      for (int k = range.begin; k < range.end; ++k) each(static_cast<std::size_t>(k));
-    });
-  };
   std::vector<std::uint8_t> passes(hypotheses.size());
-  in_shares([&](std::size_t k) {
-    passes[k] = parameters.refinement_gate.passes(scoring, field, hypotheses[k].T_part_scene);
+  run_in_shares(tasks, count, share_count(tasks, count, 1), [&](int, int begin, int end) {
+    for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end); ++k)
+      passes[k] = parameters.refinement_gate.passes(scoring, field, hypotheses[k].T_part_scene);
   });
   std::vector<std::size_t> refined_hypotheses;
   std::vector<int> views;
@@ -257,16 +246,11 @@ std::vector<ViewPoseHypothesis> register_field_hypotheses(
         field_truncated_mean_square_mm2(scoring, field, model_view.T_scanner_part.inverse() * T,
                                         parameters.field_truncation_mm)};
   };
-  if (together) {
-    const int refined_count = static_cast<int>(refined_hypotheses.size());
-    const int refined_shares = std::min(tasks.threads(), refined_count);
-    tasks.run(refined_shares, [&](int share) {
-      const ShareRange range = share_range(refined_count, refined_shares, share);
-      for (int r = range.begin; r < range.end; ++r) refine(static_cast<std::size_t>(r));
-    });
-  } else {
-    for (std::size_t r = 0; r < refined_hypotheses.size(); ++r) refine(r);
-  }
+  const int refined_count = static_cast<int>(refined_hypotheses.size());
+  run_in_shares(tasks, refined_count, together ? share_count(tasks, refined_count, 1) : 1,
+                [&](int, int begin, int end) {
+                  for (int r = begin; r < end; ++r) refine(static_cast<std::size_t>(r));
+                });
   std::stable_sort(best.begin(), best.end(),
                    [](const ViewPoseHypothesis& a, const ViewPoseHypothesis& b) {
                      return a.truncated_mean_square_mm2 < b.truncated_mean_square_mm2;

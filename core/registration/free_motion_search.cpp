@@ -63,10 +63,8 @@ std::optional<RigidTransform> search_free_motion(const RegistrationPoints& scene
   // Position k (0 the registered pose) at step k - steps; each scored into its own slot.
   const int positions = 2 * steps + 1;
   std::vector<double> fractions(static_cast<std::size_t>(positions));
-  const int shares = std::min(tasks.threads(), positions);
-  tasks.run(shares, [&](int share) {
-    const ShareRange range = share_range(positions, shares, share);
-    for (int k = range.begin; k < range.end; ++k)
+  run_in_shares(tasks, positions, share_count(tasks, positions, 1), [&](int, int begin, int end) {
+    for (int k = begin; k < end; ++k)
       fractions[static_cast<std::size_t>(k)] =
           explained(k == steps ? T_registered : moved_by((k - steps) * step_mm));
   });

@@ -82,14 +82,13 @@ long find_correspondences(const RegistrationPoints& scene, const RegistrationPoi
     }
     return steps;
   };
-  const int shares = std::clamp(scene.size() / kMinPointsPerShare, 1, tasks.threads());
+  const int shares = share_count(tasks, scene.size(), kMinPointsPerShare);
   if (shares == 1) return correspond(0, scene.size(), out);
   std::vector<std::vector<Correspondence>> share_out(static_cast<std::size_t>(shares));
   std::vector<long> share_steps(static_cast<std::size_t>(shares), 0);
-  tasks.run(shares, [&](int share) {
-    const ShareRange range = share_range(scene.size(), shares, share);
+  run_in_shares(tasks, scene.size(), shares, [&](int share, int begin, int end) {
     share_steps[static_cast<std::size_t>(share)] =
-        correspond(range.begin, range.end, share_out[static_cast<std::size_t>(share)]);
+        correspond(begin, end, share_out[static_cast<std::size_t>(share)]);
   });
   long steps = 0;
   for (int share = 0; share < shares; ++share) {

@@ -29,6 +29,27 @@ TEST(ShareRange, SharesCoverARangeOnceInOrderAndEvenly) {
     }
 }
 
+TEST(ShareRange, ItemsAreSharedOnlyInSharesWorthAThreadAndEachRunsOnce) {
+  const SequentialTaskRunner one;
+  const BackwardsTaskRunner two;
+  EXPECT_EQ(share_count(one, 1000, 10), 1);
+  EXPECT_EQ(share_count(two, 1000, 10), 2);
+  EXPECT_EQ(share_count(two, 19, 10), 1);
+  EXPECT_EQ(share_count(two, 0, 10), 1);
+  std::vector<int> seen(9, 0);
+  run_in_shares(two, 9, 2, [&](int share, int begin, int end) {
+    EXPECT_EQ(begin, share == 0 ? 0 : 4);
+    for (int k = begin; k < end; ++k) ++seen[static_cast<std::size_t>(k)];
+  });
+  EXPECT_EQ(seen, std::vector<int>(9, 1));
+  EXPECT_EQ(two.batches, 1);
+  run_in_shares(two, 9, 1, [&](int, int begin, int end) {
+    for (int k = begin; k < end; ++k) ++seen[static_cast<std::size_t>(k)];
+  });
+  EXPECT_EQ(seen, std::vector<int>(9, 2));
+  EXPECT_EQ(two.batches, 1);  // one share runs on the calling thread
+}
+
 TEST(SequentialTaskRunner, RunsEveryTaskOnceInOrder) {
   const SequentialTaskRunner runner;
   EXPECT_EQ(runner.threads(), 1);
