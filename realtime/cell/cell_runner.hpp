@@ -41,7 +41,8 @@ struct CellThreadSettings {
   // use adds its recognition's working memory to the cell's peak.
   int recognizer_threads = 2;
   // Threads besides the workers that take a share of one recognition's independent work (the
-  // first views' verifications, the parts' quick fits; helper_threads.hpp): while a single
+  // first views' verifications, the shares of its searches, registrations and support
+  // measurements; core/task_runner.hpp, helper_threads.hpp): while a single
   // part is recognized, the core the other worker leaves idle shortens its latency. The poses
   // are the same for any count.
   int recognition_helpers = 1;
