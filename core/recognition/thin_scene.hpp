@@ -27,7 +27,7 @@ namespace cosmos {
 
 struct ThinSceneParameters {
   bool enabled = true;
-  int min_points = 60;        // fewer range points: too little to tell the parts apart
+  int min_points = 20;        // fewer range points: too little to tell the parts apart
   int max_points = 400;       // an even sample of the range points, at most
   int searched_parts = 4;     // in the order of their quick field fit, every pose searched
   int hypotheses = 128;       // field poses of a searched part, set down on the belt and judged
