@@ -87,7 +87,11 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
   choose();
   // A rival only verified on one selected view may have registered far from its best pose;
   // the pose search over its part's views gives it its fair chance before it is compared. So
-  // do the other sizes of the winner's shape, which selection cannot tell from it.
+  // do the other sizes of the winner's shape, which selection cannot tell from it; and, when
+  // no candidate qualifies, the other sizes of the best one's: a larger size fitted to a
+  // smaller one's scene reaches through the belt or puts surface where the scene has none,
+  // and the search, which stops at the first part that explains the scene, never reached the
+  // size that would have rested.
   const auto pose_searched = [&](int part) {
     return std::any_of(
         result.candidates.begin(), result.candidates.end(),
@@ -107,8 +111,9 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
     result.rival_left_unsearched = hopeless(rival->part);
     if (!result.rival_left_unsearched) unsearched.push_back(rival->part);
   }
-  if (winner && parameters_.size_variants.search)
-    for (int variant : size_variants_[static_cast<std::size_t>(winner->part)])
+  const RecognitionCandidate* family_of = winner ? winner : best;
+  if (parameters_.size_variants.search)
+    for (int variant : size_variants_[static_cast<std::size_t>(family_of->part)])
       if (!pose_searched(variant) &&
           std::find(unsearched.begin(), unsearched.end(), variant) == unsearched.end())
         unsearched.push_back(variant);

@@ -1,10 +1,12 @@
-// The recognizer's decision (recognizer_decision.cpp) against the regression model base
-// (recognizer_fixture.hpp): the rival it compares the winner with.
+// The recognizer's decision (recognizer_decision.cpp): the rival it compares the winner with,
+// against the regression model base (recognizer_fixture.hpp), and the other sizes it searches
+// when no candidate qualifies, against a base of two shapes at three sizes each.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
 #include "core/recognition/recognizer.hpp"
+#include "sim/model_base_build/model_base_builder.hpp"
 #include "tests/core/recognition/recognizer_fixture.hpp"
 
 namespace cosmos {
@@ -47,6 +49,43 @@ TEST_F(RecognizerOnRegressionBase, ARivalWhoseQuickFitIsHopelessIsNotSearchedAga
     EXPECT_TRUE(part_pose_searched(searched, rival)) << seed;
   }
   EXPECT_GE(left_unsearched, 1);
+}
+
+// The head and the holes at 100, 110 and 121 % of their catalog size. A scan of the middle
+// holes (seed 44) is explained by no candidate: its best registered candidate, the middle
+// head, puts surface where the scene has none. The search over the candidates' parts stopped
+// at that size, so the decision searches the head's other sizes before it rejects the scene;
+// none of them explains it either, and the scene is rejected rather than named.
+TEST(RecognizerDecision, WhenNoCandidateQualifiesTheBestOnesOtherSizesAreSearched) {
+  const PartCatalog catalog =
+      read_part_catalog(std::filesystem::path(COSMOS_SOURCE_DIR) / "config/parts-250.yaml");
+  PartCatalog families;
+  for (const char* name : {"head", "head-110", "head-121", "holes", "holes-110", "holes-121"})
+    families.parts.push_back(catalog.at(name));
+  ModelBaseBuildSettings settings;
+  settings.view_count = 80;
+  settings.threads = 2;
+  const ModelBase base = build_model_base(families, ScannerParameters{}, settings);
+  const Recognizer recognizer(base, CosmosParameters{}, RecognitionParameters{});
+
+  const PartEntry& holes = catalog.at("holes-110");
+  ScannerParameters scanner;
+  scanner.seed = 44;
+  const RangeImage scene =
+      scan_single_part(load_mesh(holes.mesh_path, holes.size_mm), holes.name,
+                       random_rotation(scanner.seed), scanner, ConditioningParameters{});
+  const RecognitionResult result = recognizer.recognize(scene);
+  EXPECT_EQ(result.status, RecognitionStatus::kRejected);
+  EXPECT_TRUE(result.reason.starts_with("best candidate's surface is not where the scene is"))
+      << result.reason;
+  ASSERT_GE(result.best_candidate_part, 0);
+  EXPECT_TRUE(
+      base.parts[static_cast<std::size_t>(result.best_candidate_part)].name.starts_with("head"));
+  for (const char* name : {"head", "head-110", "head-121"}) {
+    const auto part = std::find_if(base.parts.begin(), base.parts.end(),
+                                   [&](const ModelPart& p) { return p.name == name; });
+    EXPECT_TRUE(part_pose_searched(result, static_cast<int>(part - base.parts.begin()))) << name;
+  }
 }
 
 }  // namespace
