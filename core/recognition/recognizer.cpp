@@ -124,6 +124,12 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
     denser.stride_px /= 2;
     scene_points = build_registration_points(scene, denser, &analysis.frames);
   }
+  if (const int all = scene_points.points.size(); all > parameters_.max_scene_points) {
+    std::vector<int> kept(static_cast<std::size_t>(parameters_.max_scene_points));
+    for (std::size_t k = 0; k < kept.size(); ++k)
+      kept[k] = static_cast<int>(k * static_cast<std::size_t>(all) / kept.size());
+    scene_points.points = select_points(scene_points.points, kept);
+  }
   result.scene_points = scene_points.points.size();
   result.timings.features_ms += elapsed_ms(stage);
   if (scene_points.status != RegistrationPointsStatus::kOk ||

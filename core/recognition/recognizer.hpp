@@ -73,11 +73,15 @@ struct RecognitionParameters {
   PatchGroupMatchParameters matching;
   PoseFromPatchesParameters pose;
   RegistrationParameters registration;
-  // Scene control points every 4th pixel (1.6 mm on the 0.4 mm grid): a few thousand points
-  // on a catalog part, enough to fix 6 parameters many times over.
+  // Scene control points every 4th pixel (1.6 mm on the 0.4 mm grid): up to a few thousand
+  // points on a catalog part, enough to fix 6 parameters many times over.
   RegistrationPointParameters scene_points{.stride_px = 4};
   int min_dense_scene_points = 600;  // fewer: halve the stride (down to every pixel)
-  int in_plane_hypotheses = 12;      // turns about the viewing axis tried per candidate view
+  // More: an even subset of this many. Every registration pass and support measurement costs
+  // per point, and a large view (a part seen whole, a group of pieces) fixes its six
+  // parameters as well from fewer: its recognition no longer takes longest of all.
+  int max_scene_points = 2000;
+  int in_plane_hypotheses = 12;  // turns about the viewing axis tried per candidate view
   // Verification's initial poses are ranked and aligned against the part's distance field
   // (part_pose_search.hpp), and at most this many distinct ones registered per selected view
   // (a single one lost hard scans whose best-ranked start was not the true pose, and saved
@@ -206,6 +210,8 @@ struct RecognitionParameters {
     v("scene_points", scene_points, "the scene's control points (§6.7.1)");
     v("min_dense_scene_points", min_dense_scene_points, "fewer: halve the stride",
       Range{0, 1000000});
+    v("max_scene_points", max_scene_points, "more: an even subset of this many",
+      Range{1, 100000000});
     v("in_plane_hypotheses", in_plane_hypotheses, "turns about the viewing axis per view",
       Range{0, 360});
     v("field_starts", field_starts, "verification's starts aligned in the part's field");

@@ -62,6 +62,36 @@ TEST_F(RecognizerOnRegressionBase, IdentifiesScansOfEachPartInTheirTruePose) {
   }
 }
 
+// Registration and support cost per scene control point: a large view's are thinned to an
+// even subset of max_scene_points, on which the scan is named and posed as on all of them.
+TEST_F(RecognizerOnRegressionBase, ALargeSceneIsRegisteredOnAnEvenSubsetOfItsControlPoints) {
+  RecognitionParameters every_point;
+  every_point.max_scene_points = std::numeric_limits<int>::max();
+  const Recognizer with_every_point(*base_, CosmosParameters{}, every_point);
+  const int most = RecognitionParameters{}.max_scene_points;
+  int thinned = 0;
+  for (std::uint64_t seed = 401; seed < 416; ++seed) {
+    const std::string& name = base_->parts[seed % base_->parts.size()].name;
+    const RangeImage image = scan(name, seed);
+    const RecognitionResult all = with_every_point.recognize(image);
+    const RecognitionResult result = recognizer_->recognize(image);
+    if (all.scene_points <= most) {
+      EXPECT_EQ(result.scene_points, all.scene_points) << seed;
+      continue;
+    }
+    ++thinned;
+    EXPECT_EQ(result.scene_points, most) << seed;
+    ASSERT_EQ(all.status, RecognitionStatus::kOk) << seed << ": " << all.reason;
+    ASSERT_EQ(result.status, RecognitionStatus::kOk) << seed << ": " << result.reason;
+    EXPECT_EQ(result.part, all.part) << seed;
+    const double diameter_mm = base_->parts[static_cast<std::size_t>(result.part)].diameter_mm;
+    EXPECT_LT(add_s_mm(mesh_of(name), *image.ground_truth, result.T_scanner_part),
+              0.02 * diameter_mm)
+        << seed;
+  }
+  EXPECT_GE(thinned, 3);
+}
+
 // The pose the recognizer reports is its best candidate's registration composed with that
 // view's scan pose; and the same scan gives the same answer again (every budget is counted).
 TEST_F(RecognizerOnRegressionBase, ReportsItsBestCandidatesPoseAndRepeatsItself) {
