@@ -79,7 +79,8 @@ struct RecognitionParameters {
   int min_dense_scene_points = 600;  // fewer: halve the stride (down to every pixel)
   // More: an even subset of this many. Every registration pass and support measurement costs
   // per point, and a large view (a part seen whole, a group of pieces) fixes its six
-  // parameters as well from fewer: its recognition no longer takes longest of all.
+  // parameters as well from fewer; with all of its points it would be the slowest to
+  // recognize, the cell's latency tail.
   int max_scene_points = 2000;
   int in_plane_hypotheses = 12;  // turns about the viewing axis tried per candidate view
   // Verification's initial poses are ranked and aligned against the part's distance field
