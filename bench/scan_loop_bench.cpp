@@ -7,6 +7,9 @@
 //                     time per profile, p50_us and p999_us (wall clock) and cpu_p50_us and
 //                     cpu_p999_us (thread CPU time) over every profile timed
 //   Conditioning/W    ProfileConditioner::condition alone: raw input points per second
+//   PartEndSegmentation
+//                     the CSMP segmentation of a part's view at its end: searched in the view
+//                     against grown from the seeds its builder found row by row
 //   EndOfPartToPose   run_cell unpaced: the tracker completes a part -> its pose published,
 //                     latency_p50_ms over the parts
 //   PacedJitter       run_cell paced at the default line rate (2500 Hz): start-time jitter of
@@ -29,6 +32,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstdlib>
 #include <ctime>
@@ -36,12 +40,14 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/io/model_base_file.hpp"
 #include "core/modelbase/model_base.hpp"
 #include "core/recognition/recognizer.hpp"
+#include "core/segmentation/csmp_segmentation.hpp"
 #include "firmware_bridge/kernel_timestamp.hpp"
 #include "realtime/cell/cell_runner.hpp"
 #include "realtime/cell/part_recognition.hpp"
@@ -297,6 +303,87 @@ bool run_bench_cell(benchmark::State& state, const BenchRecognition& recognition
     return false;
   }
 }
+
+// The CSMP segmentation left at a part's end, on the views of the stream's parts (640-point
+// profiles) cut out of their builders: searched in the view (segment_csmps, as before the
+// builder found seeds) against grown from the seeds the builder found row by row
+// (RowSeeds::view_seeds, then segment_csmps_from_seeds). Per part, the least time of the
+// iterations; the counters are the median and the largest over the parts, for the seeds
+// alone (seeds_search_ms, seeds_from_rows_ms) and the whole segmentation (search_ms,
+// from_rows_ms); parts_from_rows counts the parts whose builder's seeds held.
+void PartEndSegmentation(benchmark::State& state) {
+  const SimStream& stream = sim_stream(640);
+  if (!stream.error.empty()) {
+    state.SkipWithError(stream.error.c_str());
+    return;
+  }
+  ScanLoopSettings settings;
+  settings.parts.speculative_recognition = false;
+  ScanLoop loop(settings);
+  PartRecognitionContext context;
+  context.x0_loop_mm = loop.x0_loop_mm();
+  struct Part {
+    BuiltPart built;
+    PartView view;
+  };
+  std::vector<Part> parts;
+  const auto take_completed = [&] {
+    int index = -1;
+    while (loop.completed().try_pop(index)) {
+      loop.builder(index).cosmos.finish();
+      const BuiltPart built = loop.builder(index).built();
+      parts.push_back({built, extract_part_view(built, context)});
+    }
+  };
+  for (const Profile& profile : stream.profiles) {
+    loop.process(profile);
+    take_completed();
+  }
+  loop.flush();
+  take_completed();
+  const SegmentationParameters& parameters = context.cosmos.segmentation;
+  constexpr double kUnset = 1e30;
+  std::vector<std::array<double, 4>> least_ms(parts.size(), {kUnset, kUnset, kUnset, kUnset});
+  const auto timed_ms = [](auto&& work) {
+    const std::int64_t start_ns = monotonic_now_ns();
+    work();
+    return static_cast<double>(monotonic_now_ns() - start_ns) * 1e-6;
+  };
+  int from_rows = 0;
+  for (auto _ : state) {
+    from_rows = 0;
+    for (std::size_t n = 0; n < parts.size(); ++n) {
+      const Part& part = parts[n];
+      const DarbouxFrameField& frames = part.view.analysis.frames;
+      const ShapeIndexField& field = part.view.analysis.field;
+      const RowSeeds& row_seeds = part.built.cosmos->seeds();
+      const int first_column = part_view_first_column(part.built);
+      std::array<double, 4> ms{};
+      ms[0] =
+          timed_ms([&] { benchmark::DoNotOptimize(find_shape_seeds(frames, field, parameters)); });
+      ms[1] =
+          timed_ms([&] { benchmark::DoNotOptimize(row_seeds.view_seeds(field, first_column)); });
+      ms[2] = timed_ms([&] { benchmark::DoNotOptimize(segment_csmps(frames, field, parameters)); });
+      ms[3] = timed_ms([&] {
+        const std::optional<ShapeSeeds> seeds = row_seeds.view_seeds(field, first_column);
+        if (seeds) benchmark::DoNotOptimize(segment_csmps_from_seeds(field, *seeds, parameters));
+      });
+      from_rows += part.view.seeds_from_rows ? 1 : 0;
+      for (int k = 0; k < 4; ++k) least_ms[n][k] = std::min(least_ms[n][k], ms[k]);
+    }
+  }
+  const std::string names[4] = {"seeds_search", "seeds_from_rows", "search", "from_rows"};
+  for (int k = 0; k < 4; ++k) {
+    std::vector<double> values;
+    for (const auto& part : least_ms) values.push_back(part[k]);
+    state.counters[names[k] + "_ms"] = median(values);
+    state.counters[names[k] + "_max_ms"] =
+        values.empty() ? 0 : *std::max_element(values.begin(), values.end());
+  }
+  state.counters["parts"] = static_cast<double>(parts.size());
+  state.counters["parts_from_rows"] = from_rows;
+}
+BENCHMARK(PartEndSegmentation)->Iterations(20)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 // latency_ms runs from the tracker completing the part (the row after its last one) to the
 // publisher sending its pose. Unpaced, this includes the part's recognition and, since the

@@ -17,7 +17,14 @@ ViewAnalysis analyze_view(const RangeImage& image, const CosmosParameters& param
 }
 
 void finish_view_analysis(ViewAnalysis& analysis, const CosmosParameters& parameters) {
-  analysis.segmentation = segment_csmps(analysis.frames, analysis.field, parameters.segmentation);
+  finish_view_analysis(analysis,
+                       find_shape_seeds(analysis.frames, analysis.field, parameters.segmentation),
+                       parameters);
+}
+
+void finish_view_analysis(ViewAnalysis& analysis, const ShapeSeeds& seeds,
+                          const CosmosParameters& parameters) {
+  analysis.segmentation = segment_csmps_from_seeds(analysis.field, seeds, parameters.segmentation);
   analysis.view = build_cosmos_view(analysis.frames, analysis.field, analysis.segmentation);
   analysis.spectrum = compute_shape_spectrum(analysis.field, parameters.spectrum);
   analysis.moments = spectrum_moments(analysis.spectrum);

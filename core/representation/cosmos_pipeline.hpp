@@ -29,5 +29,9 @@ ViewAnalysis analyze_view(const RangeImage& image, const CosmosParameters& param
 // frames and field. Whole-image analysis and the real-time part builder both end here, so a
 // live part and a model view are finished by the same code.
 void finish_view_analysis(ViewAnalysis& analysis, const CosmosParameters& parameters);
+// The same from the CSMP seeds of the analysis's field, already found (the real-time part
+// builder finds them row by row: realtime/loop/row_seeds.hpp).
+void finish_view_analysis(ViewAnalysis& analysis, const ShapeSeeds& seeds,
+                          const CosmosParameters& parameters);
 
 }  // namespace cosmos

@@ -7,7 +7,6 @@
 
 #include "core/segmentation/neighbor_equality.hpp"
 #include "core/segmentation/region_merge_queue.hpp"
-#include "core/segmentation/shape_seeds.hpp"
 #include "core/segmentation/tiny_patch_folding.hpp"
 
 namespace cosmos {
@@ -124,8 +123,12 @@ void drop_emptied_patches(CsmpSegmentation& result) {
 
 CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndexField& field,
                                const SegmentationParameters& parameters) {
+  return segment_csmps_from_seeds(field, find_shape_seeds(frames, field, parameters), parameters);
+}
+
+CsmpSegmentation segment_csmps_from_seeds(const ShapeIndexField& field, const ShapeSeeds& seeds,
+                                          const SegmentationParameters& parameters) {
   const std::size_t pixels = field.label.size();
-  const ShapeSeeds seeds = find_shape_seeds(frames, field, parameters);
   RegionMergeQueue regions;
   regions.reserve(seeds.seed_count());
   double visible_area_mm2 = 0;

@@ -8,6 +8,7 @@
 
 #include "core/cosmos_parameters.hpp"
 #include "core/pixel_grid.hpp"
+#include "core/segmentation/shape_seeds.hpp"
 #include "core/surface/darboux_frame_field.hpp"
 #include "core/surface/shape_index.hpp"
 
@@ -24,6 +25,10 @@ struct CsmpSegmentation {
 // `frames` supplies the normals that keep differently oriented planar faces apart.
 CsmpSegmentation segment_csmps(const DarbouxFrameField& frames, const ShapeIndexField& field,
                                const SegmentationParameters& parameters);
+// The same from the field's seeds (find_shape_seeds, or the real-time part builder's, found
+// row by row as its rows arrived): growing, folding and refinement.
+CsmpSegmentation segment_csmps_from_seeds(const ShapeIndexField& field, const ShapeSeeds& seeds,
+                                          const SegmentationParameters& parameters);
 
 // Boundary refinement can hand every pixel of a small patch to its neighbours: segment_csmps
 // drops the emptied ids, the others keeping their order (that of their first pixels), so that

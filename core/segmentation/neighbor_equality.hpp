@@ -10,11 +10,42 @@
 
 namespace cosmos {
 
+// Directions 0-3 only, the neighbours visited before in raster order, of the row `own` whose
+// row above is `above` (null: the first row). The rows need not be adjacent in memory, so a
+// pass over rows held in rings (the real-time part builder) compares as a whole image does.
+template <class T>
+void equal_backward_neighbors(const T* above, const T* own, int width, std::uint8_t* equal) {
+  if (width <= 0) return;
+  equal[0] = above ? static_cast<std::uint8_t>((above[0] == own[0]) << 1 |
+                                               (width > 1 && above[1] == own[0]) << 2)
+                   : 0;
+  if (!above) {
+    for (int c = 1; c < width; ++c)
+      equal[c] = static_cast<std::uint8_t>((own[c - 1] == own[c]) << 3);
+    return;
+  }
+  for (int c = 1; c + 1 < width; ++c) {
+    const T o = own[c];
+    equal[c] = static_cast<std::uint8_t>((above[c - 1] == o) | (above[c] == o) << 1 |
+                                         (above[c + 1] == o) << 2 | (own[c - 1] == o) << 3);
+  }
+  if (width > 1) {
+    const int c = width - 1;
+    equal[c] = static_cast<std::uint8_t>((above[c - 1] == own[c]) | (above[c] == own[c]) << 1 |
+                                         (own[c - 1] == own[c]) << 3);
+  }
+}
+
 // Directions [0, kDirections) only (4: the neighbours visited before in raster order; 8: all).
 // Neighbours outside the width x height grid never have their bit set.
 template <int kDirections, class T>
 void equal_neighbors_of_row(const T* values, int width, int height, int row, std::uint8_t* equal) {
   static_assert(kDirections == 4 || kDirections == 8);
+  if constexpr (kDirections == 4) {
+    const T* own = values + static_cast<std::ptrdiff_t>(row) * width;
+    equal_backward_neighbors(row > 0 ? own - width : nullptr, own, width, equal);
+    return;
+  }
   const T* own = values + static_cast<std::ptrdiff_t>(row) * width;
   auto border = [&](int column) {
     std::uint8_t mask = 0;

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "core/representation/cosmos_pipeline.hpp"
@@ -134,6 +135,17 @@ PartView extract_group_view(const std::vector<BuiltPart>& pieces,
   for (const BuiltPart& piece : pieces)
     copy_part_pixels(piece, excluded, c0,
                      static_cast<int>(piece.first_profile - first.first_profile), part);
+  // One part's own pixels: the seeds its builder found row by row are the view's. Pieces
+  // from several builders, or pixels taken away, are searched in the view.
+  const RowSeeds& row_seeds = first.cosmos->seeds();
+  if (pieces.size() == 1 && !excluded &&
+      row_seeds.holds_part([&first](std::int64_t id) { return first.owns(id); })) {
+    if (std::optional<ShapeSeeds> seeds = row_seeds.view_seeds(part.analysis.field, c0)) {
+      part.seeds_from_rows = true;
+      finish_view_analysis(part.analysis, *seeds, context.cosmos);
+      return part;
+    }
+  }
   finish_view_analysis(part.analysis, context.cosmos);
   return part;
 }

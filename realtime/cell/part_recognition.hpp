@@ -3,7 +3,8 @@
 // builder (rows of the part, columns of its tracked extent plus a margin, pixels of other
 // parts masked out), the rest of the chapter-3 pipeline on the builder's finished fields
 // (finish_view_analysis, the very code that ends analyze_view, so the features equal
-// whole-image processing of the part's rows), recognition
+// whole-image processing of the part's rows; the CSMP seeds the builder found row by row),
+// recognition
 // (core/recognition/recognizer.hpp), and the pose turned from the loop frame into the cell frame:
 //   T_belt_part  = R_belt_loop T_loop_part        (R_belt_loop = Rz(180°), scan_loop.hpp)
 //   T_cell_part  = T_cell_scanner T_scanner_belt(e) T_belt_part
@@ -63,6 +64,9 @@ struct PartRecognitionContext {
 struct PartView {
   RangeImage image;
   ViewAnalysis analysis;
+  // Its CSMP seeds were those the builder found as the rows arrived (row_seeds.hpp), not
+  // searched in the view: the same seeds, found before the part's end.
+  bool seeds_from_rows = false;
 };
 // The part's rows must be final: those of a completed builder once its COSMOS is finished
 // (recognize_blob(PartBuilder&) drains the pipeline's last rows on the recognizer's thread:

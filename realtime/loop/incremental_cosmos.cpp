@@ -33,6 +33,7 @@ IncrementalCosmos::IncrementalCosmos(const CosmosParameters& parameters, int wid
       final_(width, kRingRows),
       classified_(make_shape_index_field(width, kRingRows)),
       rows_store_(pool, max_rows),
+      seeds_(parameters.segmentation, width, max_rows),
       belt_words_per_row_((std::max(width, 0) + 63) / 64),
       belt_bits_(static_cast<std::size_t>(std::max(max_rows, 0)) * belt_words_per_row_, 0),
       smoothed_rows_(std::max(parameters.smoothing.iterations, 0), 0),
@@ -43,6 +44,7 @@ IncrementalCosmos::IncrementalCosmos(const CosmosParameters& parameters, int wid
 
 void IncrementalCosmos::begin_part(double origin_x_mm, double origin_y_mm) {
   rows_store_.clear();
+  seeds_.begin_part();
   origin_x_mm_ = origin_x_mm;
   origin_y_mm_ = origin_y_mm;
   // The fit writes x and y from the window's origin; only its heights, frames, validity and
@@ -66,7 +68,10 @@ AddRowResult IncrementalCosmos::add_row(const float* z_mm, const std::uint8_t* b
   if (!rows_store_.append(begin, end)) return AddRowResult::kNoMemory;
   make_room_in_window();
   std::copy(z_mm, z_mm + width_, window_.z_mm.row(in_window(rows_)));
-  std::copy(z_mm + begin, z_mm + end, rows_store_.row(rows_).z_mm);
+  const PartRow record = rows_store_.row(rows_);
+  std::copy(z_mm + begin, z_mm + end, record.z_mm);
+  // No part's until the tracker says (the scan loop labels the row after adding it).
+  std::fill(record.tracker_label, record.tracker_label + (end - begin), std::int64_t{-1});
   std::uint64_t* belt_row =
       belt_bits_.data() + static_cast<std::size_t>(rows_) * belt_words_per_row_;
   std::fill(belt_row, belt_row + belt_words_per_row_, 0);
@@ -221,6 +226,13 @@ bool IncrementalCosmos::classify_next() {
   classify_row(final_, slot, window_.pixel_size_x_mm, window_.pixel_size_y_mm,
                parameters_.shape_index, classified_);
   store_final_row(row, slot);
+  SeedRowInput planes;
+  planes.width = width_;
+  planes.label = classified_.label.row(slot);
+  planes.shape_index = classified_.shape_index.row(slot);
+  planes.same_side = classified_.same_side.row(slot);
+  for (int axis = kNx; axis <= kNz; ++axis) planes.normal[axis] = final_.frame[axis].row(slot);
+  seeds_.add_row(planes, rows_store_.row(row), rows_store_);
   ++classified_rows_;
   return true;
 }

@@ -3,10 +3,11 @@
 // local surface fit of row r once rows up to r + h exist, its same-side links, then the 15
 // curvature-consistency iterations pipelined row by row (iteration k of row r needs
 // iteration k-1 of rows r-1..r+1 only, kept in three-row rings), shape index, curvedness and
-// planar label. The same row kernels as whole-image processing (core/), applied in the same
-// arithmetic order, so the fields equal analyze_view()'s of the part's rows bit for bit; the
-// recognizer worker ends the pipeline with finish_view_analysis() on the part's own pixels
-// (the spectrum is not accumulated here: a builder's rows also hold other parts' pixels).
+// planar label, and the first pass of the CSMP seed search (row_seeds.hpp). The same row
+// kernels as whole-image processing (core/), applied in the same arithmetic order, so the
+// fields equal analyze_view()'s of the part's rows bit for bit; the recognizer worker ends the
+// pipeline with finish_view_analysis() on the part's own pixels (the spectrum is not
+// accumulated here: a builder's rows also hold other parts' pixels).
 //
 // Memory follows the part, not the belt: the rows the pipeline still works on sit in a
 // window of a few dozen full rows (fit_window_rows()), and a row whose COSMOS is final moves
@@ -24,6 +25,7 @@
 #include "core/surface/shape_index.hpp"
 #include "realtime/loop/part_rows.hpp"
 #include "realtime/loop/row_block_pool.hpp"
+#include "realtime/loop/row_seeds.hpp"
 
 namespace cosmos {
 
@@ -60,6 +62,8 @@ class IncrementalCosmos {
   // Row r of the part; its COSMOS planes are final once finish() has run.
   PartRow row(int r) const { return rows_store_.row(r); }
   int blocks() const { return rows_store_.blocks(); }
+  // The CSMP seed search's first pass over the final rows (row_seeds.hpp).
+  const RowSeeds& seeds() const { return seeds_; }
   double origin_x_mm() const { return origin_x_mm_; }
   double origin_y_mm() const { return origin_y_mm_; }
   // A pixel's fitted position in x and y: the grid's, as the local fit writes them.
@@ -112,6 +116,7 @@ class IncrementalCosmos {
   DarbouxFrameField final_;                // the last level (frames, validity, links): 3 rows
   ShapeIndexField classified_;             // 3 rows
   PartRows rows_store_;
+  RowSeeds seeds_;
   // Per row, a bit per column: the belt measured there (the surface-seen test tells a shadow
   // from the belt by it). Full rows, a bit each: max_rows x width / 8 bytes.
   int belt_words_per_row_ = 0;

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/segmentation/seed_union_find.hpp"
 #include "core/surface/darboux_frame_field.hpp"
 #include "core/surface/shape_index.hpp"
 #include "realtime/loop/row_block_pool.hpp"
@@ -25,6 +26,7 @@ struct PartRow {
   int column_begin = 0;
   int column_end = 0;
   std::int64_t* tracker_label = nullptr;  // tracker part id, -1 none
+  SeedNode* seed_node = nullptr;          // the CSMP seed search's pass-1 nodes (row_seeds.hpp)
   float* z_mm = nullptr;                  // the conditioned height, NaN none
   float* fitted_z_mm = nullptr;           // the local fit's height, 0 where it failed
   float* frame[kFrameComponents] = {};    // smoothed normal and Weingarten tensor
@@ -52,6 +54,9 @@ class PartRows {
   // Room for row rows() with columns [column_begin, column_end); false, nothing changed,
   // when max_rows rows are held or the pool has no block left.
   bool append(int column_begin, int column_end);
+  // `bytes` more of the part's data (rounded up to 8) after the records so far, in the same
+  // blocks: a row's seed crossings (row_seeds.hpp). Null when no block has room.
+  std::byte* take_bytes(std::size_t bytes);
   // Gives every block back to the pool; rows() is 0 after.
   void clear();
 

@@ -119,9 +119,10 @@ struct PartQueueSettings {
   int builders = 8;
   int part_queue_slots = 8;  // loop -> recognizer completed parts
   // The row pool shared by the builders: row_blocks blocks of row_block_rows full-width rows
-  // each (a row takes 67 bytes per column between its first and last sample). A part holds
-  // the blocks its rows fill until the recognizer is done with it; a part whose next row
-  // finds no block left is dropped and counted like one that finds no builder. The default
+  // each (a row takes 79 bytes per column between its first and last sample, and its CSMP
+  // seed crossings a few more, row_seeds.hpp). A part holds the blocks its rows fill until
+  // the recognizer is done with it; a part whose next row finds no block left is dropped and
+  // counted like one that finds no builder. The default
   // is about three times the most blocks a dense belt (parts 30 mm apart) and an overloaded
   // hour-long soak held at once: the pool is resident from the start, so each block more is
   // memory the cell holds whatever the belt carries.
@@ -149,11 +150,11 @@ struct PartQueueSettings {
       Range{1, 1024});
     v("row_blocks", row_blocks,
       "blocks of the builders' shared row pool, allocated and made resident at start; "
-      "0.65 MB each",
+      "0.81 MB each",
       Range{1, 65536});
     v("row_block_rows", row_block_rows,
       "full-width rows per row-pool block (a part's rows hold only its own columns, so "
-      "more of them fit); 42 kB per row",
+      "more of them fit); 51 kB per row",
       Range{1, 4096});
     v("speculative_recognition", speculative_recognition,
       "recognize a part in the rows after its end, before the tracker completes it "

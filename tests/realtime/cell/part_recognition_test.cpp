@@ -2,6 +2,8 @@
 // replayed through the stream checker: both parts are published as ERROR with the reason
 // (never as an OK pose at y = -100 km, or one assembled from rows with a hole), the glitch
 // and the gap are counted, and the part the faults missed keeps its pose bit for bit.
+// A part's view cut out of its builder is segmented from the seeds the builder found row by
+// row, into the CSMPs a search of the view itself gives.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -106,6 +108,77 @@ TEST(PartRecognition, APartSpanningAReplayedGlitchOrGapIsAnErrorNotAPose) {
   EXPECT_EQ(replayed.status.profiles_lost, 5);
   EXPECT_EQ(replayed.status.parts_recognized, 1);
   EXPECT_EQ(replayed.status.parts_rejected, 2);
+}
+
+struct ViewsSegmented {
+  int views = 0;
+  int from_rows = 0;  // segmented from the builder's seeds
+  int different = 0;  // whose CSMPs differ from a search of the view
+  int patches = 0;
+};
+
+// Eight simulated parts in pairs across the belt, `across_gap_mm` apart, through the scan
+// loop; each completed part's view cut out and compared with segment_csmps of the view's own
+// fields.
+ViewsSegmented segment_views(std::uint64_t seed, double across_gap_mm) {
+  SimulatedSourceSettings settings;
+  settings.parts = 8;
+  settings.seed = seed;
+  settings.side_by_side = true;
+  settings.across_gap_mm = across_gap_mm;
+  const PartCatalog catalog =
+      read_part_catalog(fs::path(COSMOS_SOURCE_DIR) / "config/parts-regression.yaml");
+  SimulatedSource source(catalog, ScannerParameters{}, settings);
+  EXPECT_EQ(source.start(), SourceStatus::kOk);
+  ScanLoopSettings loop_settings;
+  loop_settings.parts.speculative_recognition = false;
+  ScanLoop loop(loop_settings);
+  PartRecognitionContext context;
+  context.x0_loop_mm = loop.x0_loop_mm();
+  ViewsSegmented out;
+  const auto drain = [&] {
+    int index = -1;
+    while (loop.completed().try_pop(index)) {
+      PartBuilder& builder = loop.builder(index);
+      builder.cosmos.finish();
+      const PartView view = extract_part_view(builder.built(), context);
+      const CsmpSegmentation searched =
+          segment_csmps(view.analysis.frames, view.analysis.field, context.cosmos.segmentation);
+      ++out.views;
+      out.from_rows += view.seeds_from_rows ? 1 : 0;
+      out.patches += searched.patch_count;
+      out.different += searched.patch_count != view.analysis.segmentation.patch_count ||
+                               searched.patch_of_pixel.values() !=
+                                   view.analysis.segmentation.patch_of_pixel.values()
+                           ? 1
+                           : 0;
+      loop.returned().try_push(index);
+    }
+  };
+  Profile profile;
+  source.reserve(profile);
+  while (source.next(profile) == SourceStatus::kOk) {
+    loop.process(profile);
+    drain();
+  }
+  loop.flush();
+  drain();
+  return out;
+}
+
+TEST(PartRecognition, CatalogPartsSideBySideAreSegmentedFromTheirBuildersSeeds) {
+  const ViewsSegmented segmented = segment_views(21, 12.0);
+  EXPECT_EQ(segmented.views, 8);
+  EXPECT_EQ(segmented.from_rows, 8);
+  EXPECT_EQ(segmented.different, 0);
+  EXPECT_GT(segmented.patches, 8 * 5);
+}
+
+TEST(PartRecognition, TouchingPartsTheTrackerMergedAreSegmentedFromTheirBuildersSeeds) {
+  const ViewsSegmented segmented = segment_views(22, 0.0);
+  EXPECT_GE(segmented.views, 4);
+  EXPECT_EQ(segmented.from_rows, segmented.views);
+  EXPECT_EQ(segmented.different, 0);
 }
 
 }  // namespace

@@ -9,10 +9,10 @@
 namespace cosmos {
 namespace {
 
-TEST(PartRows, RecordsAreSixtySevenBytesPerColumnRoundedToEight) {
+TEST(PartRows, RecordsAreSeventyNineBytesPerColumnRoundedToEight) {
   EXPECT_EQ(PartRows::record_bytes(0), 0u);
-  EXPECT_EQ(PartRows::record_bytes(1), 72u);  // 67 rounded up
-  EXPECT_EQ(PartRows::record_bytes(640), 42880u);
+  EXPECT_EQ(PartRows::record_bytes(1), 80u);  // 79 rounded up
+  EXPECT_EQ(PartRows::record_bytes(640), 50560u);
 }
 
 TEST(PartRows, RowsShareABlockUntilItIsFullThenTakeTheNext) {
@@ -39,7 +39,7 @@ TEST(PartRows, RowsShareABlockUntilItIsFullThenTakeTheNext) {
             static_cast<std::ptrdiff_t>(PartRows::record_bytes(10)));
   EXPECT_EQ(reinterpret_cast<const std::byte*>(row.label + 10) -
                 reinterpret_cast<const std::byte*>(row.tracker_label),
-            67 * 10);
+            79 * 10);
 }
 
 TEST(PartRows, AFullPoolRefusesARowAndChangesNothing) {

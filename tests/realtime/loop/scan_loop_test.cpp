@@ -315,6 +315,12 @@ TEST(ScanLoop, TakingAndGivingBackRowBlocksAllocatesNothing) {
     allocations += test::allocations_on_this_thread() - before;
   };
   counted(20);  // two blocks
+  // Every row whose COSMOS became final went through the CSMP seed search's first pass too
+  // (the rest are the worker's to finish, once the part was sent ahead).
+  ASSERT_TRUE(loop.completed().try_pop(index));
+  const IncrementalCosmos& built = loop.builder(index).cosmos;
+  EXPECT_GT(built.final_rows(), 0);
+  EXPECT_EQ(built.seeds().seeded_rows(), built.final_rows());
   counted(40);  // finds the pool used up
   EXPECT_EQ(loop.counters().parts_seen, 2);
   EXPECT_EQ(loop.counters().parts_out_of_rows, 1);
