@@ -122,10 +122,10 @@ struct PartQueueSettings {
   // each (a row takes 79 bytes per column between its first and last sample, and its CSMP
   // seed crossings a few more, row_seeds.hpp). A part holds the blocks its rows fill until
   // the recognizer is done with it; a part whose next row finds no block left is dropped and
-  // counted like one that finds no builder. The default
-  // is about three times the most blocks a dense belt (parts 30 mm apart) and an overloaded
-  // hour-long soak held at once: the pool is resident from the start, so each block more is
-  // memory the cell holds whatever the belt carries.
+  // counted like one that finds no builder. The default is well above the most blocks a
+  // dense belt (parts 30 mm apart) and an overloaded hour-long soak held at once (the summary
+  // prints the peak): the pool is resident from the start, so each block more is memory the
+  // cell holds whatever the belt carries.
   int row_blocks = 48;
   int row_block_rows = 16;
   // A part is recognized in the rows after its end, while the tracker waits out
