@@ -41,40 +41,37 @@ void equal_backward_neighbors(const T* above, const T* own, int width, std::uint
 template <int kDirections, class T>
 void equal_neighbors_of_row(const T* values, int width, int height, int row, std::uint8_t* equal) {
   static_assert(kDirections == 4 || kDirections == 8);
-  if constexpr (kDirections == 4) {
-    const T* own = values + static_cast<std::ptrdiff_t>(row) * width;
-    equal_backward_neighbors(row > 0 ? own - width : nullptr, own, width, equal);
-    return;
-  }
   const T* own = values + static_cast<std::ptrdiff_t>(row) * width;
-  auto border = [&](int column) {
-    std::uint8_t mask = 0;
-    for (int k = 0; k < kDirections; ++k) {
-      const int c = column + kNeighborOffsets[k].column, r = row + kNeighborOffsets[k].row;
-      if (c < 0 || r < 0 || c >= width || r >= height) continue;
-      const T other = values[static_cast<std::ptrdiff_t>(r) * width + c];
-      mask |= static_cast<std::uint8_t>((other == own[column]) << k);
+  if constexpr (kDirections == 4) {
+    equal_backward_neighbors(row > 0 ? own - width : nullptr, own, width, equal);
+  } else {
+    auto border = [&](int column) {
+      std::uint8_t mask = 0;
+      for (int k = 0; k < kDirections; ++k) {
+        const int c = column + kNeighborOffsets[k].column, r = row + kNeighborOffsets[k].row;
+        if (c < 0 || r < 0 || c >= width || r >= height) continue;
+        const T other = values[static_cast<std::ptrdiff_t>(r) * width + c];
+        mask |= static_cast<std::uint8_t>((other == own[column]) << k);
+      }
+      return mask;
+    };
+    const bool inner_row = row > 0 && row + 1 < height;
+    if (!inner_row || width < 3) {
+      for (int column = 0; column < width; ++column) equal[column] = border(column);
+      return;
     }
-    return mask;
-  };
-  const bool inner_row = row > 0 && (kDirections == 4 || row + 1 < height);
-  if (!inner_row || width < 3) {
-    for (int column = 0; column < width; ++column) equal[column] = border(column);
-    return;
+    const T* up = own - width;
+    const T* down = own + width;
+    equal[0] = border(0);
+    for (int c = 1; c + 1 < width; ++c) {
+      const T o = own[c];
+      equal[c] = static_cast<std::uint8_t>((up[c - 1] == o) | (up[c] == o) << 1 |
+                                           (up[c + 1] == o) << 2 | (own[c - 1] == o) << 3 |
+                                           (own[c + 1] == o) << 4 | (down[c - 1] == o) << 5 |
+                                           (down[c] == o) << 6 | (down[c + 1] == o) << 7);
+    }
+    equal[width - 1] = border(width - 1);
   }
-  const T* up = own - width;
-  const T* down = own + width;  // read only with all eight directions, on an inner row
-  equal[0] = border(0);
-  for (int c = 1; c + 1 < width; ++c) {
-    const T o = own[c];
-    auto mask = static_cast<std::uint8_t>((up[c - 1] == o) | (up[c] == o) << 1 |
-                                          (up[c + 1] == o) << 2 | (own[c - 1] == o) << 3);
-    if constexpr (kDirections == 8)
-      mask |= static_cast<std::uint8_t>((own[c + 1] == o) << 4 | (down[c - 1] == o) << 5 |
-                                        (down[c] == o) << 6 | (down[c + 1] == o) << 7);
-    equal[c] = mask;
-  }
-  equal[width - 1] = border(width - 1);
 }
 
 // The columns of a row whose mask is not `value` (e.g. pixels with a neighbour of another

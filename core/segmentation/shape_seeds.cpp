@@ -29,6 +29,22 @@ struct RasterSeedNodes {
 constexpr int kRecentShift = 20;
 constexpr std::size_t kRecentPairs = std::size_t{1} << (32 - kRecentShift);
 
+// The row of `field` (and the normals of `frames`) that pass 1 reads.
+SeedRowInput seed_row_input(const DarbouxFrameField& frames, const ShapeIndexField& field,
+                            int row) {
+  SeedRowInput input;
+  input.width = input.column_end = field.width();
+  input.label = field.label.row(row);
+  input.label_above = row > 0 ? field.label.row(row - 1) : nullptr;
+  input.shape_index = field.shape_index.row(row);
+  input.same_side = field.same_side.row(row);
+  for (int axis = kNx; axis <= kNz; ++axis) {
+    input.normal[axis] = frames.frame[axis].row(row);
+    input.normal_above[axis] = row > 0 ? frames.frame[axis].row(row - 1) : nullptr;
+  }
+  return input;
+}
+
 }  // namespace
 
 void backward_seed_edges(const SeedRowInput& row, double crease_cos, std::uint8_t* edges) {
@@ -48,21 +64,6 @@ void backward_seed_edges(const SeedRowInput& row, double crease_cos, std::uint8_
       if (cosine < crease_cos) edges[column] &= static_cast<std::uint8_t>(~(1u << k));
     }
   }
-}
-
-SeedRowInput seed_row_input(const DarbouxFrameField& frames, const ShapeIndexField& field,
-                            int row) {
-  SeedRowInput input;
-  input.width = input.column_end = field.width();
-  input.label = field.label.row(row);
-  input.label_above = row > 0 ? field.label.row(row - 1) : nullptr;
-  input.shape_index = field.shape_index.row(row);
-  input.same_side = field.same_side.row(row);
-  for (int axis = kNx; axis <= kNz; ++axis) {
-    input.normal[axis] = frames.frame[axis].row(row);
-    input.normal_above[axis] = row > 0 ? frames.frame[axis].row(row - 1) : nullptr;
-  }
-  return input;
 }
 
 double seed_crease_cos(const SegmentationParameters& parameters) {

@@ -38,8 +38,6 @@ struct ShapeSeeds {
 ShapeSeeds find_shape_seeds(const DarbouxFrameField& frames, const ShapeIndexField& field,
                             const SegmentationParameters& parameters);
 
-// The row of `field` (and the normals of `frames`) that pass 1 reads.
-SeedRowInput seed_row_input(const DarbouxFrameField& frames, const ShapeIndexField& field, int row);
 // The cosine of parameters.planar_crease_deg, as backward_seed_edges takes it.
 double seed_crease_cos(const SegmentationParameters& parameters);
 
