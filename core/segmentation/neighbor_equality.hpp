@@ -36,6 +36,23 @@ void equal_backward_neighbors(const T* above, const T* own, int width, std::uint
   }
 }
 
+// The same for the columns [begin, end) of the row only (equal elsewhere not written), the
+// masks those columns get from the whole row's comparison.
+template <class T>
+void equal_backward_neighbors(const T* above, const T* own, int width, int begin, int end,
+                              std::uint8_t* equal) {
+  if (begin >= end) return;
+  equal_backward_neighbors(above ? above + begin : nullptr, own + begin, end - begin,
+                           equal + begin);
+  // The range's ends compared with the neighbours beyond them.
+  if (begin > 0) {
+    equal[begin] |= static_cast<std::uint8_t>((own[begin - 1] == own[begin]) << 3);
+    if (above) equal[begin] |= static_cast<std::uint8_t>(above[begin - 1] == own[begin]);
+  }
+  if (end < width && above)
+    equal[end - 1] |= static_cast<std::uint8_t>((above[end] == own[end - 1]) << 2);
+}
+
 // Directions [0, kDirections) only (4: the neighbours visited before in raster order; 8: all).
 // Neighbours outside the width x height grid never have their bit set.
 template <int kDirections, class T>

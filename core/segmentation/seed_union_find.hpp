@@ -50,9 +50,9 @@ struct SeedRowInput {
 // later pixel.
 inline constexpr int kBackwardNeighbors = 4;
 
-// The growing-edge masks of one row: bit k set when backward neighbour k is inside the image,
-// on the same side of any depth jump and has the same label; planar pixels also need normals
-// within the crease angle (cosine `crease_cos`).
+// The growing-edge masks of the columns [column_begin, column_end) of one row: bit k set when
+// backward neighbour k is inside the image, on the same side of any depth jump and has the
+// same label; planar pixels also need normals within the crease angle (cosine `crease_cos`).
 void backward_seed_edges(const SeedRowInput& row, double crease_cos, std::uint8_t* edges);
 
 template <class Nodes>

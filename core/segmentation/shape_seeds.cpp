@@ -48,11 +48,11 @@ SeedRowInput seed_row_input(const DarbouxFrameField& frames, const ShapeIndexFie
 }  // namespace
 
 void backward_seed_edges(const SeedRowInput& row, double crease_cos, std::uint8_t* edges) {
-  const int width = row.width;
-  equal_backward_neighbors(row.label_above, row.label, width, edges);
-  for (int column = 0; column < width; ++column)
+  const int begin = row.column_begin, end = row.column_end;
+  equal_backward_neighbors(row.label_above, row.label, row.width, begin, end, edges);
+  for (int column = begin; column < end; ++column)
     edges[column] = static_cast<std::uint8_t>(edges[column] & row.same_side[column] & 0x0Fu);
-  for (int column = 0; column < width; ++column) {
+  for (int column = begin; column < end; ++column) {
     if (row.label[column] != SurfaceLabel::kPlanar || edges[column] == 0) continue;
     for (int k = 0; k < kBackwardNeighbors; ++k) {
       if (!((edges[column] >> k) & 1u)) continue;

@@ -35,15 +35,15 @@ void RowSeeds::add_row(const SeedRowInput& planes, const PartRow& record, PartRo
   input.label_above = row > 0 ? label_above_.data() : nullptr;
   for (int axis = 0; axis < 3; ++axis)
     input.normal_above[axis] = row > 0 ? normal_above_[axis].data() : nullptr;
+  // A row's pixels outside its samples have no label (part_rows.hpp): the pass need not
+  // visit them, and they have no node.
+  input.column_begin = record.column_begin;
+  input.column_end = record.column_end;
   backward_seed_edges(input, crease_cos_, edges_.data());
   list_linked_ids(row, record, edges_.data());
 
   RowNodes& nodes_of_row = rows_[static_cast<std::size_t>(row)];
   nodes_of_row = {record.seed_node, record.column_begin, record.column_end, nullptr, 0};
-  // A row's pixels outside its samples have no label (part_rows.hpp): the pass need not
-  // visit them, and they have no node.
-  input.column_begin = record.column_begin;
-  input.column_end = record.column_end;
   Nodes nodes{rows_.data(), row};
   int crossings = 0;
   auto add_crossing = [&](std::int32_t root, std::int32_t other) {
@@ -76,12 +76,16 @@ void RowSeeds::add_row(const SeedRowInput& planes, const PartRow& record, PartRo
 
 // The pairs of tracker ids a growing edge of this row joins.
 void RowSeeds::list_linked_ids(int row, const PartRow& record, const std::uint8_t* edges) {
+  // Full rows of ids, -1 outside the samples: the row two back leaves only its own span to
+  // clear.
   std::swap(ids_above_, ids_);
-  std::fill(ids_.begin(), ids_.end(), -1);
+  std::swap(ids_above_span_, ids_span_);
+  std::fill(ids_.begin() + ids_span_[0], ids_.begin() + ids_span_[1], -1);
+  ids_span_ = {record.column_begin, record.column_end};
   std::copy(record.tracker_label, record.tracker_label + (record.column_end - record.column_begin),
             ids_.begin() + record.column_begin);
   equal_backward_neighbors(row > 0 ? ids_above_.data() : nullptr, ids_.data(), width_,
-                           same_id_.data());
+                           record.column_begin, record.column_end, same_id_.data());
   for (int column = record.column_begin; column < record.column_end; ++column) {
     const auto crossing = static_cast<std::uint8_t>(edges[column] & ~same_id_[column]);
     if (crossing == 0) continue;

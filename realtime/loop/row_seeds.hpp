@@ -95,7 +95,8 @@ class RowSeeds {
   // The row above's planes pass 1 reads, kept as the builder's rings move on.
   std::vector<SurfaceLabel> label_above_;
   std::array<std::vector<float>, 3> normal_above_;
-  std::vector<std::int64_t> ids_above_, ids_;  // tracker ids, -1 outside the samples
+  std::vector<std::int64_t> ids_above_, ids_;                 // tracker ids, -1 outside the samples
+  std::array<int, 2> ids_above_span_{0, 0}, ids_span_{0, 0};  // the columns holding ids
   std::vector<std::uint8_t> edges_, same_id_;
   std::vector<Crossing> row_crossings_;  // a row's, at most one per backward neighbour
   std::array<std::pair<std::int64_t, std::int64_t>, kMaxLinkedIdPairs> linked_ids_{};

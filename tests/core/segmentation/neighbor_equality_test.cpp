@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -43,6 +44,30 @@ TEST(NeighborEquality, EveryRowMatchesTheDefinitionWithBackwardAndAllDirections)
   }
   EXPECT_GT(equal_bits, 20);
   EXPECT_LT(equal_bits, 8 * kWidth * kHeight - 60);
+}
+
+TEST(NeighborEquality, ARangeOfARowGetsTheMasksOfTheWholeRowsComparison) {
+  constexpr int kWidth = 9, kHeight = 2;
+  std::vector<int> values(kWidth * kHeight);
+  for (int i = 0; i < kWidth * kHeight; ++i) values[static_cast<std::size_t>(i)] = (i * 5 / 2) % 2;
+  std::vector<std::uint8_t> whole(kWidth), ranged(kWidth);
+  int compared = 0;
+  for (int begin = 0; begin < kWidth; ++begin)
+    for (int end = begin + 1; end <= kWidth; ++end)
+      for (int row = 0; row < kHeight; ++row) {
+        const int* own = values.data() + row * kWidth;
+        const int* above = row > 0 ? own - kWidth : nullptr;
+        equal_backward_neighbors(above, own, kWidth, whole.data());
+        std::fill(ranged.begin(), ranged.end(), 0xAA);
+        equal_backward_neighbors(above, own, kWidth, begin, end, ranged.data());
+        for (int column = 0; column < kWidth; ++column) {
+          const bool inside = column >= begin && column < end;
+          EXPECT_EQ(ranged[column], inside ? whole[column] : 0xAA)
+              << begin << ".." << end << " row " << row << " column " << column;
+          compared += inside ? 1 : 0;
+        }
+      }
+  EXPECT_EQ(compared, 2 * 165);  // every column of every range, on both rows
 }
 
 TEST(NeighborEquality, AUniformGridIsEqualEverywhereInsideAndNowhereOutside) {
