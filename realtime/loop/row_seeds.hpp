@@ -10,7 +10,7 @@
 // (realtime/cell/part_recognition.hpp); its sets are the sets the same pass makes over the
 // view alone as long as no growing edge joined a pixel of the part to a pixel of an id the
 // part does not own. Growing edges between different ids (where the tracker merged two pieces
-// of a part, or a run it dropped) are listed, and view_seeds refuses a part that one of them
+// of a part, or a run it dropped) are listed, and holds_part refuses a part that one of them
 // ties to an id it does not own: that part's view is searched whole. Pixel ids are raster
 // ordered, row << 16 | column, as pass 1 needs.
 #include <array>
