@@ -7,9 +7,6 @@
 //                     time per profile, p50_us and p999_us (wall clock) and cpu_p50_us and
 //                     cpu_p999_us (thread CPU time) over every profile timed
 //   Conditioning/W    ProfileConditioner::condition alone: raw input points per second
-//   PartEndSegmentation
-//                     the CSMP segmentation of a part's view at its end: searched in the view
-//                     against grown from the seeds its builder found row by row
 //   EndOfPartToPose   run_cell unpaced: the tracker completes a part -> its pose published,
 //                     latency_p50_ms over the parts
 //   PacedJitter       run_cell paced at the default line rate (2500 Hz): start-time jitter of
@@ -32,7 +29,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
 #include <cstdint>
 #include <cstdlib>
 #include <ctime>
@@ -40,14 +36,13 @@
 #include <filesystem>
 #include <map>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
+#include "bench/sim_stream.hpp"
 #include "core/io/model_base_file.hpp"
 #include "core/modelbase/model_base.hpp"
 #include "core/recognition/recognizer.hpp"
-#include "core/segmentation/csmp_segmentation.hpp"
 #include "firmware_bridge/kernel_timestamp.hpp"
 #include "realtime/cell/cell_runner.hpp"
 #include "realtime/cell/part_recognition.hpp"
@@ -66,65 +61,21 @@ namespace cosmos {
 namespace {
 
 namespace fs = std::filesystem;
+using bench::bench_catalog;
+using bench::kSeed;
+using bench::kStreamParts;
+using bench::median;
+using bench::quantile;
+using bench::sim_stream;
+using bench::SimStream;
+using bench::source_settings;
 
-// Parts in the pre-generated streams: enough part rows, part ends and empty belt between them
-// for a p99.9 over a few thousand profiles, few enough to generate 3200-point streams quickly.
-constexpr int kStreamParts = 5;
 constexpr int kCellParts = 12;   // unpaced whole-cell run: enough parts for a stable median
 constexpr int kPacedParts = 32;  // paced run: real time, about 5 s of belt
-constexpr std::uint64_t kSeed = 7;
 // Profiles timed per ScanLoopProcess run: about five passes over the 5-part stream, so p99.9
 // is the 10th slowest of 10,000 rather than an estimate from the iteration count the library
 // would pick (a pass or so).
 constexpr int kTimedProfiles = 10000;
-
-// The regression catalog, or $COSMOS_BENCH_CATALOG (e.g. config/parts.yaml with the default
-// cell's model base in $COSMOS_BENCH_MODEL_BASE).
-const PartCatalog& bench_catalog() {
-  static const PartCatalog catalog = [] {
-    const char* from_environment = std::getenv("COSMOS_BENCH_CATALOG");
-    return read_part_catalog(from_environment != nullptr && *from_environment != '\0'
-                                 ? fs::path(from_environment)
-                                 : fs::path(COSMOS_SOURCE_DIR) / "config/parts-regression.yaml");
-  }();
-  return catalog;
-}
-
-SimulatedSourceSettings source_settings(int parts) {
-  SimulatedSourceSettings settings;
-  settings.parts = parts;
-  settings.seed = kSeed;
-  return settings;
-}
-
-// A whole simulated stream in memory, so that the timed loops run no ray casting.
-struct SimStream {
-  std::vector<Profile> profiles;
-  std::string error;  // why there is no stream (e.g. catalog meshes missing)
-};
-
-const SimStream& sim_stream(int points_per_profile) {
-  static std::map<int, SimStream> streams;
-  const auto [entry, inserted] = streams.try_emplace(points_per_profile);
-  SimStream& stream = entry->second;
-  if (!inserted) return stream;
-  try {
-    ScannerParameters parameters;
-    parameters.points_per_profile = points_per_profile;
-    SimulatedSource source(bench_catalog(), parameters, source_settings(kStreamParts));
-    if (source.start() != SourceStatus::kOk) {
-      stream.error = std::string(source.last_error());
-      return stream;
-    }
-    Profile profile;
-    source.reserve(profile);
-    while (source.next(profile) == SourceStatus::kOk) stream.profiles.push_back(profile);
-    if (stream.profiles.empty()) stream.error = "the simulated source gave no profiles";
-  } catch (const std::exception& e) {
-    stream.error = std::string(e.what()) + " (catalog meshes: scripts/fetch_catalog.sh)";
-  }
-  return stream;
-}
 
 // The calling thread's CPU time. Beside the wall clock it tells the loop's own tail from
 // preemption: on a shared, loaded machine the wall-clock tail is mostly a scheduler slice
@@ -260,18 +211,6 @@ PartRecognitionContext recognition_context(const BenchRecognition& recognition,
   return context;
 }
 
-// The value `fraction` of the way up the sorted values (0.5: the median).
-double quantile(std::vector<double> values, double fraction) {
-  if (values.empty()) return 0;
-  const auto at =
-      values.begin() + static_cast<std::ptrdiff_t>(std::min(
-                           values.size() - 1, static_cast<std::size_t>(fraction * values.size())));
-  std::nth_element(values.begin(), at, values.end());
-  return *at;
-}
-
-double median(std::vector<double> values) { return quantile(std::move(values), 0.5); }
-
 // One whole-cell run of `parts` simulated parts of the regression catalog through a memory
 // publisher, latency_ms measured (not zeroed); paced at the default line rate or unpaced with
 // every part recognized. Appends each published pose's latency_ms; false after reporting an
@@ -303,87 +242,6 @@ bool run_bench_cell(benchmark::State& state, const BenchRecognition& recognition
     return false;
   }
 }
-
-// The CSMP segmentation left at a part's end, on the views of the stream's parts (640-point
-// profiles) cut out of their builders: searched in the view (segment_csmps, as before the
-// builder found seeds) against grown from the seeds the builder found row by row
-// (RowSeeds::view_seeds, then segment_csmps_from_seeds). Per part, the least time of the
-// iterations; the counters are the median and the largest over the parts, for the seeds
-// alone (seeds_search_ms, seeds_from_rows_ms) and the whole segmentation (search_ms,
-// from_rows_ms); parts_from_rows counts the parts whose builder's seeds held.
-void PartEndSegmentation(benchmark::State& state) {
-  const SimStream& stream = sim_stream(640);
-  if (!stream.error.empty()) {
-    state.SkipWithError(stream.error.c_str());
-    return;
-  }
-  ScanLoopSettings settings;
-  settings.parts.speculative_recognition = false;
-  ScanLoop loop(settings);
-  PartRecognitionContext context;
-  context.x0_loop_mm = loop.x0_loop_mm();
-  struct Part {
-    BuiltPart built;
-    PartView view;
-  };
-  std::vector<Part> parts;
-  const auto take_completed = [&] {
-    int index = -1;
-    while (loop.completed().try_pop(index)) {
-      loop.builder(index).cosmos.finish();
-      const BuiltPart built = loop.builder(index).built();
-      parts.push_back({built, extract_part_view(built, context)});
-    }
-  };
-  for (const Profile& profile : stream.profiles) {
-    loop.process(profile);
-    take_completed();
-  }
-  loop.flush();
-  take_completed();
-  const SegmentationParameters& parameters = context.cosmos.segmentation;
-  constexpr double kUnset = 1e30;
-  std::vector<std::array<double, 4>> least_ms(parts.size(), {kUnset, kUnset, kUnset, kUnset});
-  const auto timed_ms = [](auto&& work) {
-    const std::int64_t start_ns = monotonic_now_ns();
-    work();
-    return static_cast<double>(monotonic_now_ns() - start_ns) * 1e-6;
-  };
-  int from_rows = 0;
-  for (auto _ : state) {
-    from_rows = 0;
-    for (std::size_t n = 0; n < parts.size(); ++n) {
-      const Part& part = parts[n];
-      const DarbouxFrameField& frames = part.view.analysis.frames;
-      const ShapeIndexField& field = part.view.analysis.field;
-      const RowSeeds& row_seeds = part.built.cosmos->seeds();
-      const int first_column = part_view_first_column(part.built);
-      std::array<double, 4> ms{};
-      ms[0] =
-          timed_ms([&] { benchmark::DoNotOptimize(find_shape_seeds(frames, field, parameters)); });
-      ms[1] =
-          timed_ms([&] { benchmark::DoNotOptimize(row_seeds.view_seeds(field, first_column)); });
-      ms[2] = timed_ms([&] { benchmark::DoNotOptimize(segment_csmps(frames, field, parameters)); });
-      ms[3] = timed_ms([&] {
-        const std::optional<ShapeSeeds> seeds = row_seeds.view_seeds(field, first_column);
-        if (seeds) benchmark::DoNotOptimize(segment_csmps_from_seeds(field, *seeds, parameters));
-      });
-      from_rows += part.view.seeds_from_rows ? 1 : 0;
-      for (int k = 0; k < 4; ++k) least_ms[n][k] = std::min(least_ms[n][k], ms[k]);
-    }
-  }
-  const std::string names[4] = {"seeds_search", "seeds_from_rows", "search", "from_rows"};
-  for (int k = 0; k < 4; ++k) {
-    std::vector<double> values;
-    for (const auto& part : least_ms) values.push_back(part[k]);
-    state.counters[names[k] + "_ms"] = median(values);
-    state.counters[names[k] + "_max_ms"] =
-        values.empty() ? 0 : *std::max_element(values.begin(), values.end());
-  }
-  state.counters["parts"] = static_cast<double>(parts.size());
-  state.counters["parts_from_rows"] = from_rows;
-}
-BENCHMARK(PartEndSegmentation)->Iterations(20)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 // latency_ms runs from the tracker completing the part (the row after its last one) to the
 // publisher sending its pose. Unpaced, this includes the part's recognition and, since the
