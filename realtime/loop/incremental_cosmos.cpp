@@ -229,6 +229,7 @@ bool IncrementalCosmos::classify_next() {
   SeedRowInput planes;
   planes.width = width_;
   planes.label = classified_.label.row(slot);
+  planes.label_above = classified_.label.row((row + kRingRows - 1) % kRingRows);
   planes.shape_index = classified_.shape_index.row(slot);
   planes.same_side = classified_.same_side.row(slot);
   for (int axis = kNx; axis <= kNz; ++axis) planes.normal[axis] = final_.frame[axis].row(slot);

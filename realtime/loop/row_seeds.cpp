@@ -12,7 +12,6 @@ RowSeeds::RowSeeds(const SegmentationParameters& parameters, int width, int max_
       quantum_(static_cast<float>(parameters.seed_shape_index_quantum)),
       crease_cos_(seed_crease_cos(parameters)),
       rows_(static_cast<std::size_t>(std::max(max_rows, 0))),
-      label_above_(static_cast<std::size_t>(width_), SurfaceLabel::kInvalid),
       ids_above_(static_cast<std::size_t>(width_), -1),
       ids_(static_cast<std::size_t>(width_), -1),
       edges_(static_cast<std::size_t>(width_), 0),
@@ -32,7 +31,7 @@ void RowSeeds::add_row(const SeedRowInput& planes, const PartRow& record, PartRo
   const int row = seeded_rows_;
   if (!enabled_ || row >= static_cast<int>(rows_.size())) return;
   SeedRowInput input = planes;
-  input.label_above = row > 0 ? label_above_.data() : nullptr;
+  if (row == 0) input.label_above = nullptr;
   for (int axis = 0; axis < 3; ++axis)
     input.normal_above[axis] = row > 0 ? normal_above_[axis].data() : nullptr;
   // A row's pixels outside its samples have no label (part_rows.hpp): the pass need not
@@ -67,7 +66,6 @@ void RowSeeds::add_row(const SeedRowInput& planes, const PartRow& record, PartRo
     }
   }
 
-  std::copy(planes.label, planes.label + width_, label_above_.begin());
   for (int axis = 0; axis < 3; ++axis)
     std::copy(planes.normal[axis] + record.column_begin, planes.normal[axis] + record.column_end,
               normal_above_[axis].begin() + record.column_begin);

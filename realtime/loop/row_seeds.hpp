@@ -33,11 +33,11 @@ class RowSeeds {
 
   // Starts a part: no row seeded, no pair of ids listed.
   void begin_part();
-  // Pass 1 on the next row, whose planes (`planes`, full width, the row above not set) are
-  // final, into its record; the record's tracker ids must be set (the scan loop sets them
-  // when the row arrives, rows before its COSMOS is final).
-  // The row's crossings go into the part's blocks (`store`, whose row the record is); a part
-  // whose blocks had no room for them is searched in its view instead.
+  // Pass 1 on the next row, whose planes (`planes`, full width; of the row above its labels,
+  // which the builder's rings still hold, not its normals) are final, into its record; the record's
+  // tracker ids must be set (the scan loop sets them when the row arrives, rows before its COSMOS
+  // is final). The row's crossings go into the part's blocks (`store`, whose row the record is); a
+  // part whose blocks had no room for them is searched in its view instead.
   void add_row(const SeedRowInput& planes, const PartRow& record, PartRows& store);
 
   int seeded_rows() const { return seeded_rows_; }
@@ -92,8 +92,8 @@ class RowSeeds {
   float quantum_;
   double crease_cos_;
   std::vector<RowNodes> rows_;  // max_rows
-  // The row above's planes pass 1 reads, kept as the builder's rings move on.
-  std::vector<SurfaceLabel> label_above_;
+  // The row above's normals, kept as the builder's rings move on (its smoothing may have
+  // overwritten them by the time this row is final).
   std::array<std::vector<float>, 3> normal_above_;
   std::vector<std::int64_t> ids_above_, ids_;                 // tracker ids, -1 outside the samples
   std::array<int, 2> ids_above_span_{0, 0}, ids_span_{0, 0};  // the columns holding ids
