@@ -315,6 +315,7 @@ void Recognizer::register_candidate(const ScenePoints& scene_points,
                                     RecognitionCandidate& candidate) const {
   RegistrationResult best;
   int best_view = -1;
+  bool best_refined = false;
   Support best_support;
   // Coarse to fine: the iterations far from the optimum on a spread subset, the last few on
   // every control point (ch. 6's estimate is the fine one).
@@ -333,20 +334,27 @@ void Recognizer::register_candidate(const ScenePoints& scene_points,
     RegistrationResult registration =
         register_views(scene_points.coarse, model, start.T_model_scene, coarse, tasks_);
     if (registration.status == RegistrationStatus::kInvalidInput) continue;
-    registration =
-        register_views(scene_points.all, model, registration.T_model_scene, fine, tasks_);
-    // A degenerate (still planar) result is kept: its support decides.
-    if (registration.status == RegistrationStatus::kInvalidInput) continue;
-    const Support support =
-        measure_support(scene_points.all, model, registration.T_model_scene, parameters_, tasks_);
+    Support support = measure_support(scene_points.coarse, model, registration.T_model_scene,
+                                      parameters_, tasks_);
+    const bool refine = support.inlier_fraction >= parameters_.fine_registration_support;
+    if (refine) {
+      registration =
+          register_views(scene_points.all, model, registration.T_model_scene, fine, tasks_);
+      // A degenerate (still planar) result is kept: its support decides.
+      if (registration.status == RegistrationStatus::kInvalidInput) continue;
+      support =
+          measure_support(scene_points.all, model, registration.T_model_scene, parameters_, tasks_);
+    }
     if (candidate.registered && support.inlier_fraction <= best_support.inlier_fraction) continue;
     candidate.registered = true;
     best = registration;
     best_support = support;
     best_view = start.view;
+    best_refined = refine;
   }
   if (!candidate.registered) return;
   candidate.view = best_view;
+  candidate.refined = best_refined;
   // Most candidates of the pose search are wrong parts: the spread subset tells them apart at
   // a fraction of the cost, and only the plausible ones are measured on every point.
   PartSupport support = measure_part_support(

@@ -105,6 +105,12 @@ struct RecognitionParameters {
   // part explained half of its own scene.
   double coarse_min_rejection_distance_mm = 0.5;
   int fine_registration_iterations = 10;
+  // A start whose coarse pose explains less of the spread subset than this (the view's own
+  // support, inlier_distance_mm) skips the fine passes and is judged on the subset: the fine
+  // passes of a wrong part or a wrong pose drift for their whole budget over every point and
+  // cost the tail most of its time, while a start near the true pose explains far more of
+  // the subset already.
+  double fine_registration_support = 0.2;
   // Verification stops at the first selected view whose part support reaches this: the
   // others cannot beat it by much, and a wrong part rarely explains 90 % of a scene. Below
   // it the pose search runs too, so a mechanical part whose flat faces another explains at
@@ -227,6 +233,8 @@ struct RecognitionParameters {
       Range{0, 1000});
     v("fine_registration_iterations", fine_registration_iterations, "passes on all points, at most",
       Range{0, 1000});
+    v("fine_registration_support", fine_registration_support,
+      "a start explaining less of the coarse points skips the fine passes", Range{0, 1});
     v("sufficient_support", sufficient_support, "verification stops at this part support",
       Range{0, 1});
     v("sufficient_seen_fraction", sufficient_seen_fraction,
@@ -281,6 +289,9 @@ struct RecognitionCandidate {
   double spectral_distance = 0;
   double goodness = 0;  // COSMOS match score (§5.3.3)
   bool registered = false;
+  // Its pose had the fine passes on every control point (fine_registration_support); false:
+  // it is the coarse passes' pose.
+  bool refined = false;
   RegistrationStatus registration_status = RegistrationStatus::kInvalidInput;
   double rms_mm = 0;
   double inlier_fraction = 0;
