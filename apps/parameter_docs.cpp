@@ -87,7 +87,7 @@ std::string parameters_markdown() {
   text.append(
       "\n## Recognition\n\n"
       "Not read from a file: the defaults of RecognitionParameters "
-      "(core/recognition/recognizer.hpp), which every recognizer uses; only "
+      "(core/recognition/recognition_parameters.hpp), which every recognizer uses; only "
       "`resting.parts_touch_belt` and `resting.parts_rest` are set from outside: by the "
       "`cell:` keys of the same names in a cell; in `cosmos eval`, the first always and the "
       "second by `--pose resting`.\n");
