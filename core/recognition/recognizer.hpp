@@ -90,6 +90,9 @@ struct RecognitionCandidate {
   bool from_pose_search = false;     // proposed by the fallback search, not by §5.2 selection
   bool from_vote_index = false;      // proposed by the vote index (core/indexing/)
   bool from_resting_search = false;  // proposed by the resting-pose search
+  // The decision may name it: it lies at rest on the belt and its surface is seen
+  // (min_seen_fraction); set by the decision.
+  bool qualified = false;
 };
 
 // A part's place in the search over every part (catalog_rank).
@@ -136,6 +139,9 @@ struct RecognitionResult {
   // When the two are sizes of one shape (size_variants.hpp): their two-way fits, by which
   // they were told apart or not.
   double size_fit = 0, runner_up_size_fit = 0;
+  // Then also the best qualified candidate's part of another shape (-1: none), compared with
+  // the winner as the runner-up is.
+  int other_shape_part = -1;
   // The two compared where they differ (part_ambiguity.hpp); `examined` false when the
   // runner-up was too far behind (or there was none) to be.
   bool ambiguity_examined = false;
@@ -160,8 +166,9 @@ struct RecognitionResult {
   // The scene had no fitted surface to register and was searched with its range points
   // (thin_scene.hpp); no candidate is registered then.
   bool thin_scene = false;
-  // The order of the search over every part, best first; empty when it did not run in the
-  // order of the quick field fits.
+  // The order of the search over every part, best first (the parts with a quick pose on the
+  // belt before the others when catalog_rank.floating_parts_last); empty when it did not run
+  // in the order of the quick field fits.
   std::vector<QuickFieldFit> quick_fits;
   // The best full field fit that search reached (its parts' field stages; infinity when it did
   // not run in quick order): a part whose quick fit is hopeless beside it is searched no

@@ -29,6 +29,10 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
   // shows), among the sizes of one shape by the fit alone (size_variants.hpp); the rival is
   // the best such candidate of another part (part_ambiguity.hpp).
   const RecognitionCandidate* rival = nullptr;
+  // The best candidate of another shape, when the rival is another size of the winner's: sizes
+  // are told apart by their fits, which says nothing of a part of another shape that explains
+  // the scene as well.
+  const RecognitionCandidate* shape_rival = nullptr;
   const RecognitionCandidate* winner = nullptr;
   bool best_at_rest = true;
   const auto two_way_fit = [&](const RecognitionCandidate& candidate) {
@@ -40,7 +44,9 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
     return at_rest(candidate) && candidate.seen_fraction >= parameters_.min_seen_fraction;
   };
   const auto choose = [&] {
-    winner = rival = nullptr;
+    winner = rival = shape_rival = nullptr;
+    for (RecognitionCandidate& candidate : result.candidates)
+      candidate.qualified = candidate.registered && qualifies(candidate);
     best = best_candidate(result.candidates);
     result.seen_fraction = best->seen_fraction;
     best_at_rest = at_rest(*best);
@@ -52,7 +58,7 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
     // where the scanner saw the belt.
     const RecognitionCandidate* top = nullptr;
     for (const RecognitionCandidate* candidate : ranked) {
-      if (!qualifies(*candidate)) continue;
+      if (!candidate->qualified) continue;
       if (!top) top = winner = candidate;
       if (top->score - candidate->score < parameters_.ambiguity.examined_score_margin &&
           two_way_fit(*candidate) > two_way_fit(*winner) + parameters_.ambiguity.two_way_fit_margin)
@@ -63,7 +69,7 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
       const int family_part = winner->part;
       double best_fit = two_way_fit(*winner);
       for (const RecognitionCandidate* candidate : ranked)
-        if (is_size_variant(family_part, candidate->part) && qualifies(*candidate) &&
+        if (is_size_variant(family_part, candidate->part) && candidate->qualified &&
             two_way_fit(*candidate) > best_fit) {
           best_fit = two_way_fit(*candidate);
           winner = candidate;
@@ -75,7 +81,7 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
     // are told apart by their two-way fits, which a third part scoring higher cannot settle.
     for (bool sizes_only : {true, false}) {
       for (const RecognitionCandidate* candidate : ranked)
-        if (candidate->part != winner->part && qualifies(*candidate) &&
+        if (candidate->part != winner->part && candidate->qualified &&
             (!sizes_only || is_size_variant(winner->part, candidate->part))) {
           rival = candidate;
           break;
@@ -83,6 +89,12 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
       if (rival) break;
     }
     if (rival) result.runner_up_seen_fraction = rival->seen_fraction;
+    for (const RecognitionCandidate* candidate : ranked)
+      if (candidate->part != winner->part && candidate->qualified &&
+          !is_size_variant(winner->part, candidate->part)) {
+        shape_rival = candidate;
+        break;
+      }
   };
   choose();
   // A rival only verified on one selected view may have registered far from its best pose;
@@ -107,10 +119,13 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
            quick->fit_mm2 > parameters_.search.worst_kept_score_mm2(result.best_field_fit_mm2);
   };
   std::vector<int> unsearched;
-  if (rival && parameters_.ambiguity.search_rival_part && !pose_searched(rival->part)) {
-    result.rival_left_unsearched = hopeless(rival->part);
-    if (!result.rival_left_unsearched) unsearched.push_back(rival->part);
-  }
+  for (const RecognitionCandidate* compared : {rival, shape_rival})
+    if (compared && parameters_.ambiguity.search_rival_part && !pose_searched(compared->part) &&
+        std::find(unsearched.begin(), unsearched.end(), compared->part) == unsearched.end()) {
+      const bool left = hopeless(compared->part);
+      if (compared == rival) result.rival_left_unsearched = left;
+      if (!left) unsearched.push_back(compared->part);
+    }
   const RecognitionCandidate* family_of = winner ? winner : best;
   if (parameters_.size_variants.search)
     for (int variant : size_variants_[static_cast<std::size_t>(family_of->part)])
@@ -193,14 +208,19 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
     result.size_fit = two_way_fit(*best);
     result.runner_up_size_fit = two_way_fit(*rival);
   }
-  if (rival && !sizes_told_apart &&
-      best->score - rival->score < parameters_.ambiguity.examined_score_margin) {
+  // The rival, unless sizes told apart, and the best part of another shape are each examined
+  // where they differ from the winner when they score close to it.
+  const RecognitionCandidate* other_shape = shape_rival == rival ? nullptr : shape_rival;
+  if (other_shape) result.other_shape_part = other_shape->part;
+  for (const RecognitionCandidate* compared : {sizes_told_apart ? nullptr : rival, other_shape}) {
+    if (!compared || best->score - compared->score >= parameters_.ambiguity.examined_score_margin)
+      continue;
     result.ambiguity_examined = true;
     result.ambiguity = judge_part_ambiguity(
         points.all, model_base_,
         {best->view, best->T_model_scene, best->seen_fraction, part_search_model(best->part).views},
-        {rival->view, rival->T_model_scene, rival->seen_fraction,
-         part_search_model(rival->part).views},
+        {compared->view, compared->T_model_scene, compared->seen_fraction,
+         part_search_model(compared->part).views},
         parameters_.registration, parameters_.support, parameters_.ambiguity, surfaces);
     if (result.ambiguity.ambiguous) {
       result.part = -1;
@@ -208,7 +228,7 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
         return std::to_string(static_cast<int>(std::lround(100 * fraction)));
       };
       return "ambiguous between " + model_base_.parts[static_cast<std::size_t>(best->part)].name +
-             " and " + model_base_.parts[static_cast<std::size_t>(rival->part)].name + ": " +
+             " and " + model_base_.parts[static_cast<std::size_t>(compared->part)].name + ": " +
              percent(result.ambiguity.discriminating_fraction) +
              " % of scene and surfaces tell them apart, " +
              percent(result.ambiguity.discriminating_share) + " % of it for the first";

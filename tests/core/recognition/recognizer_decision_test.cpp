@@ -1,9 +1,12 @@
 // The recognizer's decision (recognizer_decision.cpp): the rival it compares the winner with,
-// against the regression model base (recognizer_fixture.hpp), and the other sizes it searches
-// when no candidate qualifies, against a base of two shapes at three sizes each.
+// against the regression model base (recognizer_fixture.hpp); the other sizes it searches
+// when no candidate qualifies, against a base of two shapes at three sizes each; and the
+// winner and its rivals among flat-faced parts of three shapes at three sizes each.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <memory>
+#include <string>
 
 #include "core/recognition/recognizer.hpp"
 #include "sim/model_base_build/model_base_builder.hpp"
@@ -86,6 +89,76 @@ TEST(RecognizerDecision, WhenNoCandidateQualifiesTheBestOnesOtherSizesAreSearche
                                    [&](const ModelPart& p) { return p.name == name; });
     EXPECT_TRUE(part_pose_searched(result, static_cast<int>(part - base.parts.begin()))) << name;
   }
+}
+
+// Flat-faced parts at three sizes each, and a plate: a view of a few of a bracket's faces is
+// explained by a section or a cube that contains them about as well as by the bracket.
+class RecognizerOnFlatFamilies : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    catalog_ = std::make_unique<PartCatalog>(
+        read_part_catalog(std::filesystem::path(COSMOS_SOURCE_DIR) / "config/parts-250.yaml"));
+    PartCatalog families;
+    for (const char* shape : {"l-bracket-3", "t-section-3", "cube-meshed"})
+      for (const char* size : {"", "-110", "-121"})
+        families.parts.push_back(catalog_->at(std::string(shape) + size));
+    families.parts.push_back(catalog_->at("notched-plate-4"));
+    ModelBaseBuildSettings settings;
+    settings.view_count = 80;
+    settings.threads = 2;
+    base_ = std::make_unique<ModelBase>(build_model_base(families, ScannerParameters{}, settings));
+    recognizer_ = std::make_unique<Recognizer>(*base_, CosmosParameters{}, RecognitionParameters{});
+  }
+  static void TearDownTestSuite() {
+    recognizer_.reset();
+    base_.reset();
+    catalog_.reset();
+  }
+  static RecognitionResult recognize(std::uint64_t seed) {
+    const ModelPart& part = base_->parts[seed % base_->parts.size()];
+    const PartEntry& entry = catalog_->at(part.name);
+    ScannerParameters scanner;
+    scanner.seed = seed;
+    return recognizer_->recognize(scan_single_part(load_mesh(entry.mesh_path, entry.size_mm),
+                                                   entry.name, random_rotation(seed), scanner,
+                                                   ConditioningParameters{}));
+  }
+  // The best of `part`'s qualified candidates by `merit` (-1 when it has none).
+  template <class Merit>
+  static double best_qualified(const RecognitionResult& result, int part, Merit merit) {
+    double best = -1;
+    for (const RecognitionCandidate& candidate : result.candidates)
+      if (candidate.part == part && candidate.qualified) best = std::max(best, merit(candidate));
+    return best;
+  }
+  static inline std::unique_ptr<PartCatalog> catalog_;
+  static inline std::unique_ptr<ModelBase> base_;
+  static inline std::unique_ptr<Recognizer> recognizer_;
+};
+
+// When the runner-up is another size of the winner's shape, the best qualified part of another
+// shape is compared with the winner too: one scoring within examined_score_margin of every
+// candidate of the winner's part has been examined where the two differ.
+TEST_F(RecognizerOnFlatFamilies, ARivalOfAnotherSizeDoesNotHideAPartOfAnotherShape) {
+  const PartAmbiguityParameters ambiguity;
+  const auto score = [](const RecognitionCandidate& c) { return c.score; };
+  int other_shapes = 0, examined = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    const RecognitionResult result = recognize(seed);
+    if (result.other_shape_part < 0) continue;
+    ++other_shapes;
+    ASSERT_GE(result.runner_up_part, 0) << seed;
+    EXPECT_NE(result.other_shape_part, result.runner_up_part) << seed;
+    if (result.status != RecognitionStatus::kOk) continue;
+    const double other = best_qualified(result, result.other_shape_part, score);
+    if (best_qualified(result, result.part, score) - other >=
+        ambiguity.examined_score_margin - 1e-3)
+      continue;
+    ++examined;
+    EXPECT_TRUE(result.ambiguity_examined) << seed;
+  }
+  EXPECT_GE(other_shapes, 5);
+  EXPECT_GE(examined, 1);
 }
 
 }  // namespace
