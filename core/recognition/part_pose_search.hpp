@@ -158,10 +158,6 @@ struct CatalogRankParameters {
   // its best quick fit at any height times this factor (1: as though that pose lay on the
   // belt) instead of not at all.
   double floating_fit_factor = 1.0;
-  // And after every part with a quick pose on the belt: in a large catalog a few flat faces
-  // of the scene fit dozens of thinner parts that float, as closely as its own part fits, and
-  // ranked among them the scene's own part came tens of places down.
-  bool floating_parts_last = true;
 
   template <class Visitor>
   void visit(Visitor& v) {
@@ -175,8 +171,6 @@ struct CatalogRankParameters {
       "a part whose quick poses all float or stand over the belt ranks by its best quick fit "
       "times this",
       Range{1, 1e6});
-    v("floating_parts_last", floating_parts_last,
-      "such parts rank after every part with a quick pose on the belt");
   }
 };
 

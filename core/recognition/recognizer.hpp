@@ -166,9 +166,8 @@ struct RecognitionResult {
   // The scene had no fitted surface to register and was searched with its range points
   // (thin_scene.hpp); no candidate is registered then.
   bool thin_scene = false;
-  // The order of the search over every part, best first (the parts with a quick pose on the
-  // belt before the others when catalog_rank.floating_parts_last); empty when it did not run
-  // in the order of the quick field fits.
+  // The order of the search over every part, best first; empty when it did not run in the
+  // order of the quick field fits.
   std::vector<QuickFieldFit> quick_fits;
   // The best full field fit that search reached (its parts' field stages; infinity when it did
   // not run in quick order): a part whose quick fit is hopeless beside it is searched no

@@ -113,12 +113,9 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
       for (std::size_t k = share_of(share); k < share_of(share + 1); ++k)
         ranked[k] = quick_fit(parts[k], scene_points);
     });
-    const bool floating_last = parameters_.catalog_rank.floating_parts_last;
-    std::stable_sort(ranked.begin(), ranked.end(),
-                     [floating_last](const QuickFieldFit& a, const QuickFieldFit& b) {
-                       if (floating_last && a.on_belt != b.on_belt) return a.on_belt;
-                       return a.fit_mm2 < b.fit_mm2;
-                     });
+    std::stable_sort(
+        ranked.begin(), ranked.end(),
+        [](const QuickFieldFit& a, const QuickFieldFit& b) { return a.fit_mm2 < b.fit_mm2; });
     for (std::size_t k = 0; k < ranked.size(); ++k) parts[k] = ranked[k].part;
     result.timings.selection_ms += elapsed_ms(stage);
   }
@@ -184,15 +181,12 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
       break;
     }
     // A part whose quick fit is hopeless beside another part's full fit (the rule below) is
-    // not searched: the full stages rarely lower a fit that much. Nor are those after it, up to
-    // the floating parts when they rank last, whose fits start again from the best.
+    // not searched, nor are those after it: the full stages rarely lower a fit that much.
     if (quick_ranked &&
         ranked[k].fit_mm2 > parameters_.search.worst_kept_score_mm2(best_fit_mm2_of_all)) {
       if (explained) return false;
       every_part = false;
-      if (!parameters_.catalog_rank.floating_parts_last || !ranked[k].on_belt) break;
-      while (k + 1 < parts.size() && ranked[k + 1].on_belt) ++k;
-      continue;
+      break;
     }
     if (!resting_poses)
       result.views_examined += static_cast<int>(part_search_model(part).views.size());
