@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/recognition/recognizer.hpp"
 #include "sim/model_base_build/model_base_builder.hpp"
@@ -14,6 +15,29 @@
 
 namespace cosmos {
 namespace {
+
+// The catalog of hundreds of parts, with its size families.
+PartCatalog large_catalog() {
+  return read_part_catalog(std::filesystem::path(COSMOS_SOURCE_DIR) / "config/parts-250.yaml");
+}
+
+// A base of the named catalog parts, 80 views each.
+ModelBase family_base(const PartCatalog& catalog, const std::vector<std::string>& names) {
+  PartCatalog families;
+  for (const std::string& name : names) families.parts.push_back(catalog.at(name));
+  ModelBaseBuildSettings settings;
+  settings.view_count = 80;
+  settings.threads = 2;
+  return build_model_base(families, ScannerParameters{}, settings);
+}
+
+// The part alone on the belt at a seeded random rotation, with seeded noise.
+RangeImage scan_part(const PartEntry& part, std::uint64_t seed) {
+  ScannerParameters scanner;
+  scanner.seed = seed;
+  return scan_single_part(load_mesh(part.mesh_path, part.size_mm), part.name, random_rotation(seed),
+                          scanner, ConditioningParameters{});
+}
 
 bool part_pose_searched(const RecognitionResult& result, int part) {
   return std::any_of(
@@ -60,24 +84,12 @@ TEST_F(RecognizerOnRegressionBase, ARivalWhoseQuickFitIsHopelessIsNotSearchedAga
 // at that size, so the decision searches the head's other sizes before it rejects the scene;
 // none of them explains it either, and the scene is rejected rather than named.
 TEST(RecognizerDecision, WhenNoCandidateQualifiesTheBestOnesOtherSizesAreSearched) {
-  const PartCatalog catalog =
-      read_part_catalog(std::filesystem::path(COSMOS_SOURCE_DIR) / "config/parts-250.yaml");
-  PartCatalog families;
-  for (const char* name : {"head", "head-110", "head-121", "holes", "holes-110", "holes-121"})
-    families.parts.push_back(catalog.at(name));
-  ModelBaseBuildSettings settings;
-  settings.view_count = 80;
-  settings.threads = 2;
-  const ModelBase base = build_model_base(families, ScannerParameters{}, settings);
+  const PartCatalog catalog = large_catalog();
+  const ModelBase base =
+      family_base(catalog, {"head", "head-110", "head-121", "holes", "holes-110", "holes-121"});
   const Recognizer recognizer(base, CosmosParameters{}, RecognitionParameters{});
 
-  const PartEntry& holes = catalog.at("holes-110");
-  ScannerParameters scanner;
-  scanner.seed = 44;
-  const RangeImage scene =
-      scan_single_part(load_mesh(holes.mesh_path, holes.size_mm), holes.name,
-                       random_rotation(scanner.seed), scanner, ConditioningParameters{});
-  const RecognitionResult result = recognizer.recognize(scene);
+  const RecognitionResult result = recognizer.recognize(scan_part(catalog.at("holes-110"), 44));
   EXPECT_EQ(result.status, RecognitionStatus::kRejected);
   EXPECT_TRUE(result.reason.starts_with("best candidate's surface is not where the scene is"))
       << result.reason;
@@ -96,17 +108,12 @@ TEST(RecognizerDecision, WhenNoCandidateQualifiesTheBestOnesOtherSizesAreSearche
 class RecognizerOnFlatFamilies : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    catalog_ = std::make_unique<PartCatalog>(
-        read_part_catalog(std::filesystem::path(COSMOS_SOURCE_DIR) / "config/parts-250.yaml"));
-    PartCatalog families;
+    catalog_ = std::make_unique<PartCatalog>(large_catalog());
+    std::vector<std::string> names;
     for (const char* shape : {"l-bracket-3", "t-section-3", "cube-meshed"})
-      for (const char* size : {"", "-110", "-121"})
-        families.parts.push_back(catalog_->at(std::string(shape) + size));
-    families.parts.push_back(catalog_->at("notched-plate-4"));
-    ModelBaseBuildSettings settings;
-    settings.view_count = 80;
-    settings.threads = 2;
-    base_ = std::make_unique<ModelBase>(build_model_base(families, ScannerParameters{}, settings));
+      for (const char* size : {"", "-110", "-121"}) names.push_back(std::string(shape) + size);
+    names.push_back("notched-plate-4");
+    base_ = std::make_unique<ModelBase>(family_base(*catalog_, names));
     recognizer_ = std::make_unique<Recognizer>(*base_, CosmosParameters{}, RecognitionParameters{});
   }
   static void TearDownTestSuite() {
@@ -116,19 +123,13 @@ class RecognizerOnFlatFamilies : public ::testing::Test {
   }
   static RecognitionResult recognize(std::uint64_t seed) {
     const ModelPart& part = base_->parts[seed % base_->parts.size()];
-    const PartEntry& entry = catalog_->at(part.name);
-    ScannerParameters scanner;
-    scanner.seed = seed;
-    return recognizer_->recognize(scan_single_part(load_mesh(entry.mesh_path, entry.size_mm),
-                                                   entry.name, random_rotation(seed), scanner,
-                                                   ConditioningParameters{}));
+    return recognizer_->recognize(scan_part(catalog_->at(part.name), seed));
   }
-  // The best of `part`'s qualified candidates by `merit` (-1 when it has none).
-  template <class Merit>
-  static double best_qualified(const RecognitionResult& result, int part, Merit merit) {
+  // The best score of `part`'s qualified candidates (-1 when it has none).
+  static double best_qualified_score(const RecognitionResult& result, int part) {
     double best = -1;
     for (const RecognitionCandidate& candidate : result.candidates)
-      if (candidate.part == part && candidate.qualified) best = std::max(best, merit(candidate));
+      if (candidate.part == part && candidate.qualified) best = std::max(best, candidate.score);
     return best;
   }
   static inline std::unique_ptr<PartCatalog> catalog_;
@@ -141,7 +142,6 @@ class RecognizerOnFlatFamilies : public ::testing::Test {
 // candidate of the winner's part has been examined where the two differ.
 TEST_F(RecognizerOnFlatFamilies, ARivalOfAnotherSizeDoesNotHideAPartOfAnotherShape) {
   const PartAmbiguityParameters ambiguity;
-  const auto score = [](const RecognitionCandidate& c) { return c.score; };
   int other_shapes = 0, examined = 0;
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
     const RecognitionResult result = recognize(seed);
@@ -150,9 +150,8 @@ TEST_F(RecognizerOnFlatFamilies, ARivalOfAnotherSizeDoesNotHideAPartOfAnotherSha
     ASSERT_GE(result.runner_up_part, 0) << seed;
     EXPECT_NE(result.other_shape_part, result.runner_up_part) << seed;
     if (result.status != RecognitionStatus::kOk) continue;
-    const double other = best_qualified(result, result.other_shape_part, score);
-    if (best_qualified(result, result.part, score) - other >=
-        ambiguity.examined_score_margin - 1e-3)
+    const double other = best_qualified_score(result, result.other_shape_part);
+    if (best_qualified_score(result, result.part) - other >= ambiguity.examined_score_margin - 1e-3)
       continue;
     ++examined;
     EXPECT_TRUE(result.ambiguity_examined) << seed;
