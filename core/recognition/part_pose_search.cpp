@@ -26,7 +26,7 @@ constexpr int kMinHypothesesPerShare = 32;
 // The stages in turn (each on fewer hypotheses, most of them on more points): best first at the
 // end; ties keep generation order (views in base order, turns by angle). Each stage's
 // hypotheses are aligned and scored in contiguous shares on `tasks`.
-void run_field_stages(const PartDistanceField& field, double truncation_mm,
+void run_field_stages(const PartDistanceField& field, const BeltContact& belt, double truncation_mm,
                       std::initializer_list<FieldStage> stages,
                       std::vector<FieldHypothesis>& hypotheses, const TaskRunner& tasks) {
   std::vector<std::vector<double>> kept_scores;  // per share, a max-heap of its best scores
@@ -49,7 +49,7 @@ void run_field_stages(const PartDistanceField& field, double truncation_mm,
         FieldHypothesis& hypothesis = hypotheses[static_cast<std::size_t>(k)];
         if (stage.iterations > 0)
           hypothesis.T_part_scene = align_in_distance_field(
-              stage.points, field, hypothesis.T_part_scene, stage.iterations, truncation_mm);
+              stage.points, field, hypothesis.T_part_scene, stage.iterations, truncation_mm, belt);
         const double bound =
             abandon && heap.size() == keep ? heap.front() : std::numeric_limits<double>::infinity();
         hypothesis.truncated_mean_square_mm2 = field_truncated_mean_square_mm2(
@@ -168,18 +168,18 @@ PartSearchModel build_part_search_model(const ModelBase& base, int part) {
 }
 
 std::vector<FieldHypothesis> rank_field_starts(const RegistrationPoints& scene,
-                                               const PartDistanceField& field,
+                                               const PartSearchModel& model,
                                                std::vector<FieldHypothesis> starts,
                                                const PartPoseSearchParameters& parameters,
                                                const TaskRunner& tasks) {
   const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
-  if (scoring.size() == 0 || field.empty()) return {};
+  if (scoring.size() == 0 || model.field.empty()) return {};
   // The first stages on a sparser subset still: most starts are far off, and which few
   // hundred are not shows on fewer points.
   const RegistrationPoints sparse = spread_subset(scoring, parameters.start_scoring_points);
   // Against the whole part, in stages: every start as it is, the best after one alignment
   // step, the best of those after a few more.
-  run_field_stages(field, parameters.field_truncation_mm,
+  run_field_stages(model.field, model.belt, parameters.field_truncation_mm,
                    {{sparse, 0, static_cast<std::size_t>(parameters.field_candidates)},
                     {sparse, 1, static_cast<std::size_t>(parameters.field_aligned)},
                     {scoring, parameters.field_iterations,
@@ -195,7 +195,7 @@ std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& sce
                                                    const TaskRunner& tasks) {
   const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
   if (scoring.size() == 0 || model.field.empty()) return {};
-  return rank_field_starts(scene, model.field,
+  return rank_field_starts(scene, model,
                            turned_view_starts(scoring, base, model, parameters.in_plane_turns),
                            parameters, tasks);
 }
@@ -236,9 +236,10 @@ std::vector<ViewPoseHypothesis> register_field_hypotheses(
     const FieldHypothesis& hypothesis = hypotheses[refined_hypotheses[r]];
     const ModelBaseView& model_view = base.views[static_cast<std::size_t>(views[r])];
     const RigidTransform T_model_scene = model_view.T_scanner_part * hypothesis.T_part_scene;
-    const RegistrationResult refined =
-        register_views(scoring, together ? *view_points[r] : surfaces.points(views[r]),
-                       T_model_scene, short_registration);
+    const RegistrationResult refined = register_views(
+        scoring, together ? *view_points[r] : surfaces.points(views[r]), T_model_scene,
+        short_registration, one_after_another(),
+        {model.belt.hull_vertices_part_mm, model_view.T_scanner_part, model.belt.weight});
     const RigidTransform& T =
         refined.status == RegistrationStatus::kInvalidInput ? T_model_scene : refined.T_model_scene;
     best[r] = {
@@ -282,7 +283,7 @@ std::vector<ViewPoseHypothesis> align_view_starts_in_field(
   std::vector<FieldHypothesis> hypotheses;
   for (const RigidTransform& T_model_scene : starts)
     hypotheses.push_back({T_part_view * T_model_scene, 0.0});
-  run_field_stages(model.field, parameters.field_truncation_mm,
+  run_field_stages(model.field, model.belt, parameters.field_truncation_mm,
                    {{scoring, 0, static_cast<std::size_t>(parameters.aligned_starts)},
                     {scoring, parameters.field_iterations, kKeepAll}},
                    hypotheses, one_after_another());
@@ -305,7 +306,7 @@ std::vector<FieldHypothesis> quick_field_poses(const RegistrationPoints& scene,
   const RegistrationPoints scoring = spread_subset(aligning, parameters.start_points);
   std::vector<FieldHypothesis> starts =
       turned_view_starts(aligning, base, model, search.in_plane_turns);
-  run_field_stages(model.field, search.field_truncation_mm,
+  run_field_stages(model.field, model.belt, search.field_truncation_mm,
                    {{scoring, 0, static_cast<std::size_t>(parameters.aligned)},
                     {aligning, parameters.iterations, kKeepAll}},
                    starts, one_after_another());

@@ -98,6 +98,10 @@ struct PartSearchModel {
   // An even sample of the views' control points in the part's frame (the whole part, every
   // side): what a pose hypothesis must not place over measured belt (free_space.hpp).
   Eigen::Matrix3Xd surface_sample_mm;
+  // When the parts lie on the belt, every alignment and registration of the search holds the
+  // part on it (belt_contact.hpp): its hull corners, in its own frame. build_part_search_model
+  // leaves it free; the recognizer holds it when its parameters say the parts touch the belt.
+  BeltContact belt;
 };
 
 PartSearchModel build_part_search_model(const ModelBase& base, int part);
@@ -123,7 +127,7 @@ int nearest_view(const ModelBase& base, const PartSearchModel& model,
 // field_candidates aligned one step, the best field_aligned of those field_iterations steps;
 // at most refined_hypotheses returned, best first.
 std::vector<FieldHypothesis> rank_field_starts(const RegistrationPoints& scene,
-                                               const PartDistanceField& field,
+                                               const PartSearchModel& model,
                                                std::vector<FieldHypothesis> starts,
                                                const PartPoseSearchParameters& parameters,
                                                const TaskRunner& tasks = one_after_another());

@@ -64,8 +64,10 @@ Recognizer::Recognizer(const ModelBase& model_base, const CosmosParameters& cosm
       cosmos_(cosmos),
       parameters_(parameters),
       selector_(model_base, parameters.selection) {
-  for (int part = 0; part < static_cast<int>(model_base.parts.size()); ++part)
+  for (int part = 0; part < static_cast<int>(model_base.parts.size()); ++part) {
     part_search_models_.push_back(build_part_search_model(model_base, part));
+    part_search_models_.back().belt = belt_contact_in_part_frame(part);
+  }
   if (parameters_.vote_index.enabled)
     patch_pair_table_ = PatchPairTable(model_base, parameters_.vote_index.key);
   for (int part = 0; part < static_cast<int>(model_base.parts.size()); ++part)
@@ -237,13 +239,14 @@ bool Recognizer::refine_free_motion(const ScenePoints& scene_points, ModelSurfac
   RegistrationParameters fine = parameters_.registration;
   fine.max_iterations = parameters_.fine_registration_iterations;
   // One more pass from the registered pose tells which motion its inliers leave free.
-  const RegistrationResult registered =
-      register_views(scene_points.all, model, candidate.T_model_scene, fine, tasks_);
+  const RegistrationResult registered = register_views(
+      scene_points.all, model, candidate.T_model_scene, fine, tasks_, belt_contact(candidate.view));
   const std::optional<RigidTransform> start =
       search_free_motion(scene_points.coarse, model, registered, parameters_.registration,
                          parameters_.support.inlier_distance_mm, parameters_.free_motion, tasks_);
   if (!start) return false;
-  const RegistrationResult again = register_views(scene_points.all, model, *start, fine, tasks_);
+  const RegistrationResult again =
+      register_views(scene_points.all, model, *start, fine, tasks_, belt_contact(candidate.view));
   if (again.status == RegistrationStatus::kInvalidInput) return false;
   const PartSupport support = measure_part_support(
       scene_points.all, model_base_, part_search_model(candidate.part).views, candidate.view,
@@ -302,6 +305,20 @@ bool Recognizer::at_rest(const RecognitionCandidate& candidate) const {
   return resting.parts_rest ? check.at_rest : check.touches_belt;
 }
 
+BeltContact Recognizer::belt_contact_in_part_frame(int part) const {
+  const RestingSearchParameters& resting = parameters_.resting;
+  if (!resting.parts_rest && !resting.parts_touch_belt) return {};
+  return {model_base_.parts[static_cast<std::size_t>(part)].hull_vertices_mm,
+          RigidTransform::identity(), resting.belt_contact_weight};
+}
+
+BeltContact Recognizer::belt_contact(int view) const {
+  const ModelBaseView& model_view = model_base_.views[static_cast<std::size_t>(view)];
+  BeltContact belt = belt_contact_in_part_frame(model_view.part_index);
+  belt.T_model_part = model_view.T_scanner_part;
+  return belt;
+}
+
 RestingCheck Recognizer::check_resting(const RecognitionCandidate& candidate) const {
   const ModelBaseView& view = model_base_.views[static_cast<std::size_t>(candidate.view)];
   return cosmos::check_resting(model_base_.parts[static_cast<std::size_t>(candidate.part)],
@@ -331,15 +348,16 @@ void Recognizer::register_candidate(const ScenePoints& scene_points,
             start_view.T_scanner_part.inverse() * start.T_model_scene))
       continue;
     const RegistrationPoints& model = surfaces.points(start.view);
+    const BeltContact belt = belt_contact(start.view);
     RegistrationResult registration =
-        register_views(scene_points.coarse, model, start.T_model_scene, coarse, tasks_);
+        register_views(scene_points.coarse, model, start.T_model_scene, coarse, tasks_, belt);
     if (registration.status == RegistrationStatus::kInvalidInput) continue;
     Support support = measure_support(scene_points.coarse, model, registration.T_model_scene,
                                       parameters_, tasks_);
     const bool refine = support.inlier_fraction >= parameters_.fine_registration_support;
     if (refine) {
       registration =
-          register_views(scene_points.all, model, registration.T_model_scene, fine, tasks_);
+          register_views(scene_points.all, model, registration.T_model_scene, fine, tasks_, belt);
       // A degenerate (still planar) result is kept: its support decides.
       if (registration.status == RegistrationStatus::kInvalidInput) continue;
       support =

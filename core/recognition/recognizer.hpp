@@ -263,6 +263,10 @@ class Recognizer {
   void drop_poses_over_belt(int part, const RangeImage& scene,
                             std::vector<FieldHypothesis>& field_poses) const;
   RestingCheck check_resting(const RecognitionCandidate& candidate) const;
+  // Parts known to lie on the belt are registered held on it (belt_contact.hpp): a part's, in
+  // its own frame and in a view's; free when they are not known to.
+  BeltContact belt_contact_in_part_frame(int part) const;
+  BeltContact belt_contact(int view) const;
   // `other` is another size of `part`'s shape in the base (size_variants.hpp).
   bool is_size_variant(int part, int other) const;
   // Registers from each start on its view, keeps the pose its view supports best (the

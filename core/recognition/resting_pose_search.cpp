@@ -63,7 +63,7 @@ std::vector<FieldHypothesis> resting_pose_hypotheses(const RegistrationPoints& s
   funnel.field_candidates = parameters.field_aligned;
   funnel.field_aligned = parameters.field_aligned;
   funnel.refined_hypotheses = parameters.refined_hypotheses;
-  return rank_field_starts(scene, model.field, std::move(starts), funnel);
+  return rank_field_starts(scene, model, std::move(starts), funnel);
 }
 
 RestingCheck check_resting(const ModelPart& part, const RigidTransform& T_part_scene,

@@ -29,6 +29,10 @@ struct RestingSearchParameters {
   // contact with the belt alone.
   bool parts_rest = false;
   double max_height_error_mm = 2.0;
+  // With parts_touch_belt, every alignment and registration holds a part on the belt by its
+  // lowest hull corners (belt_contact.hpp), their rows weighing this many times the scene's
+  // points together; 0 leaves the pose free of the belt, to be checked after.
+  double belt_contact_weight = 1.0;
   // The same for the pose search's field poses, before registration moves them the last
   // millimetres (part_pose_search.hpp): a floating field pose is not registered.
   double field_height_error_mm = 6.0;
@@ -47,6 +51,9 @@ struct RestingSearchParameters {
     v("parts_rest", parts_rest, "and in their stable poses: leaning ones cannot win either");
     v("max_height_error_mm", max_height_error_mm,
       "lowest point farther from the belt: not at rest, mm", Range{0, 1e3});
+    v("belt_contact_weight", belt_contact_weight,
+      "registrations hold the part's lowest corners on the belt with this weight (x the scene's)",
+      Range{0, 1e6});
     v("field_height_error_mm", field_height_error_mm,
       "a field pose's lowest point farther from the belt: not registered, mm", Range{0, 1e3});
     v("max_tilt_deg", max_tilt_deg, "farther from every resting pose: not at rest, deg",

@@ -186,7 +186,7 @@ double field_fraction_within(const RegistrationPoints& scene, const PartDistance
 RigidTransform align_in_distance_field(const RegistrationPoints& scene,
                                        const PartDistanceField& field,
                                        const RigidTransform& T_part_scene, int iterations,
-                                       double truncation_mm) {
+                                       double truncation_mm, const BeltContact& belt) {
   RigidTransform T = T_part_scene;
   using Matrix6d = Eigen::Matrix<double, 6, 6>;
   using Vector6d = Eigen::Matrix<double, 6, 1>;
@@ -209,6 +209,16 @@ RigidTransform align_in_distance_field(const RegistrationPoints& scene,
       ++used;
     }
     if (used < 6) break;
+    if (belt.holds())
+      for_each_belt_row(belt, T, [&](const BeltRow& row, double share) {
+        const Eigen::Vector3d moment = row.point_mm.cross(row.normal);
+        Vector6d jacobian;
+        jacobian << moment.x(), moment.y(), moment.z(), row.normal.x(), row.normal.y(),
+            row.normal.z();
+        const double weight = share * belt.weight * used;
+        normal.noalias() += weight * jacobian * jacobian.transpose();
+        right -= weight * jacobian * row.height_mm;
+      });
     // A little damping keeps the directions the points do not constrain where they are.
     normal.diagonal().array() += 1e-6 * normal.diagonal().maxCoeff() + 1e-9;
     const Vector6d step = normal.selfadjointView<Eigen::Lower>().ldlt().solve(right);

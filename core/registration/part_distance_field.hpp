@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/parameter_visitor.hpp"
+#include "core/registration/belt_contact.hpp"
 #include "core/registration/part_surface_voxels.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/rigid_transform.hpp"
@@ -63,7 +64,8 @@ class PartDistanceField {
   friend double field_fraction_within(const RegistrationPoints&, const PartDistanceField&,
                                       const RigidTransform&, double);
   friend RigidTransform align_in_distance_field(const RegistrationPoints&, const PartDistanceField&,
-                                                const RigidTransform&, int, double);
+                                                const RigidTransform&, int, double,
+                                                const BeltContact&);
 
   Eigen::Vector3d origin_mm_ = Eigen::Vector3d::Zero();  // centre of voxel (0, 0, 0)
   double voxel_mm_ = 1.0;
@@ -111,10 +113,12 @@ struct FieldGate {
 };
 
 // Gauss-Newton on the scene points' distances to the field (those within the truncation),
-// `iterations` steps from T_part_scene: a registration that needs no correspondences.
+// `iterations` steps from T_part_scene: a registration that needs no correspondences. Held on
+// the belt when `belt` holds (belt_contact.hpp; its T_model_part the identity, as the field
+// is in the part's frame).
 RigidTransform align_in_distance_field(const RegistrationPoints& scene,
                                        const PartDistanceField& field,
                                        const RigidTransform& T_part_scene, int iterations,
-                                       double truncation_mm);
+                                       double truncation_mm, const BeltContact& belt = {});
 
 }  // namespace cosmos

@@ -127,13 +127,16 @@ struct Increment {
 // Step (ii): d_s after a small motion (omega about the centroid c, then tau) is, to first
 // order, d_s + ((T p - c) x n) . omega + n . tau; the weighted least-squares increment.
 // (The cross product is written out: GCC 12 misreads Eigen's AVX cross() as out of bounds.)
-SolveStatus solve_increment(const std::vector<Correspondence>& inliers, Increment& increment) {
+// `belt`: the belt's rows (belt_contact.hpp); they constrain the step but, not being scene
+// points, neither move the centroid nor count in the conditioning below.
+SolveStatus solve_increment(const std::vector<Correspondence>& inliers,
+                            const std::vector<Correspondence>& belt, Increment& increment) {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   for (const Correspondence& c : inliers) centroid += c.point_mm;
   centroid /= static_cast<double>(inliers.size());
   Eigen::Matrix<double, 6, 6> H = Eigen::Matrix<double, 6, 6>::Zero();
   Eigen::Matrix<double, 6, 1> g = Eigen::Matrix<double, 6, 1>::Zero();
-  for (const Correspondence& c : inliers) {
+  const auto add_row = [&](const Correspondence& c) {
     const Eigen::Vector3d lever_mm = c.point_mm - centroid;
     Eigen::Matrix<double, 6, 1> J;
     J(0) = lever_mm.y() * c.normal.z() - lever_mm.z() * c.normal.y();
@@ -143,7 +146,9 @@ SolveStatus solve_increment(const std::vector<Correspondence>& inliers, Incremen
     // The full outer product: fixed-size and inlined, it is cheaper than rankUpdate's call.
     H.noalias() += (c.weight * J) * J.transpose();
     g += c.weight * c.distance_mm * J;
-  }
+  };
+  for (const Correspondence& c : inliers) add_row(c);
+  for (const Correspondence& c : belt) add_row(c);
   // Conditioning in units that do not depend on the part's size: rotations scaled by the RMS
   // lever arm, so each eigenvalue is a weighted sum of squared unit-free constraints; divided
   // by the total weight it is the mean squared constraint the weakest direction gets.
@@ -191,17 +196,18 @@ SolveStatus solve_increment(const std::vector<Correspondence>& inliers, Incremen
 
 RegistrationResult register_views(const RegistrationPoints& scene, const RegistrationPoints& model,
                                   const RigidTransform& T_model_scene_initial,
-                                  const RegistrationParameters& parameters,
-                                  const TaskRunner& tasks) {
+                                  const RegistrationParameters& parameters, const TaskRunner& tasks,
+                                  const BeltContact& belt) {
   RegistrationResult result;
   result.T_model_scene = T_model_scene_initial;
   if (!valid_input(scene, model, parameters)) return result;
 
-  std::vector<Correspondence> candidates, inliers;
+  std::vector<Correspondence> candidates, inliers, belt_rows;
   std::vector<std::uint8_t> was_inlier(static_cast<std::size_t>(scene.size()), 0);
   std::vector<std::uint8_t> is_inlier(was_inlier.size(), 0);
   candidates.reserve(static_cast<std::size_t>(scene.size()));
   inliers.reserve(static_cast<std::size_t>(scene.size()));
+  belt_rows.reserve(belt.hull_vertices_part_mm.size());
   const Eigen::Vector3d scene_centroid_mm = scene.position_mm.rowwise().mean();
   RigidTransform T_last = result.T_model_scene;
   bool planar = false;  // the last pass left 3 or more directions free
@@ -235,8 +241,17 @@ RegistrationResult register_views(const RegistrationPoints& scene, const Registr
     result.inlier_fraction = static_cast<double>(inliers.size()) / scene.size();
     result.rms_residual_mm = std::sqrt(sum_squares / static_cast<double>(inliers.size()));
 
+    belt_rows.clear();
+    if (belt.holds()) {
+      double inlier_weight = 0.0;
+      for (const Correspondence& c : inliers) inlier_weight += c.weight;
+      for_each_belt_row(belt, result.T_model_scene, [&](const BeltRow& row, double share) {
+        belt_rows.push_back(
+            {-1, row.point_mm, row.normal, row.height_mm, share * belt.weight * inlier_weight});
+      });
+    }
     Increment increment;
-    const SolveStatus solved = solve_increment(inliers, increment);
+    const SolveStatus solved = solve_increment(inliers, belt_rows, increment);
     planar = solved == SolveStatus::kPlanar;
     result.weakest_motion = increment.weakest_motion;
     result.weakest_lever_mm = increment.lever_mm;

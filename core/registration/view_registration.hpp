@@ -19,6 +19,9 @@
 // far apart, tight (but never below sensor-noise scale) near convergence. A previous inlier
 // keeps its place up to 1.25 times that distance, so points on the threshold do not flicker.
 //
+// A part known to lie on the belt is held on it (belt_contact.hpp): its lowest hull corners are
+// rows of step (ii) beside the inliers, weighing BeltContact::weight times all of them.
+//
 // Convergence is tested on the increment (rotation and shift of the inliers' centroid below
 // tolerances) rather than on the change of e^k as in §6.4, which jumps whenever the inlier
 // set changes; a period-2 oscillation below the tolerances (a point at the model's edge
@@ -28,6 +31,7 @@
 #include <vector>
 
 #include "core/parameter_visitor.hpp"
+#include "core/registration/belt_contact.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/rigid_transform.hpp"
 #include "core/task_runner.hpp"
@@ -125,7 +129,8 @@ struct RegistrationResult {
 RegistrationResult register_views(const RegistrationPoints& scene, const RegistrationPoints& model,
                                   const RigidTransform& T_model_scene_initial,
                                   const RegistrationParameters& parameters,
-                                  const TaskRunner& tasks = one_after_another());
+                                  const TaskRunner& tasks = one_after_another(),
+                                  const BeltContact& belt = {});
 
 // How well T_model_scene aligns the views, from one correspondence pass: the mean over all
 // scene control points of min(d_s^2, D^2) (no correspondence counts D^2), with D the

@@ -1,6 +1,6 @@
 // The part distance field against surfaces whose distance is known in closed form (a plane,
 // a sphere), and its Gauss-Newton alignment recovering a known displacement of an
-// asymmetric surface.
+// asymmetric surface, and held on the belt where the surface leaves a slide free.
 #include "core/registration/part_distance_field.hpp"
 
 #include <gtest/gtest.h>
@@ -177,6 +177,31 @@ TEST(PartDistanceField, AlignmentUndoesAKnownDisplacement) {
                 std::numbers::pi,
             1.5);
   EXPECT_LT(aligned.translation_mm.norm(), 0.7);
+}
+
+// A block's wall seen alone leaves the block free to slide along it: the scene's points fit as
+// well 4 mm higher, where the block sinks 4 mm into the belt. Held on the belt by its lowest
+// corners, the alignment lifts it back onto it; free of the belt, the pose stays.
+TEST(PartDistanceField, AlignmentHeldOnTheBeltStopsASlideAlongAWall) {
+  std::vector<Eigen::Vector3d> wall, seen, corners;
+  for (double y = -20; y <= 20; y += 0.5)
+    for (double z = 0; z <= 20; z += 0.5) {
+      wall.emplace_back(0.0, y, z);
+      if (z >= 2 && z <= 14) seen.emplace_back(0.0, y, z);
+    }
+  for (const double x : {-10.0, 0.0})
+    for (const double y : {-20.0, 20.0})
+      for (const double z : {0.0, 20.0}) corners.emplace_back(x, y, z);
+  const PartDistanceField field(wall, {.voxel_mm = kVoxelMm, .margin_mm = 12});
+  const RegistrationPoints scene = as_scene(seen);
+  const RigidTransform slid{Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.0, 0.0, 4.0)};
+  const RigidTransform free = align_in_distance_field(scene, field, slid, 10, 10.0);
+  const RigidTransform held = align_in_distance_field(scene, field, slid, 10, 10.0,
+                                                      {corners, RigidTransform::identity(), 1.0});
+  EXPECT_GT(free.translation_mm.z(), 3.9);
+  EXPECT_LT(std::abs(held.translation_mm.z()), 0.05);
+  EXPECT_LT(rotation_angle_between_rad(held.rotation, Eigen::Matrix3d::Identity()), 1e-3);
+  EXPECT_LT(field_truncated_mean_square_mm2(scene, field, held, 10.0), 0.5);
 }
 
 TEST(PartDistanceField, NoPointsGiveAnEmptyFieldThatAlignsNothing) {

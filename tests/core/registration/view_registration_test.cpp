@@ -218,5 +218,47 @@ TEST(ViewRegistration, ARejectionFloorAboveTheOffsetLetsTheOtherFacePullThePoseB
   EXPECT_LT(pulled_mm, 0.05);
 }
 
+// The same roof, 10 mm higher, as the top of a block standing on the belt (z = 0), with no
+// point nearer than 0.2 mm rejected: the start slid along the left face sinks the block 0.2 mm
+// into the belt. Held on the belt by its lowest corners, the registration slides it back up the
+// face; free of it, or with the belt's weight 0, the pose stays where the face fits.
+TEST(ViewRegistration, ThePartsLowestCornerHeldOnTheBeltStopsASlideAlongAFace) {
+  const auto top_mm = [](double x) { return 15.0 + 0.5 * std::min(x, 10.0 - x); };
+  RangeImage roof(61, 61, 0.5, 0.5);
+  roof.origin_x_mm = roof.origin_y_mm = -15.0;
+  for (int row = 0; row < roof.height(); ++row)
+    for (int column = 0; column < roof.width(); ++column) {
+      const double x = roof.x_mm(column);
+      roof.z_mm(column, row) = static_cast<float>(top_mm(x));
+    }
+  const auto model = build_registration_points(roof, {}).points;
+  const auto scene = build_registration_points(roof, {.stride_px = 2}).points;
+  std::vector<Eigen::Vector3d> block_corners_mm;
+  for (const double x : {-15.0, 15.0})
+    for (const double y : {-15.0, 15.0}) {
+      block_corners_mm.emplace_back(x, y, 0.0);
+      block_corners_mm.emplace_back(x, y, top_mm(x));
+    }
+  block_corners_mm.emplace_back(5.0, -15.0, top_mm(5.0));
+  block_corners_mm.emplace_back(5.0, 15.0, top_mm(5.0));
+  const Eigen::Vector3d along_left_face = Eigen::Vector3d(1.0, 0.0, 0.5).normalized();
+  const RigidTransform start{Eigen::Matrix3d::Identity(), 0.45 * along_left_face};
+  RegistrationParameters tight;
+  tight.min_rejection_distance_mm = 0.2;
+  const BeltContact belt{block_corners_mm, RigidTransform::identity(), 1.0};
+  const RegistrationResult held =
+      register_views(scene, model, start, tight, one_after_another(), belt);
+  const RegistrationResult free = register_views(scene, model, start, tight);
+  EXPECT_LT(held.T_model_scene.translation_mm.norm(), 0.05);
+  EXPECT_LT(rotation_angle_between_rad(held.T_model_scene.rotation, Eigen::Matrix3d::Identity()),
+            1e-3);
+  EXPECT_GT(free.T_model_scene.translation_mm.norm(), 0.3);
+  BeltContact weightless = belt;
+  weightless.weight = 0.0;
+  EXPECT_GT(register_views(scene, model, start, tight, one_after_another(), weightless)
+                .T_model_scene.translation_mm.norm(),
+            0.3);
+}
+
 }  // namespace
 }  // namespace cosmos::testing
