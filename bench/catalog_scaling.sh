@@ -78,7 +78,7 @@ for n in "${size_list[@]}"; do
   {
     echo "# The first $n parts of config/parts-250.yaml."
     echo "parts:"
-    grep '^  - {name:' "$full_catalog" | head -n "$n"
+    grep -m "$n" '^  - {name:' "$full_catalog"
   } > "$catalog.new"
   base=$out/parts-$n-$views.cmb
   # A base is rebuilt when asked, when its catalog changed, or when it does not load (an older
