@@ -83,6 +83,9 @@ std::string parameters_markdown() {
   base_sections("field", build.field,
                 "the voxels of each part's surface, its pose-search distance field "
                 "(core/registration/part_surface_voxels.hpp)");
+  base_sections("confusion", build.confusion,
+                "the parts that explain each other's views "
+                "(core/recognition/confusable_parts.hpp)");
 
   text.append(
       "\n## Recognition\n\n"

@@ -75,7 +75,7 @@ fs::path synthetic_base_file(int mean_points) {
   base.parameters_text = "{}\n";
   for (int part = 0; part < kParts; ++part) {
     base.parts.push_back(
-        {"part" + std::to_string(part), "part.off", 100, 120, false, {}, {}, {}, {}});
+        {"part" + std::to_string(part), "part.off", 100, 120, false, {}, {}, {}, {}, {}});
     for (int v = 0; v < kViewsPerPart; ++v) {
       ModelBaseView view;
       view.part_index = part;

@@ -134,8 +134,8 @@ void model_base_seeds(const fs::path& corpus, const fs::path& scratch) {
   cosmos::ModelBase base;
   base.catalog_hash = "fuzz";
   base.parameters_text = "cosmos.fit.window_size: 5\n";
-  base.parts = {{"relief", "relief.off", 30, 32, false, {}, {}, {}, {}},
-                {"tilted", "tilted.off", 30, 33, true, {}, {}, {}, {}}};
+  base.parts = {{"relief", "relief.off", 30, 32, false, {}, {}, {}, {}, {}},
+                {"tilted", "tilted.off", 30, 33, true, {}, {}, {}, {}, {}}};
   base.parts[0].resting_poses = {{Eigen::Matrix3d::Identity(), 4, 0.75}};
   base.parts[0].hull_vertices_mm = {{-15, -15, -4}, {15, -15, -4}, {0, 15, 6}};
   const cosmos::CosmosParameters parameters;

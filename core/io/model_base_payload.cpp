@@ -127,7 +127,7 @@ std::size_t estimated_payload_bytes(const ModelBase& base) {
   for (const ModelPart& part : base.parts)
     bytes += 256 + part.name.size() + part.mesh.size() + 96 * part.resting_poses.size() +
              32 * part.hull_vertices_mm.size() + part.surface_voxels.occupied_runs.size() +
-             32 * part.surface_sample_mm.size();
+             32 * part.surface_sample_mm.size() + 4 * part.confusable_parts.size();
   for (const ViewCluster& cluster : base.clusters) bytes += 160 + 4 * cluster.views.size();
   for (const ModelBaseView& view : base.views) {
     const bool packed = packed_is_set(view.registration_packed);
@@ -168,8 +168,10 @@ void encode_model_base(const ModelBase& base, FlatBufferBuilder& b) {
     std::vector<fb::Vec3> sample;
     for (const Eigen::Vector3d& point : part.surface_sample_mm) sample.push_back(vec3(point));
     const auto sample_vector = b.CreateVectorOfStructs(sample);
+    const auto confusable = b.CreateVector(part.confusable_parts);
     parts.push_back(fb::CreatePart(b, name, mesh, part.size_mm, part.diameter_mm, part.symmetric,
-                                   resting_vector, hull_vector, surface_voxels, sample_vector));
+                                   resting_vector, hull_vector, surface_voxels, sample_vector,
+                                   confusable));
   }
   const auto part_vector = b.CreateVector(parts);
   std::vector<Offset<fb::View>> views;
@@ -345,6 +347,7 @@ std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::s
               {},
               {},
               {},
+              {},
               {}};
       if (const auto* resting = p->resting_poses())
         for (std::size_t r = 0; r < resting->size(); ++r) {
@@ -369,6 +372,16 @@ std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::s
     }
   }
   const int part_count = static_cast<int>(out.parts.size());
+  for (std::size_t p = 0; p < out.parts.size(); ++p) {
+    const auto confusable =
+        span_of(in->parts()->Get(static_cast<flatbuffers::uoffset_t>(p))->confusable_parts());
+    for (int other : confusable) {
+      if (other < 0 || other >= part_count)
+        return "part " + std::to_string(p) + ": confusable part " + std::to_string(other) +
+               " out of range";
+      out.parts[p].confusable_parts.push_back(other);
+    }
+  }
   if (const auto* views = in->views()) {
     out.views.resize(views->size());
     for (std::size_t v = 0; v < views->size(); ++v) {

@@ -41,6 +41,9 @@ struct ModelPart {
   // not place over measured belt). part_surface_summary.hpp computes both.
   PartSurfaceVoxels surface_voxels;
   std::vector<Eigen::Vector3d> surface_sample_mm;
+  // The parts of one of whose views this part's quick field fit is as close as a scan's to its
+  // own part (core/recognition/confusable_parts.hpp): indices into ModelBase::parts, ascending.
+  std::vector<int> confusable_parts;
 
   // The chance the kept resting poses cover: below 1 when unlikely ones were left out.
   double resting_coverage() const {
@@ -89,8 +92,9 @@ struct ModelBase {
   // Raised whenever what a build writes changes (layout or content), so that caches and
   // readers refuse or rebuild what an older build wrote. 2: registration streams
   // (docs/architecture.md), and no patch without pixels. 3: the parts' resting poses and hulls.
-  // 4: the parts' surface voxels and samples, the views' control-point centroids.
-  static constexpr std::uint32_t kFormatVersion = 4;
+  // 4: the parts' surface voxels and samples, the views' control-point centroids. 5: the parts'
+  // confusable parts.
+  static constexpr std::uint32_t kFormatVersion = 5;
   std::string catalog_hash;     // content hash of the catalog and its meshes
   std::string parameters_text;  // every COSMOS/scanner/grouping parameter, canonical text
   std::vector<ModelPart> parts;

@@ -9,6 +9,7 @@
 #include "core/matching/spectral_view_selection.hpp"
 #include "core/modelbase/model_surface.hpp"
 #include "core/parameter_visitor.hpp"
+#include "core/recognition/confusable_parts.hpp"
 #include "core/recognition/part_ambiguity.hpp"
 #include "core/recognition/part_pose_search.hpp"
 #include "core/recognition/part_size_gate.hpp"
@@ -157,6 +158,8 @@ struct RecognitionParameters {
   PartAmbiguityParameters ambiguity;
   // One shape at several sizes (size_variants.hpp).
   SizeVariantParameters size_variants;
+  // The parts the base lists as confusable with the winner (confusable_parts.hpp).
+  ConfusableSearchParameters confusable;
   // The model surfaces a recognition keeps unpacked at once (model_surface.hpp).
   ModelSurfaceCacheParameters surfaces;
   // The winner's pose along the motion its registration left free (free_motion_search.hpp).
@@ -231,6 +234,7 @@ struct RecognitionParameters {
     v("size_gate", size_gate, "parts the search over every part leaves out by size");
     v("ambiguity", ambiguity, "rejection as ambiguous between two parts (§5.3.6, §5.4)");
     v("size_variants", size_variants, "one shape at several sizes: told apart by the fit");
+    v("confusable", confusable, "the winner's confusable parts, registered before deciding");
     v("surfaces", surfaces, "the model surfaces a recognition keeps unpacked");
     v("free_motion", free_motion, "the winner's pose along the motion registration left free");
     v("thin_scene", thin_scene, "a scene without a fitted surface, from its range points");

@@ -36,6 +36,7 @@
 //
 // Everything is counted in operations (views, hypotheses, iterations), so the result depends
 // only on the input; only the timings vary between runs.
+#include <functional>
 #include <limits>
 #include <span>
 #include <string>
@@ -176,6 +177,9 @@ struct RecognitionResult {
   // The decision's rival was not searched over its part's views, its quick fit being hopeless
   // beside best_field_fit_mm2: it was compared as its selected view registered it.
   bool rival_left_unsearched = false;
+  // The winner's confusable parts (confusable_parts.hpp) the decision searched over their views,
+  // in that order: those its list holds that the scene's size allows and no search had reached.
+  std::vector<int> confusable_parts_searched;
   // The parts that search left out, too small or too thick for the scene (part_size_gate.hpp).
   int parts_smaller_than_scene = 0;
   int parts_thicker_than_scene = 0;
@@ -269,6 +273,12 @@ class Recognizer {
   BeltContact belt_contact(int view) const;
   // `other` is another size of `part`'s shape in the base (size_variants.hpp).
   bool is_size_variant(int part, int other) const;
+  // Of the parts the base lists as confusable with `part` (confusable_parts.hpp), those the
+  // scene's size allows and `searched` does not hold, best quick fit in `result` first (those
+  // without one after them, in list order), at most confusable.searched_parts.
+  std::vector<int> confusable_parts_to_search(int part, const ScenePoints& points,
+                                              const RecognitionResult& result,
+                                              const std::function<bool(int)>& searched) const;
   // Registers from each start on its view, keeps the pose its view supports best (the
   // candidate's view becomes that one), then judges it against the part's views around it
   // (part_support.hpp).

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,40 @@ namespace cosmos {
 bool Recognizer::is_size_variant(int part, int other) const {
   const std::vector<int>& family = size_variants_[static_cast<std::size_t>(part)];
   return std::binary_search(family.begin(), family.end(), other);
+}
+
+std::vector<int> Recognizer::confusable_parts_to_search(
+    int part, const ScenePoints& points, const RecognitionResult& result,
+    const std::function<bool(int)>& searched) const {
+  const std::vector<int>& listed =
+      model_base_.parts[static_cast<std::size_t>(part)].confusable_parts;
+  if (listed.empty()) return {};
+  const SceneExtent extent = scene_extent(points.all, points.image);
+  struct Listed {
+    int part;
+    double quick_fit_mm2;
+  };
+  std::vector<Listed> kept;
+  for (int other : listed) {
+    if (searched(other) || judge_part_size(part_extents_[static_cast<std::size_t>(other)], extent,
+                                           points.parts, parameters_.resting.parts_touch_belt,
+                                           parameters_.size_gate) != SizeVerdict::kFits)
+      continue;
+    const auto quick =
+        std::find_if(result.quick_fits.begin(), result.quick_fits.end(),
+                     [other](const QuickFieldFit& fit) { return fit.part == other; });
+    kept.push_back({other, quick != result.quick_fits.end()
+                               ? quick->fit_mm2
+                               : std::numeric_limits<double>::infinity()});
+  }
+  std::stable_sort(kept.begin(), kept.end(), [](const Listed& a, const Listed& b) {
+    return a.quick_fit_mm2 < b.quick_fit_mm2;
+  });
+  std::vector<int> parts;
+  for (const Listed& other : kept)
+    if (static_cast<int>(parts.size()) < parameters_.confusable.searched_parts)
+      parts.push_back(other.part);
+  return parts;
 }
 
 std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& points,
@@ -127,11 +162,26 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
       if (!left) unsearched.push_back(compared->part);
     }
   const RecognitionCandidate* family_of = winner ? winner : best;
+  const auto search_too = [&](int part) {
+    if (!pose_searched(part) &&
+        std::find(unsearched.begin(), unsearched.end(), part) == unsearched.end())
+      unsearched.push_back(part);
+  };
   if (parameters_.size_variants.search)
     for (int variant : size_variants_[static_cast<std::size_t>(family_of->part)])
-      if (!pose_searched(variant) &&
-          std::find(unsearched.begin(), unsearched.end(), variant) == unsearched.end())
-        unsearched.push_back(variant);
+      search_too(variant);
+  // So do the parts the base lists as confusable with the winner's (one of them explains a view
+  // of the other as closely as its own part): the search ended at the winner, and the scene's
+  // own part may be one of them that ranked lower.
+  const auto queued = [&](int part) {
+    return pose_searched(part) ||
+           std::find(unsearched.begin(), unsearched.end(), part) != unsearched.end();
+  };
+  if (parameters_.confusable.search)
+    for (int part : confusable_parts_to_search(family_of->part, points, result, queued)) {
+      unsearched.push_back(part);
+      result.confusable_parts_searched.push_back(part);
+    }
   if (!unsearched.empty()) {
     // One part at a time: a search stops at the first part that explains the scene.
     for (int part : unsearched) search_candidate_parts(analysis, points, surfaces, result, {part});

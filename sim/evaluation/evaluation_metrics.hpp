@@ -79,6 +79,8 @@ struct EvaluationRecord {
   bool catalog_searched = false;
   // Parts the search over every part left out by size (part_size_gate.hpp).
   int parts_left_out_by_size = 0;
+  // The winner's confusable parts the decision searched before it decided (confusable_parts.hpp).
+  int confusable_parts_searched = 0;
   bool resting_searched = false;  // the parts' resting poses were searched
   bool thin_scene = false;  // no fitted surface: searched with its range points (thin_scene.hpp)
   // The decision's margin: the winner's score (the best candidate's when rejected) and the

@@ -11,7 +11,9 @@
 #include <thread>
 
 #include "core/modelbase/part_surface_summary.hpp"
+#include "core/recognition/confusable_parts.hpp"
 #include "core/representation/cosmos_pipeline.hpp"
+#include "core/task_runner.hpp"
 #include "sim/convex_hull.hpp"
 #include "sim/mesh.hpp"
 #include "sim/model_base_build/catalog_content_hash.hpp"
@@ -164,17 +166,38 @@ void run_jobs(BuildJobs& jobs, int threads, const ModelBaseProgress& progress) {
   if (jobs.error) std::rethrow_exception(jobs.error);
 }
 
-// Each part on one thread: a part's summary reads and writes only that part and its views.
-void summarize_parts(ModelBase& base, const PartDistanceFieldParameters& field, int threads) {
-  std::atomic<int> next_part{0};
-  const auto work = [&] {
-    for (int part = next_part++; part < static_cast<int>(base.parts.size()); part = next_part++)
-      summarize_part_surface(base, part, field);
-  };
-  std::vector<std::thread> workers;
-  for (int t = 1; t < threads; ++t) workers.emplace_back(work);
-  work();
-  for (std::thread& worker : workers) worker.join();
+// The build's independent steps after the views (the parts' summaries, the fits of their
+// views) on `threads` threads, the calling one among them, each task taken from a counter.
+class BuildThreads final : public TaskRunner {
+ public:
+  explicit BuildThreads(int threads) : threads_(threads) {}
+  void run(int count, const std::function<void(int task)>& task) const override {
+    std::atomic<int> next{0};
+    const auto work = [&] {
+      for (int k = next++; k < count; k = next++) task(k);
+    };
+    std::vector<std::thread> workers;
+    for (int t = 1; t < threads_; ++t) workers.emplace_back(work);
+    work();
+    for (std::thread& worker : workers) worker.join();
+  }
+  int threads() const override { return threads_; }
+
+ private:
+  int threads_;
+};
+
+// Each part's confusable parts, from every part's search model (its distance field).
+void list_confusable_parts(ModelBase& base, const ConfusablePartParameters& confusion,
+                           const TaskRunner& tasks) {
+  if (!confusion.enabled) return;
+  std::vector<PartSearchModel> models(base.parts.size());
+  tasks.run(static_cast<int>(models.size()), [&](int part) {
+    models[static_cast<std::size_t>(part)] = build_part_search_model(base, part);
+  });
+  std::vector<std::vector<int>> confusable = find_confusable_parts(base, models, confusion, tasks);
+  for (std::size_t part = 0; part < base.parts.size(); ++part)
+    base.parts[part].confusable_parts = std::move(confusable[part]);
 }
 
 }  // namespace
@@ -203,6 +226,7 @@ ModelBase build_model_base(const PartCatalog& catalog, const ScannerParameters& 
             {},
             {},
             {},
+            {},
             {}};
     for (const StableRestingPose& pose : stable_resting_poses(meshes.back(), settings.resting))
       part.resting_poses.push_back({pose.R_belt_part, pose.height_mm, pose.probability});
@@ -223,7 +247,11 @@ ModelBase build_model_base(const PartCatalog& catalog, const ScannerParameters& 
                            base.parts[static_cast<std::size_t>(grouping.failed_part)].name +
                            "' (non-finite moments?)");
   base.clusters = std::move(grouping.clusters);
-  summarize_parts(base, settings.field, threads);
+  const BuildThreads tasks(threads);
+  // Each part's summary reads and writes only that part and its views.
+  tasks.run(static_cast<int>(base.parts.size()),
+            [&](int part) { summarize_part_surface(base, part, settings.field); });
+  list_confusable_parts(base, settings.confusion, tasks);
   return base;
 }
 

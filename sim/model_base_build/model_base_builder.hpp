@@ -2,8 +2,9 @@
 // Builds the model base (ch. 4, Fig. 5.3) from the part catalog: every part seen from the view
 // directions of §4.5 through sim's ModelViewRenderer (the simulated scanner, profile mode) and
 // the same COSMOS code as live scans (analyze_view, build_registration_points), then each
-// part's views grouped into clusters (§4.4.2) and its whole surface summarized for the pose
-// search (core/modelbase/part_surface_summary.hpp).
+// part's views grouped into clusters (§4.4.2), its whole surface summarized for the pose
+// search (core/modelbase/part_surface_summary.hpp), and the parts it may be taken for listed
+// (core/recognition/confusable_parts.hpp).
 //
 // Parallel and deterministic: worker threads pull (part, view) jobs from an atomic counter,
 // each result lands in its job's slot, and everything after (grouping, the file) runs in job
@@ -13,6 +14,7 @@
 #include "core/cosmos_parameters.hpp"
 #include "core/modelbase/model_base.hpp"
 #include "core/modelbase/view_grouping.hpp"
+#include "core/recognition/confusable_parts.hpp"
 #include "core/registration/part_surface_voxels.hpp"
 #include "core/registration/registration_points.hpp"
 #include "scanner/conditioning_parameters.hpp"
@@ -50,6 +52,9 @@ struct ModelBaseBuildSettings {
   // The voxels of each part's surface, from which a recognizer builds the part's distance
   // field (core/modelbase/part_surface_summary.hpp).
   PartDistanceFieldParameters field;
+  // Which parts each part may be taken for, from every part's quick field fits to a few views of
+  // every other (core/recognition/confusable_parts.hpp).
+  ConfusablePartParameters confusion;
 };
 
 struct ModelBaseBuildProgress {

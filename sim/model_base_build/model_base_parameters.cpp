@@ -14,6 +14,7 @@ std::string model_base_parameters_text(const ScannerParameters& scanner,
   text.set_parameters("grouping", settings.grouping);
   text.set_parameters("resting", settings.resting);
   text.set_parameters("field", settings.field);
+  text.set_parameters("confusion", settings.confusion);
   text.set_integer("views.count", settings.view_count);
   text.set_integer("views.sphere_subdivisions", kViewSphereSubdivisions);
   text.set_text("views.subset",

@@ -10,7 +10,8 @@
 // scanner.* (the simulated scanner that took the model views), conditioning.* (the views'
 // grid and belt threshold, ModelViewConditioning), views.* (how many, which directions),
 // grouping.* (the dendrogram cut), resting.* (the parts' stable poses), field.* (the voxels of
-// each part's surface). Left out on purpose: the scanner's camera-frame drawing
+// each part's surface), confusion.* (the fits that list each part's confusable parts). Left
+// out on purpose: the scanner's camera-frame drawing
 // (model views are scanned in profile mode, which never draws frames) and its line rate (it
 // paces the belt in time, not in space).
 #include <string>

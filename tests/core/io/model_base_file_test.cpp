@@ -57,8 +57,8 @@ ModelBase hand_made_base() {
   ModelBase base;
   base.catalog_hash = "0123456789abcdef";
   base.parameters_text = parameters(0.02);
-  base.parts = {{"cow", "cow.off", 120, 131.5, false, {}, {}, {}, {}},
-                {"spool", "spool.off", 70, 74.25, true, {}, {}, {}, {}}};
+  base.parts = {{"cow", "cow.off", 120, 131.5, false, {}, {}, {}, {}, {}},
+                {"spool", "spool.off", 70, 74.25, true, {}, {}, {}, {}, {}}};
   base.parts[0].resting_poses = {{rotation_from_xyz_angles_deg(180, 0, 0), 21.5, 0.625},
                                  {rotation_from_xyz_angles_deg(90, 0, 0), 30.25, 0.375}};
   base.parts[0].hull_vertices_mm = {{-60, -20, -21.5}, {60, 25, 30}, {0, -30, 5}};

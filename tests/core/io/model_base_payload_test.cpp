@@ -39,11 +39,12 @@ ModelBase small_base() {
   ModelBase base;
   base.catalog_hash = "feedc0ffee";
   base.parameters_text = "{\"cosmos\":{\"fit\":{\"window_size\":5}}}";
-  base.parts = {{"cow", "cow.off", 120, 131.5, false, {}, {}, {}, {}},
-                {"spool", "spool.off", 70, 74.25, true, {}, {}, {}, {}}};
+  base.parts = {{"cow", "cow.off", 120, 131.5, false, {}, {}, {}, {}, {}},
+                {"spool", "spool.off", 70, 74.25, true, {}, {}, {}, {}, {}}};
   base.parts[0].resting_poses = {{rotation_from_xyz_angles_deg(180, 0, 0), 21.5, 0.625},
                                  {rotation_from_xyz_angles_deg(90, 0, 0), 30.25, 0.375}};
   base.parts[0].hull_vertices_mm = {{-60, -20, -21.5}, {60, 25, 30}, {0, -30, 5}};
+  base.parts[1].confusable_parts = {0};
   for (int k = 0; k < 3; ++k) {
     ModelBaseView view;
     view.part_index = k < 2 ? 0 : 1;
@@ -115,6 +116,8 @@ TEST(ModelBasePayload, DecodesWhatWasEncoded) {
   EXPECT_EQ(read.parts[0].resting_poses[1].height_mm, 30.25);
   EXPECT_EQ(read.parts[0].resting_poses[0].probability, 0.625);
   EXPECT_EQ(read.parts[0].hull_vertices_mm, base.parts[0].hull_vertices_mm);
+  EXPECT_TRUE(read.parts[0].confusable_parts.empty());
+  EXPECT_EQ(read.parts[1].confusable_parts, std::vector<int>{0});
   ASSERT_EQ(read.views.size(), 3u);
   const ModelBaseView &view = read.views[2], &written = base.views[2];
   EXPECT_EQ(view.part_index, 1);
@@ -228,6 +231,10 @@ TEST(ModelBasePayload, IndicesOutOfTheirRangeAreRefusedNamingWhere) {
               b.clusters[1].views = {2, 0};
             }),
             "cluster 1: view 0 belongs to another part");
+  EXPECT_EQ(refusal_after([](ModelBase& b) {
+              b.parts[0].confusable_parts = {1, 2};
+            }),
+            "part 0: confusable part 2 out of range");
 }
 
 TEST(ModelBasePayload, SurfaceVoxelsThatDoNotCoverTheirGridAreRefusedNamingThePart) {

@@ -56,8 +56,8 @@ RangeImage scan(const PartEntry& entry, std::uint64_t seed) {
 // beyond the floor (0.15 by default).
 TEST(PartAmbiguity, PartsThatExplainTheSceneAlikeAreToldApartByTheSurfaceTheSceneContradicts) {
   ModelBase base;
-  base.parts = {{"plate", "plate.off", 24, 24, false, {}, {}, {}, {}},
-                {"bracket", "bracket.off", 24, 24, false, {}, {}, {}, {}}};
+  base.parts = {{"plate", "plate.off", 24, 24, false, {}, {}, {}, {}, {}},
+                {"bracket", "bracket.off", 24, 24, false, {}, {}, {}, {}, {}}};
   for (int part : {0, 1}) {
     ModelBaseView view;
     view.part_index = part;

@@ -33,8 +33,8 @@ Eigen::Vector3d direction_at_deg(double angle_deg) {
 const std::vector<int> kPartZeroViews = {0, 1};
 ModelBase two_view_base(double second_view_angle_deg) {
   ModelBase base;
-  base.parts = {{"plate", "plate.off", 24, 24, false, {}, {}, {}, {}},
-                {"other", "other.off", 24, 24, false, {}, {}, {}, {}}};
+  base.parts = {{"plate", "plate.off", 24, 24, false, {}, {}, {}, {}, {}},
+                {"other", "other.off", 24, 24, false, {}, {}, {}, {}, {}}};
   ModelBaseView matched;
   matched.part_index = 0;
   matched.direction_part = direction_at_deg(0.0);

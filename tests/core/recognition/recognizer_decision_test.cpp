@@ -1,5 +1,6 @@
-// The recognizer's decision (recognizer_decision.cpp): the rival it compares the winner with,
-// against the regression model base (recognizer_fixture.hpp); the other sizes it searches
+// The recognizer's decision (recognizer_decision.cpp): the rival it compares the winner with
+// and the winner's confusable parts it searches, against the regression model base
+// (recognizer_fixture.hpp); the other sizes it searches
 // when no candidate qualifies, against a base of two shapes at three sizes each; and the
 // winner and its rivals among flat-faced parts of three shapes at three sizes each.
 #include <gtest/gtest.h>
@@ -76,6 +77,44 @@ TEST_F(RecognizerOnRegressionBase, ARivalWhoseQuickFitIsHopelessIsNotSearchedAga
     EXPECT_TRUE(part_pose_searched(searched, rival)) << seed;
   }
   EXPECT_GE(left_unsearched, 1);
+}
+
+// The winner's confusable parts (confusable_parts.hpp) are searched before the decision, at
+// most confusable.searched_parts of them: a cow whose list holds the mannequin, which is
+// larger than any view of the cow and so never left out by size, has the mannequin searched
+// in every scan no other search reached it in, and is still named. With none to search, the
+// decision searches none.
+TEST_F(RecognizerOnRegressionBase, TheWinnersConfusablePartsAreSearchedBeforeTheDecision) {
+  const auto index_of = [&](const std::string& name) {
+    for (std::size_t part = 0; part < base_->parts.size(); ++part)
+      if (base_->parts[part].name == name) return static_cast<int>(part);
+    return -1;
+  };
+  const int cow = index_of("cow"), mannequin = index_of("mannequin-devil");
+  ASSERT_GE(cow, 0);
+  ASSERT_GE(mannequin, 0);
+  ModelBase listed = *base_;
+  for (ModelPart& part : listed.parts) part.confusable_parts.clear();
+  listed.parts[static_cast<std::size_t>(cow)].confusable_parts = {mannequin};
+  const Recognizer searching(listed, CosmosParameters{}, RecognitionParameters{});
+  RecognitionParameters none_searched;
+  none_searched.confusable.searched_parts = 0;
+  const Recognizer not_searching(listed, CosmosParameters{}, none_searched);
+  int named = 0, searched = 0;
+  for (std::uint64_t seed = 401; seed < 409; ++seed) {
+    const RangeImage image = scan("cow", seed);
+    const RecognitionResult result = searching.recognize(image);
+    const RecognitionResult plain = not_searching.recognize(image);
+    EXPECT_TRUE(plain.confusable_parts_searched.empty()) << seed;
+    if (plain.part != cow) continue;
+    ++named;
+    EXPECT_EQ(result.part, cow) << seed;
+    if (part_pose_searched(plain, mannequin)) continue;
+    ++searched;
+    EXPECT_EQ(result.confusable_parts_searched, std::vector<int>{mannequin}) << seed;
+  }
+  EXPECT_GE(named, 6);
+  EXPECT_GE(searched, 4);
 }
 
 // The head and the holes at 100, 110 and 121 % of their catalog size. A scan of the middle
