@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/registration/packed_registration_points.hpp"
+#include "core/modelbase/model_surface.hpp"
 
 namespace cosmos {
 
@@ -31,9 +31,8 @@ std::vector<std::vector<int>> find_confusable_parts(const ModelBase& base,
   const RangeImage no_image;
   tasks.run(static_cast<int>(probes.size()), [&](int probe) {
     const ModelBaseView& view = base.views[static_cast<std::size_t>(probes[probe])];
-    const RegistrationPoints points = view.registration.size() > 0
-                                          ? view.registration
-                                          : unpack_registration_points(view.registration_packed);
+    const ModelSurface surface(view);
+    const RegistrationPoints& points = surface.points();
     // The view is one part seen whole, not on the belt: only the extent bound holds.
     const SceneExtent extent = scene_extent(points, no_image);
     for (int part = 0; part < part_count; ++part) {
