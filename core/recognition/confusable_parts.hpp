@@ -60,12 +60,21 @@ struct ConfusableSearchParameters {
   // At most this many, those fitting the scene best by their quick fit first: a flat part's
   // list can be long, and each costs a pose search over the part's views.
   int searched_parts = 3;
+  // A winner with listed parts the scene's size allows left unsearched is named only when this
+  // much of its matched view is where the scene is (surface_seen.hpp); less, and the scene is
+  // rejected as ambiguous. The scene's own part shows its view whole; a part taken for it
+  // explains the scene's points but puts surface where the scanner saw none, and which of the
+  // parts left unsearched would have done better is not known.
+  double min_seen_fraction = 0.85;
 
   template <class Visitor>
   void visit(Visitor& v) {
     v("search", search, "register the winner's confusable parts before deciding");
     v("searched_parts", searched_parts, "at most this many, best quick fit first",
       Range{0, 100000});
+    v("min_seen_fraction", min_seen_fraction,
+      "with some left unsearched, less of the winner's view seen: rejected as ambiguous",
+      Range{0, 1});
   }
 };
 

@@ -275,10 +275,10 @@ class Recognizer {
   bool is_size_variant(int part, int other) const;
   // Of the parts the base lists as confusable with `part` (confusable_parts.hpp), those the
   // scene's size allows and `searched` does not hold, best quick fit in `result` first (those
-  // without one after them, in list order), at most confusable.searched_parts.
-  std::vector<int> confusable_parts_to_search(int part, const ScenePoints& points,
-                                              const RecognitionResult& result,
-                                              const std::function<bool(int)>& searched) const;
+  // without one after them, in list order).
+  std::vector<int> confusable_parts_unsearched(int part, const ScenePoints& points,
+                                               const RecognitionResult& result,
+                                               const std::function<bool(int)>& searched) const;
   // Registers from each start on its view, keeps the pose its view supports best (the
   // candidate's view becomes that one), then judges it against the part's views around it
   // (part_support.hpp).

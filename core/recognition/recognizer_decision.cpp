@@ -20,7 +20,7 @@ bool Recognizer::is_size_variant(int part, int other) const {
   return std::binary_search(family.begin(), family.end(), other);
 }
 
-std::vector<int> Recognizer::confusable_parts_to_search(
+std::vector<int> Recognizer::confusable_parts_unsearched(
     int part, const ScenePoints& points, const RecognitionResult& result,
     const std::function<bool(int)>& searched) const {
   const std::vector<int>& listed =
@@ -48,9 +48,7 @@ std::vector<int> Recognizer::confusable_parts_to_search(
     return a.quick_fit_mm2 < b.quick_fit_mm2;
   });
   std::vector<int> parts;
-  for (const Listed& other : kept)
-    if (static_cast<int>(parts.size()) < parameters_.confusable.searched_parts)
-      parts.push_back(other.part);
+  for (const Listed& other : kept) parts.push_back(other.part);
   return parts;
 }
 
@@ -177,11 +175,16 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
     return pose_searched(part) ||
            std::find(unsearched.begin(), unsearched.end(), part) != unsearched.end();
   };
-  if (parameters_.confusable.search)
-    for (int part : confusable_parts_to_search(family_of->part, points, result, queued)) {
+  if (parameters_.confusable.search) {
+    std::vector<int> confusable =
+        confusable_parts_unsearched(family_of->part, points, result, queued);
+    if (confusable.size() > static_cast<std::size_t>(parameters_.confusable.searched_parts))
+      confusable.resize(static_cast<std::size_t>(parameters_.confusable.searched_parts));
+    for (int part : confusable) {
       unsearched.push_back(part);
       result.confusable_parts_searched.push_back(part);
     }
+  }
   if (!unsearched.empty()) {
     // One part at a time: a search stops at the first part that explains the scene.
     for (int part : unsearched) search_candidate_parts(analysis, points, surfaces, result, {part});
@@ -236,6 +239,18 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
   if (best->rms_mm > parameters_.max_rms_mm) {
     result.part = -1;
     return "best candidate's registration residual is too large";
+  }
+  if (best->seen_fraction < parameters_.confusable.min_seen_fraction) {
+    const std::size_t left =
+        confusable_parts_unsearched(best->part, points, result, pose_searched).size();
+    if (left > 0) {
+      result.part = -1;
+      return "ambiguous: only " +
+             std::to_string(static_cast<int>(std::lround(100 * best->seen_fraction))) +
+             " % of the best candidate's surface is where the scene is, with parts it may be "
+             "taken for left unsearched: " +
+             std::to_string(left);
+    }
   }
   const std::vector<int> close_parts =
       close_fitting_parts(result.quick_fits, parameters_.ambiguity.close_fit_mm2);

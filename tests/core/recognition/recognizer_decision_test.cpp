@@ -1,5 +1,6 @@
-// The recognizer's decision (recognizer_decision.cpp): the rival it compares the winner with
-// and the winner's confusable parts it searches, against the regression model base
+// The recognizer's decision (recognizer_decision.cpp): the rival it compares the winner with,
+// the winner's confusable parts it searches and the view it asks of a winner with some left
+// unsearched, against the regression model base
 // (recognizer_fixture.hpp); the other sizes it searches
 // when no candidate qualifies, against a base of two shapes at three sizes each; and the
 // winner and its rivals among flat-faced parts of three shapes at three sizes each.
@@ -30,6 +31,26 @@ ModelBase family_base(const PartCatalog& catalog, const std::vector<std::string>
   settings.view_count = 80;
   settings.threads = 2;
   return build_model_base(families, ScannerParameters{}, settings);
+}
+
+// The regression base with one confusable list, the cow's, holding the mannequin (larger than
+// any view of the cow, so never left out by size).
+struct CowListingMannequin {
+  ModelBase base;
+  int cow = -1;
+  int mannequin = -1;
+};
+
+CowListingMannequin cow_listing_mannequin(const ModelBase& regression) {
+  CowListingMannequin listed{regression};
+  for (std::size_t part = 0; part < regression.parts.size(); ++part) {
+    if (regression.parts[part].name == "cow") listed.cow = static_cast<int>(part);
+    if (regression.parts[part].name == "mannequin-devil") listed.mannequin = static_cast<int>(part);
+  }
+  for (ModelPart& part : listed.base.parts) part.confusable_parts.clear();
+  if (listed.cow >= 0 && listed.mannequin >= 0)
+    listed.base.parts[static_cast<std::size_t>(listed.cow)].confusable_parts = {listed.mannequin};
+  return listed;
 }
 
 // The part alone on the belt at a seeded random rotation, with seeded noise.
@@ -85,17 +106,11 @@ TEST_F(RecognizerOnRegressionBase, ARivalWhoseQuickFitIsHopelessIsNotSearchedAga
 // in every scan no other search reached it in, and is still named. With none to search, the
 // decision searches none.
 TEST_F(RecognizerOnRegressionBase, TheWinnersConfusablePartsAreSearchedBeforeTheDecision) {
-  const auto index_of = [&](const std::string& name) {
-    for (std::size_t part = 0; part < base_->parts.size(); ++part)
-      if (base_->parts[part].name == name) return static_cast<int>(part);
-    return -1;
-  };
-  const int cow = index_of("cow"), mannequin = index_of("mannequin-devil");
+  const CowListingMannequin listing = cow_listing_mannequin(*base_);
+  const int cow = listing.cow, mannequin = listing.mannequin;
   ASSERT_GE(cow, 0);
   ASSERT_GE(mannequin, 0);
-  ModelBase listed = *base_;
-  for (ModelPart& part : listed.parts) part.confusable_parts.clear();
-  listed.parts[static_cast<std::size_t>(cow)].confusable_parts = {mannequin};
+  const ModelBase& listed = listing.base;
   const Recognizer searching(listed, CosmosParameters{}, RecognitionParameters{});
   RecognitionParameters none_searched;
   none_searched.confusable.searched_parts = 0;
@@ -115,6 +130,48 @@ TEST_F(RecognizerOnRegressionBase, TheWinnersConfusablePartsAreSearchedBeforeThe
   }
   EXPECT_GE(named, 6);
   EXPECT_GE(searched, 4);
+}
+
+// A winner whose listed parts were left unsearched (here none is searched) is named only when
+// the scene shows confusable.min_seen_fraction of its matched view: asked for all of it, the
+// cow scans that show less of it are rejected as ambiguous, counting the parts left unsearched,
+// and those that show all of it are still named; without a list the same scans are named.
+TEST_F(RecognizerOnRegressionBase, AWinnerWithListedPartsLeftUnsearchedMustShowItsView) {
+  const CowListingMannequin listing = cow_listing_mannequin(*base_);
+  const int cow = listing.cow, mannequin = listing.mannequin;
+  ASSERT_GE(cow, 0);
+  ASSERT_GE(mannequin, 0);
+  const ModelBase& listed = listing.base;
+  ModelBase unlisted = listed;
+  unlisted.parts[static_cast<std::size_t>(cow)].confusable_parts.clear();
+  RecognitionParameters whole_view;
+  whole_view.confusable.searched_parts = 0;
+  whole_view.confusable.min_seen_fraction = 1;
+  RecognitionParameters any_view = whole_view;
+  any_view.confusable.min_seen_fraction = 0;
+  const Recognizer strict(listed, CosmosParameters{}, whole_view);
+  const Recognizer lenient(listed, CosmosParameters{}, any_view);
+  const Recognizer without_list(unlisted, CosmosParameters{}, whole_view);
+  int rejected = 0, named = 0;
+  for (std::uint64_t seed = 401; seed < 409; ++seed) {
+    const RangeImage image = scan("cow", seed);
+    const RecognitionResult plain = lenient.recognize(image);
+    if (plain.part != cow || part_pose_searched(plain, mannequin)) continue;
+    EXPECT_EQ(without_list.recognize(image).part, cow) << seed;
+    const RecognitionResult result = strict.recognize(image);
+    if (plain.seen_fraction < 1) {
+      ++rejected;
+      EXPECT_EQ(result.part, -1) << seed;
+      EXPECT_NE(result.reason.find("parts it may be taken for left unsearched: 1"),
+                std::string::npos)
+          << result.reason;
+    } else {
+      ++named;
+      EXPECT_EQ(result.part, cow) << seed;
+    }
+  }
+  EXPECT_GE(rejected, 1);
+  EXPECT_GE(named, 1);
 }
 
 // The head and the holes at 100, 110 and 121 % of their catalog size. A scan of the middle
