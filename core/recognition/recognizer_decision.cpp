@@ -241,8 +241,7 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
     return "best candidate's registration residual is too large";
   }
   if (best->seen_fraction < parameters_.confusable.min_seen_fraction) {
-    const std::size_t left =
-        confusable_parts_unsearched(best->part, points, result, pose_searched).size();
+    const std::size_t left = confusable_parts_unsearched(best->part, points, result, queued).size();
     if (left > 0) {
       result.part = -1;
       return "ambiguous: only " +
