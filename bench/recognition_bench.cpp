@@ -162,8 +162,9 @@ void BM_QuickFieldFitEveryPart(benchmark::State& state) {
   const RecognitionParameters& parameters = fixture->parameters();
   const int parts = static_cast<int>(fixture->base().parts.size());
   over_scans(state, *fixture, [&](const TestScan& scan) {
+    const QuickFitPoints points = quick_fit_points(scan.scene_points, parameters.catalog_rank);
     for (int part = 0; part < parts; ++part)
-      benchmark::DoNotOptimize(quick_field_poses(scan.scene_points, fixture->base(),
+      benchmark::DoNotOptimize(quick_field_poses(points, fixture->base(),
                                                  fixture->recognizer().part_search_model(part),
                                                  parameters.search, parameters.catalog_rank));
   });

@@ -93,8 +93,8 @@ struct ModelBase {
   // readers refuse or rebuild what an older build wrote. 2: registration streams
   // (docs/architecture.md), and no patch without pixels. 3: the parts' resting poses and hulls.
   // 4: the parts' surface voxels and samples, the views' control-point centroids. 5: the parts'
-  // confusable parts.
-  static constexpr std::uint32_t kFormatVersion = 5;
+  // confusable parts. 6: those listed by quick fits scored on farthest-point subsets.
+  static constexpr std::uint32_t kFormatVersion = 6;
   std::string catalog_hash;     // content hash of the catalog and its meshes
   std::string parameters_text;  // every COSMOS/scanner/grouping parameter, canonical text
   std::vector<ModelPart> parts;

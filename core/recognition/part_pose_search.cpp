@@ -297,18 +297,26 @@ std::vector<ViewPoseHypothesis> align_view_starts_in_field(
   return distinct_hypotheses(base, best, search, count);
 }
 
-std::vector<FieldHypothesis> quick_field_poses(const RegistrationPoints& scene,
-                                               const ModelBase& base, const PartSearchModel& model,
+QuickFitPoints quick_fit_points(const RegistrationPoints& scene,
+                                const CatalogRankParameters& parameters) {
+  const std::vector<int> scoring = farthest_point_indices(scene, parameters.start_points);
+  std::vector<int> aligning = spread_indices(scene.size(), parameters.aligned_points);
+  aligning.insert(aligning.end(), scoring.begin(), scoring.end());
+  std::sort(aligning.begin(), aligning.end());
+  aligning.erase(std::unique(aligning.begin(), aligning.end()), aligning.end());
+  return {select_points(scene, aligning), select_points(scene, scoring)};
+}
+
+std::vector<FieldHypothesis> quick_field_poses(const QuickFitPoints& scene, const ModelBase& base,
+                                               const PartSearchModel& model,
                                                const PartPoseSearchParameters& search,
                                                const CatalogRankParameters& parameters) {
-  const RegistrationPoints aligning = spread_subset(scene, parameters.aligned_points);
-  if (aligning.size() == 0 || model.field.empty()) return {};
-  const RegistrationPoints scoring = spread_subset(aligning, parameters.start_points);
+  if (scene.aligning.size() == 0 || model.field.empty()) return {};
   std::vector<FieldHypothesis> starts =
-      turned_view_starts(aligning, base, model, search.in_plane_turns);
+      turned_view_starts(scene.aligning, base, model, search.in_plane_turns);
   run_field_stages(model.field, model.belt, search.field_truncation_mm,
-                   {{scoring, 0, static_cast<std::size_t>(parameters.aligned)},
-                    {aligning, parameters.iterations, kKeepAll}},
+                   {{scene.scoring, 0, static_cast<std::size_t>(parameters.aligned)},
+                    {scene.aligning, parameters.iterations, kKeepAll}},
                    starts, one_after_another());
   return starts;
 }

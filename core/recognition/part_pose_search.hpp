@@ -144,9 +144,12 @@ std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& sce
                                                    const TaskRunner& tasks = one_after_another());
 
 // How well the part can fit the scene, at a small fraction of the field stages' cost: every
-// start view's turns scored on start_points spread scene points, the best `aligned` of them
-// aligned `iterations` steps on aligned_points, the best score. It orders the search over
-// every part: the scene's own part comes first in nearly every scan, where the spectra put it
+// start view's turns scored on start_points scene points, the best `aligned` of them aligned
+// `iterations` steps on about aligned_points evenly spread ones and those, the best score. The
+// scoring points are a farthest-point subset (farthest_point_indices): the scene's ends and
+// small features decide between the starts, which an even subset of a scene that is mostly
+// one flat face cannot; the even ones hold the alignment to the whole surface. It orders the search
+// over every part: the scene's own part comes first in nearly every scan, where the spectra put it
 // first in a third of them.
 struct CatalogRankParameters {
   bool enabled = true;  // false: the search over every part goes in spectral order
@@ -166,10 +169,12 @@ struct CatalogRankParameters {
   template <class Visitor>
   void visit(Visitor& v) {
     v("enabled", enabled, "order the search over every part by a quick field fit");
-    v("start_points", start_points, "scene control points that score every start",
-      Range{1, 100000});
+    v("start_points", start_points,
+      "scene control points, farthest from each other, that score every start", Range{1, 100000});
     v("aligned", aligned, "the best starts, aligned", Range{1, 100000});
-    v("aligned_points", aligned_points, "scene control points that align them", Range{1, 100000});
+    v("aligned_points", aligned_points,
+      "evenly spread scene control points that align them, with the scoring ones",
+      Range{1, 100000});
     v("iterations", iterations, "alignment steps for each", Range{0, 1000});
     v("floating_fit_factor", floating_fit_factor,
       "a part whose quick poses all float or stand over the belt ranks by its best quick fit "
@@ -178,10 +183,18 @@ struct CatalogRankParameters {
   }
 };
 
+// The scene points every part's quick fit runs on, chosen once per scene.
+struct QuickFitPoints {
+  RegistrationPoints aligning;  // an even subset and the scoring points
+  RegistrationPoints scoring;   // start_points, farthest from each other
+};
+QuickFitPoints quick_fit_points(const RegistrationPoints& scene,
+                                const CatalogRankParameters& parameters);
+
 // The quick stage's aligned poses, best first (empty when the scene or the field is); the
 // first one's truncated mean square distance is the part's quick fit.
-std::vector<FieldHypothesis> quick_field_poses(const RegistrationPoints& scene,
-                                               const ModelBase& base, const PartSearchModel& model,
+std::vector<FieldHypothesis> quick_field_poses(const QuickFitPoints& scene, const ModelBase& base,
+                                               const PartSearchModel& model,
                                                const PartPoseSearchParameters& search,
                                                const CatalogRankParameters& parameters);
 

@@ -221,6 +221,7 @@ class Recognizer {
   struct ScenePoints {
     RegistrationPoints all;
     RegistrationPoints coarse;
+    QuickFitPoints quick;  // what every part's quick fit runs on
     const RangeImage& image;
     SceneParts parts = SceneParts::kOne;
   };

@@ -240,8 +240,8 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
 
 QuickFieldFit Recognizer::quick_fit(int part, const ScenePoints& scene_points) const {
   std::vector<FieldHypothesis> quick =
-      quick_field_poses(scene_points.all, model_base_, part_search_model(part), parameters_.search,
-                        parameters_.catalog_rank);
+      quick_field_poses(scene_points.quick, model_base_, part_search_model(part),
+                        parameters_.search, parameters_.catalog_rank);
   const double unconstrained_fit_mm2 = quick.empty() ? std::numeric_limits<double>::infinity()
                                                      : quick.front().truncated_mean_square_mm2;
   drop_floating_poses(part, quick);

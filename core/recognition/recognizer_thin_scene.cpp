@@ -30,12 +30,14 @@ std::string Recognizer::recognize_thin_scene(const RangeImage& scene,
   };
 
   std::vector<std::pair<double, int>> ranked;  // (quick fit, part), best first
+  const QuickFitPoints quick_points = quick_fit_points(points, parameters_.catalog_rank);
   for (int part = 0; part < static_cast<int>(model_base_.parts.size()); ++part) {
     const PartSearchModel& model = part_search_model(part);
-    const std::optional<SettledPose> quick = fit.best_settled(
-        part, part_of(part), model,
-        quick_field_poses(points, model_base_, model, parameters_.search, parameters_.catalog_rank),
-        parameters_.max_fraction_over_belt);
+    const std::optional<SettledPose> quick =
+        fit.best_settled(part, part_of(part), model,
+                         quick_field_poses(quick_points, model_base_, model, parameters_.search,
+                                           parameters_.catalog_rank),
+                         parameters_.max_fraction_over_belt);
     if (quick) ranked.emplace_back(quick->mean_square_mm2, part);
   }
   std::stable_sort(ranked.begin(), ranked.end(),

@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace cosmos {
@@ -186,11 +187,50 @@ RegistrationPoints select_points(const RegistrationPoints& points,
   return subset;
 }
 
-RegistrationPoints spread_subset(const RegistrationPoints& points, int count) {
-  const int step = std::max(1, points.size() / std::max(count, 1));
+std::vector<int> spread_indices(int size, int count) {
+  const int step = std::max(1, size / std::max(count, 1));
   std::vector<int> indices;
-  for (int i = 0; i < points.size(); i += step) indices.push_back(i);
-  return select_points(points, indices);
+  for (int i = 0; i < size; i += step) indices.push_back(i);
+  return indices;
+}
+
+RegistrationPoints spread_subset(const RegistrationPoints& points, int count) {
+  return select_points(points, spread_indices(points.size(), count));
+}
+
+std::vector<int> farthest_point_indices(const RegistrationPoints& points, int count) {
+  const int size = points.size();
+  std::vector<int> chosen;
+  if (size <= count) {
+    for (int i = 0; i < size; ++i) chosen.push_back(i);
+    return chosen;
+  }
+  if (count <= 0) return chosen;
+  const auto farthest_from = [&](const auto& squared_distance) {
+    int farthest = 0;
+    double farthest_mm2 = -1;
+    for (int i = 0; i < size; ++i)
+      if (const double d = squared_distance(i); d > farthest_mm2) {
+        farthest = i;
+        farthest_mm2 = d;
+      }
+    return farthest;
+  };
+  const Eigen::Vector3d centroid = points.position_mm.rowwise().mean();
+  chosen.push_back(
+      farthest_from([&](int i) { return (points.position_mm.col(i) - centroid).squaredNorm(); }));
+  std::vector<double> nearest_chosen_mm2(static_cast<std::size_t>(size),
+                                         std::numeric_limits<double>::infinity());
+  while (static_cast<int>(chosen.size()) < count) {
+    const Eigen::Vector3d last = points.position_mm.col(chosen.back());
+    chosen.push_back(farthest_from([&](int i) {
+      double& nearest = nearest_chosen_mm2[static_cast<std::size_t>(i)];
+      nearest = std::min(nearest, (points.position_mm.col(i) - last).squaredNorm());
+      return nearest;
+    }));
+  }
+  std::sort(chosen.begin(), chosen.end());
+  return chosen;
 }
 
 }  // namespace cosmos

@@ -122,6 +122,13 @@ RegistrationPoints select_points(const RegistrationPoints& points, const std::ve
 // Every `step`-th point, so that about `count` remain (all of them when fewer): an evenly
 // spread subset, since points are in grid order.
 RegistrationPoints spread_subset(const RegistrationPoints& points, int count);
+std::vector<int> spread_indices(int size, int count);  // the indices spread_subset keeps
+// The indices of `count` points (all of them when fewer), ascending, chosen one after another
+// as the point farthest from those chosen before, the first the farthest from the points'
+// centroid: a subset that reaches the scene's ends and its small features. An even subset of
+// a scene most of which is one large face lies nearly all on that face, and every pose that
+// puts the face on some flat face of a part scores alike on it.
+std::vector<int> farthest_point_indices(const RegistrationPoints& points, int count);
 
 // Fits every stride-th pixel whose full window has data and no depth jump, and keeps the
 // smooth, not-grazing ones (§6.7.1). With `frames`, the normal of a control point

@@ -241,9 +241,10 @@ TEST_F(PartPoseSearch, QuickFitPutsTheScansOwnPartFirst) {
     const int part = static_cast<int>(seed % parts);
     const Scan scene = scan(part, seed);
     std::vector<double> quick_fit_mm2;
+    const QuickFitPoints quick_points = quick_fit_points(scene.points, parameters.catalog_rank);
     for (int candidate = 0; candidate < parts; ++candidate) {
       const std::vector<FieldHypothesis> poses =
-          quick_field_poses(scene.points, *base_, models[static_cast<std::size_t>(candidate)],
+          quick_field_poses(quick_points, *base_, models[static_cast<std::size_t>(candidate)],
                             parameters.search, parameters.catalog_rank);
       ASSERT_FALSE(poses.empty()) << seed;
       ASSERT_LE(poses.size(), static_cast<std::size_t>(parameters.catalog_rank.aligned));
@@ -316,8 +317,8 @@ TEST_F(PartPoseSearch, TheSurfaceSampleLiesOverNoBeltAtTheTruePose) {
 TEST_F(PartPoseSearch, QuickFitOfAnEmptySceneHasNoPoses) {
   const RecognitionParameters parameters;
   const PartSearchModel model = build_part_search_model(*base_, 0);
-  EXPECT_TRUE(quick_field_poses(RegistrationPoints{}, *base_, model, parameters.search,
-                                parameters.catalog_rank)
+  EXPECT_TRUE(quick_field_poses(quick_fit_points(RegistrationPoints{}, parameters.catalog_rank),
+                                *base_, model, parameters.search, parameters.catalog_rank)
                   .empty());
 }
 

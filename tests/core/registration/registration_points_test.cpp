@@ -278,6 +278,59 @@ TEST(RegistrationPoints, SelectAndSpreadSubsetsKeepEachPointsValues) {
   EXPECT_EQ(spread_subset(points, 1000).size(), points.size());
 }
 
+// A flat face of 20 x 20 points 1 mm apart and, beyond one of its corners, a small raised
+// feature of 3 points: the quick fits' subset reaches the face's corners and the feature; an
+// even subset of as many points lies on the face alone.
+TEST(RegistrationPoints, FarthestPointSubsetReachesTheEndsAndTheSmallFeatures) {
+  RegistrationPoints points;
+  points.position_mm.resize(3, 403);
+  points.normal.resize(3, 403);
+  points.surface.setZero(kSurfaceCoefficients, 403);
+  points.residual_rms_mm.setZero(403);
+  for (int i = 0; i < 400; ++i) points.position_mm.col(i) << i % 20, i / 20, 0;
+  for (int i = 400; i < 403; ++i) points.position_mm.col(i) << 22 + (i - 400), 21, 5;
+  points.normal.setZero();
+  points.normal.row(2).setOnes();
+
+  const std::vector<int> source = farthest_point_indices(points, 12);
+  ASSERT_EQ(source.size(), 12u);
+  EXPECT_TRUE(std::is_sorted(source.begin(), source.end()));  // grid order
+  EXPECT_EQ(std::adjacent_find(source.begin(), source.end()), source.end());
+  for (const int corner : {0, 399})  // the face's two ends farthest apart
+    EXPECT_NE(std::find(source.begin(), source.end(), corner), source.end()) << corner;
+  EXPECT_NE(std::find_if(source.begin(), source.end(), [](int i) { return i >= 400; }),
+            source.end());
+  const RegistrationPoints subset = select_points(points, source);
+  // No two chosen points closer than the face's spacing times a few: spread over the scene.
+  double closest_mm = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < subset.size(); ++a)
+    for (int b = a + 1; b < subset.size(); ++b)
+      closest_mm =
+          std::min(closest_mm, (subset.position_mm.col(a) - subset.position_mm.col(b)).norm());
+  EXPECT_GE(closest_mm, 4.0);
+  // And every point of the scene lies near one of them.
+  const auto farthest_from_subset_mm = [&](const RegistrationPoints& chosen) {
+    double farthest_mm = 0;
+    for (int i = 0; i < points.size(); ++i) {
+      double nearest_mm = std::numeric_limits<double>::infinity();
+      for (int k = 0; k < chosen.size(); ++k)
+        nearest_mm =
+            std::min(nearest_mm, (points.position_mm.col(i) - chosen.position_mm.col(k)).norm());
+      farthest_mm = std::max(farthest_mm, nearest_mm);
+    }
+    return farthest_mm;
+  };
+  EXPECT_LE(farthest_from_subset_mm(subset), 6.0);
+
+  const RegistrationPoints even = spread_subset(points, 12);
+  EXPECT_EQ((even.position_mm.row(2).array() > 0).count(), 0);
+  EXPECT_GT(farthest_from_subset_mm(even), 7.0);
+  EXPECT_EQ(farthest_point_indices(points, 403).size(), 403u);
+  EXPECT_EQ(farthest_point_indices(points, 1000).size(), 403u);
+  EXPECT_TRUE(farthest_point_indices(points, 0).empty());
+  EXPECT_TRUE(farthest_point_indices(RegistrationPoints{}, 12).empty());
+}
+
 TEST(RegistrationPoints, DarbouxFrameNormalsReplaceThePlaneNormalsWhereValid) {
   const RangeImage image = render_free_form_part(RigidTransform::identity(), FreeFormPartSpec{});
   const DarbouxFrameField frames = fit_local_surfaces(image, SurfaceFitParameters{});
