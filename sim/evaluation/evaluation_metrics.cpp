@@ -84,7 +84,7 @@ EvaluationMetrics compute_metrics(std::span<const EvaluationRecord> records,
   int correct = 0, view_selection_hits = 0, add_s_hits_10pct = 0, add_s_hits_2pct = 0;
   int false_rejects = 0, unknown_rejects = 0, largest_rank = -1, taken_for_size_variant = 0;
   double fraction_db_sum = 0;
-  std::vector<int> cluster_ranks;
+  std::vector<int> cluster_ranks, quick_fit_ranks;
   std::vector<double> translation_errors_mm, recognition_times_ms;
   for (const EvaluationRecord& record : records) {
     RecordOutcome outcome;
@@ -99,6 +99,7 @@ EvaluationMetrics compute_metrics(std::span<const EvaluationRecord> records,
     ++metrics.tests;
     cluster_ranks.push_back(record.true_cluster_rank);
     largest_rank = std::max(largest_rank, record.true_cluster_rank);
+    if (record.quick_fits_ranked) quick_fit_ranks.push_back(record.true_part_quick_fit_rank);
     if (record.true_part_among_selected_views) ++view_selection_hits;
     fraction_db_sum += record.fraction_db_examined;
     if (record.rejected) ++false_rejects;
@@ -132,15 +133,21 @@ EvaluationMetrics compute_metrics(std::span<const EvaluationRecord> records,
   }
 
   const int known = metrics.tests;
-  const auto hit_rate = [&](int clusters) {
-    return fraction(static_cast<int>(std::count_if(
-                        cluster_ranks.begin(), cluster_ranks.end(),
-                        [clusters](int rank) { return rank >= 0 && rank < clusters; })),
-                    known);
+  // The fraction of `ranks` below `first`, over `count` records.
+  const auto ranked_within = [](const std::vector<int>& ranks, int first, int count) {
+    return fraction(
+        static_cast<int>(std::count_if(ranks.begin(), ranks.end(),
+                                       [first](int rank) { return rank >= 0 && rank < first; })),
+        count);
   };
+  const auto hit_rate = [&](int clusters) { return ranked_within(cluster_ranks, clusters, known); };
   metrics.identification_rate = fraction(correct, known);
-  for (std::size_t i = 0; i < kClusterHitRanks.size(); ++i)
+  metrics.quick_fit_tests = static_cast<int>(quick_fit_ranks.size());
+  for (std::size_t i = 0; i < kClusterHitRanks.size(); ++i) {
     metrics.spectral_cluster_hit_rate[i] = hit_rate(kClusterHitRanks[i]);
+    metrics.quick_fit_hit_rate[i] =
+        ranked_within(quick_fit_ranks, kClusterHitRanks[i], metrics.quick_fit_tests);
+  }
   if (known > 0)
     for (int k = 1; k <= std::max(kMinimumCurveClusters, largest_rank + 1); ++k)
       metrics.cluster_hit_rate_curve.push_back(*hit_rate(k));
@@ -162,14 +169,18 @@ EvaluationMetrics compute_metrics(std::span<const EvaluationRecord> records,
 
 nlohmann::json metrics_json(const EvaluationMetrics& metrics) {
   nlohmann::json cluster_hits = nlohmann::json::object();
-  for (std::size_t i = 0; i < kClusterHitRanks.size(); ++i)
-    cluster_hits[std::to_string(kClusterHitRanks[i])] =
-        to_json(metrics.spectral_cluster_hit_rate[i]);
+  nlohmann::json quick_fit_hits = nlohmann::json::object();
+  for (std::size_t i = 0; i < kClusterHitRanks.size(); ++i) {
+    const std::string rank = std::to_string(kClusterHitRanks[i]);
+    cluster_hits[rank] = to_json(metrics.spectral_cluster_hit_rate[i]);
+    quick_fit_hits[rank] = to_json(metrics.quick_fit_hit_rate[i]);
+  }
   return {
       {"tests", metrics.tests},
       {"identification_rate", to_json(metrics.identification_rate)},
       {"spectral_cluster_hit_rate", cluster_hits},
       {"spectral_view_selection_rate", to_json(metrics.spectral_view_selection_rate)},
+      {"quick_fit_order", {{"tests", metrics.quick_fit_tests}, {"hit_rate", quick_fit_hits}}},
       {"fraction_db_examined", to_json(metrics.fraction_db_examined)},
       {"rotation_error_deg", to_json(metrics.rotation_error_deg)},
       {"translation_error_mm", to_json(metrics.translation_error_mm)},

@@ -13,6 +13,11 @@
 //                                  k = 1, 2, 5, 10: the correct-part rate against clusters
 //                                  examined (thesis Fig. 4.8).
 //   spectral_view_selection_rate   fraction of known with true_part_among_selected_views (§5.2).
+//   quick_fit_order.tests          |known records whose search over every part ranked the parts
+//                                  by their quick field fits|.
+//   quick_fit_order.hit_rate.k     fraction of those with 0 <= true_part_quick_fit_rank < k,
+//                                  k = 1, 2, 5, 10: how near the front of that search the
+//                                  scan's own part was.
 //   fraction_db_examined           mean over known of fraction_db_examined.
 //   rotation_error_deg             geodesic angle of R_true^T R_estimated over correct records
 //                                  of parts not flagged symmetric: {median, p95}.
@@ -63,7 +68,12 @@ struct EvaluationRecord {
   // (SpectralViewSelector::rank_clusters), -1 when the part is not in the base.
   int true_cluster_rank = -1;
   bool true_part_among_selected_views = false;  // §5.2 view selection hit
-  double fraction_db_examined = 0;              // views matched / views in the base
+  // Whether the search over every part ranked the parts by their quick field fits
+  // (RecognitionResult::quick_fits), and the true part's rank (0-based) in that order, -1 when
+  // it did not rank them or left the true part out by size.
+  bool quick_fits_ranked = false;
+  int true_part_quick_fit_rank = -1;
+  double fraction_db_examined = 0;  // views matched / views in the base
   // T_scanner_part; identity by default because Eigen leaves fixed matrices uninitialized.
   Eigen::Matrix3d R_true = Eigen::Matrix3d::Identity();
   Eigen::Matrix3d R_estimated = Eigen::Matrix3d::Identity();
@@ -134,6 +144,8 @@ struct EvaluationMetrics {
   // (entry k - 1), for the Fig. 4.8 plot; empty when there are no known records.
   std::vector<double> cluster_hit_rate_curve;
   std::optional<double> spectral_view_selection_rate;
+  int quick_fit_tests = 0;  // known records with quick_fits_ranked
+  std::array<std::optional<double>, kClusterHitRanks.size()> quick_fit_hit_rate;
   std::optional<double> fraction_db_examined;
   Median95 rotation_error_deg, translation_error_mm;
   std::optional<double> add_s_recall_10pct, add_s_recall_2pct;

@@ -294,6 +294,9 @@ nlohmann::json tests_json(std::span<const EvaluationRecord> records,
         {"registration_ms", record.registration_ms},
         {"pose_searched", record.pose_searched},
         {"catalog_searched", record.catalog_searched},
+        {"quick_fit_rank", record.quick_fits_ranked && record.true_part_quick_fit_rank >= 0
+                               ? nlohmann::json(record.true_part_quick_fit_rank)
+                               : nlohmann::json()},
         {"parts_left_out_by_size", record.parts_left_out_by_size},
         {"confusable_parts_searched", record.confusable_parts_searched},
         {"resting_searched", record.resting_searched},

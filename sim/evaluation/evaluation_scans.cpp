@@ -151,6 +151,10 @@ EvaluationRecord run_evaluation_test(const EvaluationTest& test,
     for (const RecognitionCandidate& candidate : result.candidates)
       record.true_part_among_selected_views |=
           !candidate.from_pose_search && candidate.part == part.base_index;
+    record.quick_fits_ranked = !result.quick_fits.empty();
+    for (std::size_t r = 0; r < result.quick_fits.size(); ++r)
+      if (result.quick_fits[r].part == part.base_index)
+        record.true_part_quick_fit_rank = static_cast<int>(r);
   }
   record.fraction_db_examined =
       base.views.empty() ? 0.0 : static_cast<double>(result.views_examined) / base.views.size();

@@ -253,6 +253,30 @@ TEST(EvaluationMetrics, SizeVariantsToldApartCountsOnlyConfusionsWithinAFamily) 
   EXPECT_DOUBLE_EQ(*metrics.identification_rate, 3.0 / 6);
 }
 
+// Only the records whose search ranked the parts by quick fit count; a true part it left out
+// by size (rank -1) is a miss.
+TEST(EvaluationMetrics, QuickFitHitRatesCountOnlyScansWhoseSearchRankedTheParts) {
+  std::vector<EvaluationRecord> records = {
+      known_record(0, 0, 0, 1), known_record(1, 1, 0, 1), known_record(2, -1, 0, 1),
+      known_record(3, 3, 0, 1), known_record(4, 4, 0, 1), unknown_record(5, -1, 1),
+  };
+  const int ranks[] = {0, 1, 7, -1};
+  for (std::size_t i = 0; i < 4; ++i) {
+    records[i].quick_fits_ranked = true;
+    records[i].true_part_quick_fit_rank = ranks[i];
+  }
+  records[5].quick_fits_ranked = true;  // an unknown part has no rank to count
+  const EvaluationMetrics metrics = metrics_of(records);
+  EXPECT_EQ(metrics.quick_fit_tests, 4);
+  EXPECT_DOUBLE_EQ(*metrics.quick_fit_hit_rate[0], 1.0 / 4);  // first
+  EXPECT_DOUBLE_EQ(*metrics.quick_fit_hit_rate[1], 2.0 / 4);  // among the first 2
+  EXPECT_DOUBLE_EQ(*metrics.quick_fit_hit_rate[2], 2.0 / 4);  // 5
+  EXPECT_DOUBLE_EQ(*metrics.quick_fit_hit_rate[3], 3.0 / 4);  // 10
+  const nlohmann::json json = metrics_json(metrics)["quick_fit_order"];
+  EXPECT_EQ(json["tests"], 4);
+  EXPECT_EQ(json["hit_rate"]["10"], 0.75);
+}
+
 std::set<std::string> keys_of(const nlohmann::json& json) {
   std::set<std::string> keys;
   for (const auto& item : json.items()) keys.insert(item.key());
@@ -261,17 +285,22 @@ std::set<std::string> keys_of(const nlohmann::json& json) {
 
 TEST(MetricsJson, HasExactlyTheStableKeys) {
   const nlohmann::json json = metrics_json(metrics_of({known_record(0, 0, 0, 5)}));
-  EXPECT_EQ(keys_of(json),
-            (std::set<std::string>{"tests", "identification_rate", "spectral_cluster_hit_rate",
-                                   "spectral_view_selection_rate", "fraction_db_examined",
-                                   "rotation_error_deg", "translation_error_mm",
-                                   "add_s_recall_10pct", "add_s_recall_2pct", "unknown_reject_rate",
-                                   "false_reject_rate", "recognition_ms", "size_variants"}));
+  EXPECT_EQ(keys_of(json), (std::set<std::string>{
+                               "tests", "identification_rate", "spectral_cluster_hit_rate",
+                               "spectral_view_selection_rate", "quick_fit_order",
+                               "fraction_db_examined", "rotation_error_deg", "translation_error_mm",
+                               "add_s_recall_10pct", "add_s_recall_2pct", "unknown_reject_rate",
+                               "false_reject_rate", "recognition_ms", "size_variants"}));
   EXPECT_EQ(keys_of(json["size_variants"]), (std::set<std::string>{"tests", "told_apart_rate"}));
   EXPECT_EQ(json["size_variants"]["tests"], 0);
   EXPECT_TRUE(json["size_variants"]["told_apart_rate"].is_null());
   EXPECT_EQ(keys_of(json["spectral_cluster_hit_rate"]),
             (std::set<std::string>{"1", "2", "5", "10"}));
+  EXPECT_EQ(keys_of(json["quick_fit_order"]), (std::set<std::string>{"tests", "hit_rate"}));
+  EXPECT_EQ(keys_of(json["quick_fit_order"]["hit_rate"]),
+            (std::set<std::string>{"1", "2", "5", "10"}));
+  EXPECT_EQ(json["quick_fit_order"]["tests"], 0);
+  EXPECT_TRUE(json["quick_fit_order"]["hit_rate"]["1"].is_null());
   EXPECT_EQ(keys_of(json["rotation_error_deg"]), (std::set<std::string>{"median", "p95"}));
   EXPECT_EQ(keys_of(json["translation_error_mm"]), (std::set<std::string>{"median", "p95"}));
   EXPECT_EQ(keys_of(json["recognition_ms"]), (std::set<std::string>{"median", "p99"}));
