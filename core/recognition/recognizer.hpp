@@ -260,11 +260,13 @@ class Recognizer {
   // sunk into it is not the part lying there; known to rest (resting.parts_rest): nor is one
   // tilted off every resting pose of its part.
   bool at_rest(const RecognitionCandidate& candidate) const;
-  // The same for the field stages' poses, before any is registered: those whose lowest point
-  // is farther than resting.field_height_error_mm from the belt are dropped.
+  // The same for the field stages' poses, before any is registered: a pose whose lowest point
+  // is farther than resting.field_height_error_mm from the belt floats (or sinks into it).
+  bool floats(int part, const FieldHypothesis& hypothesis) const;
+  // A pose that places more than max_fraction_over_belt of the part over the belt the scene's
+  // image measured (free_space.hpp) stands over it.
+  bool stands_over_belt(int part, const RangeImage& scene, const FieldHypothesis& hypothesis) const;
   void drop_floating_poses(int part, std::vector<FieldHypothesis>& field_poses) const;
-  // And those that place more than max_fraction_over_belt of the part over the belt the
-  // scene's image measured (free_space.hpp).
   void drop_poses_over_belt(int part, const RangeImage& scene,
                             std::vector<FieldHypothesis>& field_poses) const;
   RestingCheck check_resting(const RecognitionCandidate& candidate) const;

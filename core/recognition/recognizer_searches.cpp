@@ -239,35 +239,45 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
 }
 
 QuickFieldFit Recognizer::quick_fit(int part, const ScenePoints& scene_points) const {
-  std::vector<FieldHypothesis> quick =
+  const std::vector<FieldHypothesis> quick =
       quick_field_poses(scene_points.quick, model_base_, part_search_model(part),
                         parameters_.search, parameters_.catalog_rank);
-  const double unconstrained_fit_mm2 = quick.empty() ? std::numeric_limits<double>::infinity()
-                                                     : quick.front().truncated_mean_square_mm2;
-  drop_floating_poses(part, quick);
-  drop_poses_over_belt(part, scene_points.image, quick);
-  if (quick.empty())
-    return {part, parameters_.catalog_rank.floating_fit_factor * unconstrained_fit_mm2, false};
-  return {part, quick.front().truncated_mean_square_mm2, true};
+  if (quick.empty()) return {part, std::numeric_limits<double>::infinity(), false};
+  // Only the best pose that lies on the belt ranks the part: the poses are best first, and
+  // those after it need no test.
+  for (const FieldHypothesis& hypothesis : quick)
+    if (!floats(part, hypothesis) && !stands_over_belt(part, scene_points.image, hypothesis))
+      return {part, hypothesis.truncated_mean_square_mm2, true};
+  return {part,
+          parameters_.catalog_rank.floating_fit_factor * quick.front().truncated_mean_square_mm2,
+          false};
+}
+
+bool Recognizer::floats(int part, const FieldHypothesis& hypothesis) const {
+  const RestingSearchParameters& resting = parameters_.resting;
+  if (!resting.parts_touch_belt && !resting.parts_rest) return false;
+  const ModelPart& model_part = model_base_.parts[static_cast<std::size_t>(part)];
+  return std::abs(
+             cosmos::check_resting(model_part, hypothesis.T_part_scene, resting).lowest_point_mm) >
+         resting.field_height_error_mm;
+}
+
+bool Recognizer::stands_over_belt(int part, const RangeImage& scene,
+                                  const FieldHypothesis& hypothesis) const {
+  if (parameters_.max_fraction_over_belt >= 1) return false;
+  return fraction_over_belt(scene, part_search_model(part).surface_sample_mm,
+                            hypothesis.T_part_scene) > parameters_.max_fraction_over_belt;
 }
 
 void Recognizer::drop_floating_poses(int part, std::vector<FieldHypothesis>& field_poses) const {
-  const RestingSearchParameters& resting = parameters_.resting;
-  if (!resting.parts_touch_belt && !resting.parts_rest) return;
-  const ModelPart& model_part = model_base_.parts[static_cast<std::size_t>(part)];
-  std::erase_if(field_poses, [&](const FieldHypothesis& hypothesis) {
-    return std::abs(cosmos::check_resting(model_part, hypothesis.T_part_scene, resting)
-                        .lowest_point_mm) > resting.field_height_error_mm;
-  });
+  std::erase_if(field_poses,
+                [&](const FieldHypothesis& hypothesis) { return floats(part, hypothesis); });
 }
 
 void Recognizer::drop_poses_over_belt(int part, const RangeImage& scene,
                                       std::vector<FieldHypothesis>& field_poses) const {
-  if (parameters_.max_fraction_over_belt >= 1) return;
-  const Eigen::Matrix3Xd& sample = part_search_model(part).surface_sample_mm;
   std::erase_if(field_poses, [&](const FieldHypothesis& hypothesis) {
-    return fraction_over_belt(scene, sample, hypothesis.T_part_scene) >
-           parameters_.max_fraction_over_belt;
+    return stands_over_belt(part, scene, hypothesis);
   });
 }
 
