@@ -115,9 +115,11 @@ Offset<fb::View> encode_view(FlatBufferBuilder& b, const ModelBaseView& view,
   const fb::Vec3 direction = vec3(view.direction_part);
   const fb::Transform T_scanner_part = transform(view.T_scanner_part);
   const fb::Vec3 centroid = vec3(view.control_point_centroid_mm);
+  const fb::ViewExtent extent(view.extent.highest_mm, view.extent.widest_mm,
+                              view.extent.narrowest_mm);
   return fb::CreateView(b, view.part_index, view.view_index, &direction, &T_scanner_part,
                         patch_vector, gauss_vector, view.cosmos.visible_area_mm2, moments,
-                        registration, &centroid);
+                        registration, &centroid, &extent);
 }
 
 }  // namespace
@@ -395,6 +397,8 @@ std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::s
       view_out.direction_part = vec3(view.direction_part());
       view_out.T_scanner_part = transform(view.t_scanner_part());
       view_out.control_point_centroid_mm = vec3(view.control_point_centroid_mm());
+      if (const fb::ViewExtent* extent = view.extent())
+        view_out.extent = {extent->highest_mm(), extent->widest_mm(), extent->narrowest_mm()};
       view_out.cosmos = decode_cosmos(view);
       if (auto error = decode_moments(view.moments(), view_out.moments, view_label(v)))
         return error;

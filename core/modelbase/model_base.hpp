@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/modelbase/view_extent.hpp"
 #include "core/registration/packed_registration_points.hpp"
 #include "core/registration/part_surface_voxels.hpp"
 #include "core/registration/registration_points.hpp"
@@ -69,6 +70,9 @@ struct ModelBaseView {
   // The mean of its control points, in the view's frame (zero without any): where the pose
   // search puts a scene's centroid (part_surface_summary.hpp computes it).
   Eigen::Vector3d control_point_centroid_mm = Eigen::Vector3d::Zero();
+  // How tall and wide the part is seen from near this view, for the views the pose search
+  // starts from (view_extent.hpp); unbounded for the others.
+  ViewExtent extent;
 
   int control_point_count() const {
     return registration.size() > 0 ? registration.size() : registration_packed.size();
@@ -93,8 +97,10 @@ struct ModelBase {
   // readers refuse or rebuild what an older build wrote. 2: registration streams
   // (docs/architecture.md), and no patch without pixels. 3: the parts' resting poses and hulls.
   // 4: the parts' surface voxels and samples, the views' control-point centroids. 5: the parts'
-  // confusable parts. 6: those listed by quick fits scored on farthest-point subsets.
-  static constexpr std::uint32_t kFormatVersion = 6;
+  // confusable parts. 6: those listed by quick fits scored on farthest-point subsets. 7: the
+  // start views' extents, and the confusable parts listed by quick fits that start from the
+  // views the probe's extent allows.
+  static constexpr std::uint32_t kFormatVersion = 7;
   std::string catalog_hash;     // content hash of the catalog and its meshes
   std::string parameters_text;  // every COSMOS/scanner/grouping parameter, canonical text
   std::vector<ModelPart> parts;

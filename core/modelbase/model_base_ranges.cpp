@@ -186,6 +186,13 @@ std::optional<std::string> model_base_out_of_range(const ModelBase& base,
     check_moments(check, where, view.moments);
     check_registration(check, where, view.registration_packed);
     check.coordinates(where, "control_point_centroid_mm", view.control_point_centroid_mm);
+    const auto length_or_unbounded = [&](const std::string& name, double value_mm) {
+      if (!std::isinf(value_mm))
+        check.between(where, name, value_mm, 0, check.ranges().max_coordinate_mm);
+    };
+    length_or_unbounded("extent.highest_mm", view.extent.highest_mm);
+    length_or_unbounded("extent.widest_mm", view.extent.widest_mm);
+    length_or_unbounded("extent.narrowest_mm", view.extent.narrowest_mm);
   }
   for (std::size_t c = 0; c < base.clusters.size() && !check.failed(); ++c)
     check_moments(check, "cluster " + std::to_string(c), base.clusters[c].centroid);

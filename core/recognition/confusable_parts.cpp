@@ -36,6 +36,8 @@ std::vector<std::vector<int>> find_confusable_parts(const ModelBase& base,
     // The view is one part seen whole, not on the belt: only the extent bound holds.
     const SceneExtent extent = scene_extent(points, no_image);
     const QuickFitPoints quick_points = quick_fit_points(points, parameters.quick_fit);
+    const ViewSizeGate views =
+        view_size_gate(extent, SceneParts::kOne, false, parameters.size_gate);
     for (int part = 0; part < part_count; ++part) {
       if (part == view.part_index ||
           judge_part_size(extents[static_cast<std::size_t>(part)], extent, SceneParts::kOne, false,
@@ -43,7 +45,7 @@ std::vector<std::vector<int>> find_confusable_parts(const ModelBase& base,
         continue;
       const std::vector<FieldHypothesis> fits =
           quick_field_poses(quick_points, base, models[static_cast<std::size_t>(part)],
-                            parameters.search, parameters.quick_fit);
+                            parameters.search, parameters.quick_fit, views);
       if (!fits.empty() && fits.front().truncated_mean_square_mm2 <= parameters.close_fit_mm2)
         explaining[static_cast<std::size_t>(probe)].push_back(part);
     }

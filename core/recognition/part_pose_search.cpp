@@ -79,15 +79,16 @@ void run_field_stages(const PartDistanceField& field, const BeltContact& belt, d
   }
 }
 
-// Turns about the viewing axis of every start view, the scene's centroid on the view's: as
-// part-frame poses.
+// Turns about the viewing axis of every start view the scene's extent fits, the scene's
+// centroid on the view's: as part-frame poses.
 std::vector<FieldHypothesis> turned_view_starts(const RegistrationPoints& scoring,
                                                 const ModelBase& base, const PartSearchModel& model,
-                                                int turns) {
+                                                int turns, const ViewSizeGate& gate) {
   const Eigen::Vector3d scene_centre = scoring.position_mm.rowwise().mean();
   std::vector<FieldHypothesis> starts;
   for (const std::size_t s : model.start_views) {
     const ModelBaseView& view = base.views[static_cast<std::size_t>(model.views[s])];
+    if (!gate.fits(view.extent)) continue;
     const Eigen::Vector3d& model_centre = model.view_centroid_mm[s];
     const RigidTransform T_part_view = view.T_scanner_part.inverse();
     for (int k = 0; k < turns; ++k)
@@ -173,7 +174,7 @@ std::vector<FieldHypothesis> rank_field_starts(const RegistrationPoints& scene,
                                                const PartPoseSearchParameters& parameters,
                                                const TaskRunner& tasks) {
   const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
-  if (scoring.size() == 0 || model.field.empty()) return {};
+  if (scoring.size() == 0 || model.field.empty() || starts.empty()) return {};
   // The first stages on a sparser subset still: most starts are far off, and which few
   // hundred are not shows on fewer points.
   const RegistrationPoints sparse = spread_subset(scoring, parameters.start_scoring_points);
@@ -192,12 +193,13 @@ std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& sce
                                                    const ModelBase& base,
                                                    const PartSearchModel& model,
                                                    const PartPoseSearchParameters& parameters,
-                                                   const TaskRunner& tasks) {
+                                                   const TaskRunner& tasks,
+                                                   const ViewSizeGate& views) {
   const RegistrationPoints scoring = spread_subset(scene, parameters.scoring_points);
   if (scoring.size() == 0 || model.field.empty()) return {};
-  return rank_field_starts(scene, model,
-                           turned_view_starts(scoring, base, model, parameters.in_plane_turns),
-                           parameters, tasks);
+  return rank_field_starts(
+      scene, model, turned_view_starts(scoring, base, model, parameters.in_plane_turns, views),
+      parameters, tasks);
 }
 
 std::vector<ViewPoseHypothesis> register_field_hypotheses(
@@ -310,10 +312,12 @@ QuickFitPoints quick_fit_points(const RegistrationPoints& scene,
 std::vector<FieldHypothesis> quick_field_poses(const QuickFitPoints& scene, const ModelBase& base,
                                                const PartSearchModel& model,
                                                const PartPoseSearchParameters& search,
-                                               const CatalogRankParameters& parameters) {
+                                               const CatalogRankParameters& parameters,
+                                               const ViewSizeGate& views) {
   if (scene.aligning.size() == 0 || model.field.empty()) return {};
   std::vector<FieldHypothesis> starts =
-      turned_view_starts(scene.aligning, base, model, search.in_plane_turns);
+      turned_view_starts(scene.aligning, base, model, search.in_plane_turns, views);
+  if (starts.empty()) return {};
   run_field_stages(model.field, model.belt, search.field_truncation_mm,
                    {{scene.scoring, 0, static_cast<std::size_t>(parameters.aligned)},
                     {scene.aligning, parameters.iterations, kKeepAll}},

@@ -17,6 +17,7 @@
 #include "core/modelbase/model_base.hpp"
 #include "core/modelbase/model_surface.hpp"
 #include "core/parameter_visitor.hpp"
+#include "core/recognition/part_size_gate.hpp"
 #include "core/registration/part_distance_field.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/registration/view_registration.hpp"
@@ -132,16 +133,16 @@ std::vector<FieldHypothesis> rank_field_starts(const RegistrationPoints& scene,
                                                const PartPoseSearchParameters& parameters,
                                                const TaskRunner& tasks = one_after_another());
 
-// The search's field stages alone, from every start view's turns: at most
-// parameters.refined_hypotheses poses, best first. Their best score already tells the scene's part
-// from the others (on the 25-part cell catalog: 0.02-0.07 mm^2 against 2-47 mm^2), at half the cost
-// of the whole search. Each stage's hypotheses are aligned and scored in shares on `tasks`;
-// the poses are the same for any runner.
+// The search's field stages alone, from the turns of every start view `views` fits (all by
+// default): at most parameters.refined_hypotheses poses, best first. Their best score already
+// tells the scene's part from the others, at half the cost of the whole search. Each stage's
+// hypotheses are aligned and scored in shares on `tasks`; the poses are the same for any runner.
 std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& scene,
                                                    const ModelBase& base,
                                                    const PartSearchModel& model,
                                                    const PartPoseSearchParameters& parameters,
-                                                   const TaskRunner& tasks = one_after_another());
+                                                   const TaskRunner& tasks = one_after_another(),
+                                                   const ViewSizeGate& views = {});
 
 // How well the part can fit the scene, at a small fraction of the field stages' cost: every
 // start view's turns scored on start_points scene points, the best `aligned` of them aligned
@@ -196,7 +197,8 @@ QuickFitPoints quick_fit_points(const RegistrationPoints& scene,
 std::vector<FieldHypothesis> quick_field_poses(const QuickFitPoints& scene, const ModelBase& base,
                                                const PartSearchModel& model,
                                                const PartPoseSearchParameters& search,
-                                               const CatalogRankParameters& parameters);
+                                               const CatalogRankParameters& parameters,
+                                               const ViewSizeGate& views = {});
 
 // The search's second half: those poses moved onto the part's views nearest to them,
 // registered there and ranked by that view's fit. The registrations run in shares on `tasks`

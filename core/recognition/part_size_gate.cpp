@@ -93,6 +93,15 @@ SceneExtent scene_extent(const RegistrationPoints& points, const RangeImage& ima
   for (int k = 0; k < kDirections && positions.cols() > 0; ++k)
     extent.width_mm = std::max(
         extent.width_mm, width_along(positions.colwise(), hemisphere_direction(k, kDirections)));
+  // Across the viewing direction: along directions in the belt's plane, half a circle.
+  constexpr int kAcrossDirections = 36;
+  for (int k = 0; k < kAcrossDirections && positions.cols() > 0; ++k) {
+    const double angle = M_PI * k / kAcrossDirections;
+    const double width =
+        width_along(positions.colwise(), Eigen::Vector3d(std::cos(angle), std::sin(angle), 0));
+    extent.widest_across_mm = std::max(extent.widest_across_mm, width);
+    extent.narrowest_across_mm = k == 0 ? width : std::min(extent.narrowest_across_mm, width);
+  }
   for (int row = 0; row < image.height(); ++row)
     for (int column = 0; column < image.width(); ++column)
       if (image.has_data(column, row))
@@ -109,6 +118,24 @@ SizeVerdict judge_part_size(const PartExtent& part, const SceneExtent& scene, Sc
   if (parts_touch_belt && part.thinnest_width_mm > scene.top_mm + parameters.height_tolerance_mm)
     return SizeVerdict::kThickerThanScene;
   return SizeVerdict::kFits;
+}
+
+bool ViewSizeGate::fits(const ViewExtent& view) const {
+  if (!enabled) return true;
+  if (bounds_height && view.highest_mm + height_tolerance_mm < scene.top_mm) return false;
+  return view.widest_mm + width_tolerance_mm >= scene.widest_across_mm &&
+         view.narrowest_mm + width_tolerance_mm >= scene.narrowest_across_mm;
+}
+
+ViewSizeGate view_size_gate(const SceneExtent& scene, SceneParts parts, bool parts_touch_belt,
+                            const PartSizeGateParameters& parameters) {
+  ViewSizeGate gate;
+  gate.enabled = parameters.enabled && parameters.views && parts == SceneParts::kOne;
+  gate.scene = scene;
+  gate.bounds_height = parts_touch_belt;
+  gate.height_tolerance_mm = parameters.view_height_tolerance_mm;
+  gate.width_tolerance_mm = parameters.extent_tolerance_mm;
+  return gate;
 }
 
 }  // namespace cosmos

@@ -224,6 +224,8 @@ class Recognizer {
     QuickFitPoints quick;  // what every part's quick fit runs on
     const RangeImage& image;
     SceneParts parts = SceneParts::kOne;
+    SceneExtent extent;  // what the size gates compare with the parts' (part_size_gate.hpp)
+    ViewSizeGate views;  // the start views the pose searches may start from
   };
   // The candidate reaches sufficient_support, at rest, with sufficient_seen_fraction of its
   // view seen (min_seen_fraction for a part with other sizes): no other part is likely to

@@ -26,16 +26,16 @@ std::vector<int> Recognizer::confusable_parts_unsearched(
   const std::vector<int>& listed =
       model_base_.parts[static_cast<std::size_t>(part)].confusable_parts;
   if (listed.empty()) return {};
-  const SceneExtent extent = scene_extent(points.all, points.image);
   struct Listed {
     int part;
     double quick_fit_mm2;
   };
   std::vector<Listed> kept;
   for (int other : listed) {
-    if (searched(other) || judge_part_size(part_extents_[static_cast<std::size_t>(other)], extent,
-                                           points.parts, parameters_.resting.parts_touch_belt,
-                                           parameters_.size_gate) != SizeVerdict::kFits)
+    if (searched(other) ||
+        judge_part_size(part_extents_[static_cast<std::size_t>(other)], points.extent, points.parts,
+                        parameters_.resting.parts_touch_belt,
+                        parameters_.size_gate) != SizeVerdict::kFits)
       continue;
     const auto quick =
         std::find_if(result.quick_fits.begin(), result.quick_fits.end(),

@@ -87,11 +87,10 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
   // (part_size_gate.hpp): in a large catalog many of them, before any is fitted.
   if (only_parts.empty()) {
     result.parts_smaller_than_scene = result.parts_thicker_than_scene = 0;
-    const SceneExtent extent = scene_extent(scene_points.all, scene_points.image);
     std::erase_if(parts, [&](int part) {
-      const SizeVerdict verdict =
-          judge_part_size(part_extents_[static_cast<std::size_t>(part)], extent, scene_points.parts,
-                          parameters_.resting.parts_touch_belt, parameters_.size_gate);
+      const SizeVerdict verdict = judge_part_size(
+          part_extents_[static_cast<std::size_t>(part)], scene_points.extent, scene_points.parts,
+          parameters_.resting.parts_touch_belt, parameters_.size_gate);
       result.parts_smaller_than_scene += verdict == SizeVerdict::kSmallerThanScene ? 1 : 0;
       result.parts_thicker_than_scene += verdict == SizeVerdict::kThickerThanScene ? 1 : 0;
       return verdict != SizeVerdict::kFits;
@@ -196,7 +195,7 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
             ? resting_pose_hypotheses(scene_points.all, model_base_, part, part_search_model(part),
                                       parameters_.search, parameters_.resting)
             : field_pose_hypotheses(scene_points.all, model_base_, part_search_model(part),
-                                    parameters_.search, tasks_);
+                                    parameters_.search, tasks_, scene_points.views);
     if (!resting_poses) {
       drop_floating_poses(part, field_poses);
       drop_poses_over_belt(part, scene_points.image, field_poses);
@@ -241,7 +240,7 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
 QuickFieldFit Recognizer::quick_fit(int part, const ScenePoints& scene_points) const {
   const std::vector<FieldHypothesis> quick =
       quick_field_poses(scene_points.quick, model_base_, part_search_model(part),
-                        parameters_.search, parameters_.catalog_rank);
+                        parameters_.search, parameters_.catalog_rank, scene_points.views);
   if (quick.empty()) return {part, std::numeric_limits<double>::infinity(), false};
   // Only the best pose that lies on the belt ranks the part: the poses are best first, and
   // those after it need no test.

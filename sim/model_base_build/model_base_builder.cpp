@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "core/modelbase/part_surface_summary.hpp"
+#include "core/modelbase/view_extent.hpp"
 #include "core/recognition/confusable_parts.hpp"
 #include "core/representation/cosmos_pipeline.hpp"
 #include "core/task_runner.hpp"
@@ -248,9 +249,11 @@ ModelBase build_model_base(const PartCatalog& catalog, const ScannerParameters& 
                            "' (non-finite moments?)");
   base.clusters = std::move(grouping.clusters);
   const BuildThreads tasks(threads);
-  // Each part's summary reads and writes only that part and its views.
-  tasks.run(static_cast<int>(base.parts.size()),
-            [&](int part) { summarize_part_surface(base, part, settings.field); });
+  // Each part's summaries read and write only that part and its views.
+  tasks.run(static_cast<int>(base.parts.size()), [&](int part) {
+    summarize_part_surface(base, part, settings.field);
+    summarize_view_extents(base, part);
+  });
   list_confusable_parts(base, settings.confusion, tasks);
   return base;
 }

@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -55,6 +57,7 @@ ModelBase small_base() {
     view.cosmos = testing::hand_made_view_analysis().view;
     for (std::size_t m = 0; m < view.moments.size(); ++m) view.moments[m] = 0.1 * k + 1e-3 * m;
     view.registration = registration_points(0.1 * k);
+    if (k > 0) view.extent = {30.5 + k, 95.25, 60.125};
     base.views.push_back(std::move(view));
   }
   base.clusters = {{0, {0, 1}, {}}, {1, {2}, {}}};
@@ -126,6 +129,11 @@ TEST(ModelBasePayload, DecodesWhatWasEncoded) {
   EXPECT_EQ(view.T_scanner_part.rotation, written.T_scanner_part.rotation);
   EXPECT_EQ(view.T_scanner_part.translation_mm, written.T_scanner_part.translation_mm);
   EXPECT_EQ(view.moments, written.moments);
+  EXPECT_EQ(view.extent.highest_mm, 32.5);
+  EXPECT_EQ(view.extent.widest_mm, 95.25);
+  EXPECT_EQ(view.extent.narrowest_mm, 60.125);
+  EXPECT_TRUE(std::isinf(read.views[0].extent.highest_mm));  // unbounded, kept so
+  EXPECT_TRUE(std::isinf(read.views[0].extent.narrowest_mm));
   ASSERT_EQ(view.cosmos.patches.size(), 4u);
   EXPECT_EQ(view.cosmos.patches[1].mean_normal, written.cosmos.patches[1].mean_normal);
   ASSERT_EQ(view.cosmos.patches[1].neighbors.size(), 3u);
@@ -251,6 +259,12 @@ TEST(ModelBasePayload, SurfaceVoxelsThatDoNotCoverTheirGridAreRefusedNamingThePa
       << a_grid_too_large;
   EXPECT_EQ(refusal_after([](ModelBase& b) { b.parts[0].surface_sample_mm[3].y() = 1e300; }),
             "part 0: surface sample point 3.y is 1e+300, expected within +-10000");
+  EXPECT_EQ(refusal_after([](ModelBase& b) { b.views[1].extent.widest_mm = -4; }),
+            "view 1: extent.widest_mm is -4, expected in [0, 10000]");
+  EXPECT_EQ(refusal_after([](ModelBase& b) {
+              b.views[2].extent.highest_mm = std::numeric_limits<double>::quiet_NaN();
+            }),
+            "view 2: extent.highest_mm is nan, expected in [0, 10000]");
 }
 
 TEST(ModelBasePayload, BytesThatAreNotAPayloadAreRefused) {

@@ -1,6 +1,7 @@
 // The size gate (part_size_gate.hpp): a part's thinnest width from its hull, in any
 // orientation and where the narrowest direction meets no face; the scene's width and top as
-// bounds; and which parts the verdict leaves out, and when it leaves none.
+// bounds; which parts the verdict leaves out, and when it leaves none; and which views the
+// views' bound leaves out.
 #include "core/recognition/part_size_gate.hpp"
 
 #include <gtest/gtest.h>
@@ -86,9 +87,46 @@ TEST(PartSizeGate, TheSceneWidthIsABoundOnItsPointsAndTheTopItsHighestPixel) {
   EXPECT_GE(extent.width_mm, 0.98 * diameter_mm);
   EXPECT_FLOAT_EQ(static_cast<float>(extent.top_mm), 31.0f);
 
+  // Across the viewing direction: the points' widest width in the belt's plane is their
+  // (100,0) to (0,40) span, their narrowest between (0,0) and the line from (100,0) to (0,40).
+  EXPECT_LE(extent.widest_across_mm, diameter_mm + 1e-9);
+  EXPECT_GE(extent.widest_across_mm, 0.98 * diameter_mm);
+  const double narrowest_mm = 100.0 * 40 / diameter_mm;
+  EXPECT_GE(extent.narrowest_across_mm, narrowest_mm - 1e-9);
+  EXPECT_LE(extent.narrowest_across_mm, 1.02 * narrowest_mm);
+
   const SceneExtent empty = scene_extent(RegistrationPoints{}, RangeImage{});
   EXPECT_EQ(empty.width_mm, 0);
   EXPECT_EQ(empty.top_mm, 0);
+  EXPECT_EQ(empty.widest_across_mm, 0);
+  EXPECT_EQ(empty.narrowest_across_mm, 0);
+}
+
+TEST(PartSizeGate, ViewsTooShortOrTooNarrowForTheSceneAreLeftOutWithinTheirTolerances) {
+  PartSizeGateParameters parameters;
+  parameters.extent_tolerance_mm = 3;
+  parameters.view_height_tolerance_mm = 1.5;
+  SceneExtent scene;
+  scene.top_mm = 40;
+  scene.widest_across_mm = 90;
+  scene.narrowest_across_mm = 50;
+  const ViewSizeGate gate = view_size_gate(scene, SceneParts::kOne, true, parameters);
+  EXPECT_TRUE(gate.fits({45, 100, 60}));
+  EXPECT_TRUE(gate.fits({38.6, 87.1, 47.1}));  // all three within their tolerances
+  EXPECT_FALSE(gate.fits({38.4, 100, 60}));    // stands lower than the scene's top
+  EXPECT_FALSE(gate.fits({45, 86.9, 60}));     // narrower than the scene's widest width
+  EXPECT_FALSE(gate.fits({45, 100, 46.9}));    // narrower than its narrowest
+  EXPECT_TRUE(gate.fits(ViewExtent{}));        // unbounded
+  // A part that need not lie on the belt may stand lower than the scene's top.
+  EXPECT_TRUE(view_size_gate(scene, SceneParts::kOne, false, parameters).fits({20, 100, 60}));
+  EXPECT_FALSE(view_size_gate(scene, SceneParts::kOne, false, parameters).fits({20, 80, 60}));
+  // Several touching parts bound no one part's widths or height.
+  EXPECT_TRUE(view_size_gate(scene, SceneParts::kOneOrMore, true, parameters).fits({20, 30, 10}));
+  parameters.views = false;
+  EXPECT_TRUE(view_size_gate(scene, SceneParts::kOne, true, parameters).fits({20, 30, 10}));
+  parameters.views = true;
+  parameters.enabled = false;
+  EXPECT_TRUE(view_size_gate(scene, SceneParts::kOne, true, parameters).fits({20, 30, 10}));
 }
 
 TEST(PartSizeGate, PartsTooSmallOrTooThickAreLeftOutWithinTheirTolerances) {
