@@ -1,10 +1,10 @@
 #pragma once
 // How tall a part stands on the belt and how wide it spans across it when the scanner sees it
 // from near one of its views' directions. The extent of an object belongs to its description
-// beside its shape (§3.1.1: "how big it is"); the part size gate (part_size_gate.hpp) uses it
-// per part, whatever the part's pose, and the pose search's starts per view: a scene 40 mm tall
-// and 90 mm across is not seen from a direction along which its part stands 25 mm tall or spans
-// 60 mm at most, and the starts from such views cannot reach its pose.
+// beside its shape (§3.1.1: "how big it is"); the part size gate (part_size_gate.hpp) bounds a
+// part's extent whatever its pose, and with these figures the pose search's starts per view: a
+// scene 40 mm tall and 90 mm across is not seen from a direction along which its part stands
+// 25 mm tall or spans 60 mm at most, and the starts from such views cannot reach its pose.
 //
 // A start of the pose search is a view's direction; the scene's own may lie anywhere within the
 // start views' spacing of it (its cell). So each figure is taken over every direction of the

@@ -144,10 +144,10 @@ std::vector<FieldHypothesis> field_pose_hypotheses(const RegistrationPoints& sce
                                                    const TaskRunner& tasks = one_after_another(),
                                                    const ViewSizeGate& views = {});
 
-// How well the part can fit the scene, at a small fraction of the field stages' cost: every
-// start view's turns scored on start_points scene points, the best `aligned` of them aligned
-// `iterations` steps on about aligned_points evenly spread ones and those, the best score. The
-// scoring points are a farthest-point subset (farthest_point_indices): the scene's ends and
+// How well the part can fit the scene, at a small fraction of the field stages' cost: the turns
+// of every start view `views` fits scored on start_points scene points, the best `aligned` of them
+// aligned `iterations` steps on about aligned_points evenly spread ones and those, the best score.
+// The scoring points are a farthest-point subset (farthest_point_indices): the scene's ends and
 // small features decide between the starts, which an even subset of a scene that is mostly
 // one flat face cannot; the even ones hold the alignment to the whole surface. It orders the search
 // over every part: the scene's own part comes first in nearly every scan, where the spectra put it
