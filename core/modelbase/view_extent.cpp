@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/modelbase/model_base.hpp"
+#include "core/modelbase/point_set_widths.hpp"
 
 namespace cosmos {
 namespace {
@@ -17,41 +18,12 @@ constexpr int kAcrossTurns = 36;
 // Directions spread over the sphere to measure how far the farthest lies from the views.
 constexpr int kCoverageSamples = 20000;
 
-double width_along(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& direction) {
-  double low = std::numeric_limits<double>::infinity();
-  double high = -low;
-  for (const Eigen::Vector3d& point : points) {
-    const double along = direction.dot(point);
-    low = std::min(low, along);
-    high = std::max(high, along);
-  }
-  return high - low;
-}
-
-// Direction k of n spread evenly over the sphere (a Fibonacci spiral).
-Eigen::Vector3d sphere_direction(int k, int n) {
-  const double z = 1.0 - 2.0 * (k + 0.5) / n;
-  const double radius = std::sqrt(std::max(0.0, 1.0 - z * z));
-  constexpr double kGoldenAngle = 2.399963229728653;
-  const double phi = kGoldenAngle * k;
-  return {radius * std::cos(phi), radius * std::sin(phi), z};
-}
-
 void widen_by_direction(const std::vector<Eigen::Vector3d>& hull, const Eigen::Vector3d& direction,
                         ViewExtent& extent) {
-  const Eigen::Vector3d across = direction.unitOrthogonal();
-  const Eigen::Vector3d across_too = direction.cross(across);
-  double widest = 0;
-  double narrowest = std::numeric_limits<double>::infinity();
-  for (int turn = 0; turn < kAcrossTurns; ++turn) {
-    const double angle = M_PI * turn / kAcrossTurns;
-    const double width = width_along(hull, std::cos(angle) * across + std::sin(angle) * across_too);
-    widest = std::max(widest, width);
-    narrowest = std::min(narrowest, width);
-  }
+  const WidthsAcross across = widths_across(hull, direction, kAcrossTurns);
   extent.highest_mm = std::max(extent.highest_mm, width_along(hull, direction));
-  extent.widest_mm = std::max(extent.widest_mm, widest);
-  extent.narrowest_mm = std::max(extent.narrowest_mm, narrowest);
+  extent.widest_mm = std::max(extent.widest_mm, across.widest_mm);
+  extent.narrowest_mm = std::max(extent.narrowest_mm, across.narrowest_mm);
 }
 
 }  // namespace
@@ -84,7 +56,7 @@ double covering_radius_rad(const std::vector<Eigen::Vector3d>& directions) {
   if (directions.empty()) return M_PI;
   double farthest = 0;
   for (int k = 0; k < kCoverageSamples; ++k) {
-    const Eigen::Vector3d sample = sphere_direction(k, kCoverageSamples);
+    const Eigen::Vector3d sample = spread_direction(k, kCoverageSamples, SphereCover::kWhole);
     double nearest_cosine = -1;
     for (const Eigen::Vector3d& direction : directions)
       nearest_cosine = std::max(nearest_cosine, sample.dot(direction));

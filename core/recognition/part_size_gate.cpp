@@ -4,31 +4,10 @@
 #include <cmath>
 #include <limits>
 
+#include "core/modelbase/point_set_widths.hpp"
+
 namespace cosmos {
 namespace {
-
-// Direction k of n spread evenly over the upper half of the unit sphere (a Fibonacci
-// spiral): a width is the same along a direction and its opposite.
-Eigen::Vector3d hemisphere_direction(int k, int n) {
-  const double z = 1.0 - (k + 0.5) / n;
-  const double radius = std::sqrt(std::max(0.0, 1.0 - z * z));
-  constexpr double kGoldenAngle = 2.399963229728653;
-  const double phi = kGoldenAngle * k;
-  return {radius * std::cos(phi), radius * std::sin(phi), z};
-}
-
-// `points`: a range of 3-vectors (a part's hull corners, or a matrix's columns).
-template <class Points>
-double width_along(const Points& points, const Eigen::Vector3d& direction) {
-  double low = std::numeric_limits<double>::infinity();
-  double high = -low;
-  for (const auto& point : points) {
-    const double along = direction.dot(point);
-    low = std::min(low, along);
-    high = std::max(high, along);
-  }
-  return high - low;
-}
 
 // Directions on the sphere for the coarse pass (about 3 degrees apart), then grids of
 // (2 kGridHalf + 1)^2 directions about the best, each kZoom times narrower, from the coarse
@@ -56,7 +35,8 @@ PartExtent part_extent(const ModelPart& part) {
   for (std::size_t i = 0; i < hull.size(); i += stride) corners.push_back(hull[i]);
   double coarse_narrowest = std::numeric_limits<double>::infinity();
   for (int k = 0; k < kCoarseDirections; ++k) {
-    const Eigen::Vector3d direction = hemisphere_direction(k, kCoarseDirections);
+    const Eigen::Vector3d direction =
+        spread_direction(k, kCoarseDirections, SphereCover::kUpperHalf);
     const double width = width_along(corners, direction);
     if (width < coarse_narrowest) {
       coarse_narrowest = width;
@@ -92,15 +72,15 @@ SceneExtent scene_extent(const RegistrationPoints& points, const RangeImage& ima
   const Eigen::Matrix3Xd& positions = points.position_mm;
   for (int k = 0; k < kDirections && positions.cols() > 0; ++k)
     extent.width_mm = std::max(
-        extent.width_mm, width_along(positions.colwise(), hemisphere_direction(k, kDirections)));
+        extent.width_mm, width_along(positions.colwise(),
+                                     spread_direction(k, kDirections, SphereCover::kUpperHalf)));
   // Across the viewing direction: along directions in the belt's plane, half a circle.
   constexpr int kAcrossDirections = 36;
-  for (int k = 0; k < kAcrossDirections && positions.cols() > 0; ++k) {
-    const double angle = M_PI * k / kAcrossDirections;
-    const double width =
-        width_along(positions.colwise(), Eigen::Vector3d(std::cos(angle), std::sin(angle), 0));
-    extent.widest_across_mm = std::max(extent.widest_across_mm, width);
-    extent.narrowest_across_mm = k == 0 ? width : std::min(extent.narrowest_across_mm, width);
+  if (positions.cols() > 0) {
+    const WidthsAcross across =
+        widths_across(positions.colwise(), Eigen::Vector3d::UnitZ(), kAcrossDirections);
+    extent.widest_across_mm = across.widest_mm;
+    extent.narrowest_across_mm = across.narrowest_mm;
   }
   for (int row = 0; row < image.height(); ++row)
     for (int column = 0; column < image.width(); ++column)
