@@ -117,9 +117,11 @@ Offset<fb::View> encode_view(FlatBufferBuilder& b, const ModelBaseView& view,
   const fb::Vec3 centroid = vec3(view.control_point_centroid_mm);
   const fb::ViewExtent extent(view.extent.highest_mm, view.extent.widest_mm,
                               view.extent.narrowest_mm);
+  const auto signature =
+      b.CreateVector(view.signature.cumulative.data(), view.signature.cumulative.size());
   return fb::CreateView(b, view.part_index, view.view_index, &direction, &T_scanner_part,
                         patch_vector, gauss_vector, view.cosmos.visible_area_mm2, moments,
-                        registration, &centroid, &extent);
+                        registration, &centroid, &extent, signature);
 }
 
 }  // namespace
@@ -212,6 +214,15 @@ Struct struct_at(const flatbuffers::Vector<const Struct*>& v, std::size_t i) {
 }
 
 std::string view_label(std::size_t v) { return "view " + std::to_string(v); }
+
+std::optional<std::string> decode_signature(const flatbuffers::Vector<std::uint16_t>* in,
+                                            ViewSignature& out, const std::string& where) {
+  if (!in || in->size() != out.cumulative.size())
+    return where + ": " + std::to_string(in ? in->size() : 0) + " signature bins, expected " +
+           std::to_string(out.cumulative.size());
+  std::copy(in->begin(), in->end(), out.cumulative.begin());
+  return std::nullopt;
+}
 
 std::optional<std::string> decode_moments(const flatbuffers::Vector<double>* in, MomentVector& out,
                                           const std::string& where) {
@@ -401,6 +412,8 @@ std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::s
         view_out.extent = {extent->highest_mm(), extent->widest_mm(), extent->narrowest_mm()};
       view_out.cosmos = decode_cosmos(view);
       if (auto error = decode_moments(view.moments(), view_out.moments, view_label(v)))
+        return error;
+      if (auto error = decode_signature(view.signature(), view_out.signature, view_label(v)))
         return error;
       if (auto error = decode_registration(view.registration(), owner, view_out.registration_packed,
                                            view_label(v)))

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/modelbase/view_extent.hpp"
+#include "core/modelbase/view_signature.hpp"
 #include "core/registration/packed_registration_points.hpp"
 #include "core/registration/part_surface_voxels.hpp"
 #include "core/registration/registration_points.hpp"
@@ -73,6 +74,9 @@ struct ModelBaseView {
   // How tall and wide the part is seen from near this view, for the views the pose search
   // starts from (view_extent.hpp); unbounded for the others.
   ViewExtent extent;
+  // Its control points' metric signature (view_signature.hpp), by which a search over many
+  // parts ranks them before fitting any.
+  ViewSignature signature;
 
   int control_point_count() const {
     return registration.size() > 0 ? registration.size() : registration_packed.size();
@@ -99,8 +103,8 @@ struct ModelBase {
   // 4: the parts' surface voxels and samples, the views' control-point centroids. 5: the parts'
   // confusable parts. 6: those listed by quick fits scored on farthest-point subsets. 7: the
   // start views' extents, and the confusable parts listed by quick fits that start from the
-  // views the probe's extent allows.
-  static constexpr std::uint32_t kFormatVersion = 7;
+  // views the probe's extent allows. 8: every view's metric signature.
+  static constexpr std::uint32_t kFormatVersion = 8;
   std::string catalog_hash;     // content hash of the catalog and its meshes
   std::string parameters_text;  // every COSMOS/scanner/grouping parameter, canonical text
   std::vector<ModelPart> parts;

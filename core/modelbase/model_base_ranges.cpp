@@ -48,6 +48,12 @@ class RangeCheck {
       fail(where, name + " rotation's |R^T R - I|", error, "a rotation");
     coordinates(where, name + " translation_mm", T.translation_mm);
   }
+  void cumulative(const std::string& where, const std::string& name,
+                  const ViewSignature& signature) {
+    if (!failed() && !is_cumulative(signature))
+      reason_ = where + ": " + name + " is not three cumulative distributions, each ending at " +
+                number(ViewSignature::kWhole);
+  }
 
  private:
   static std::string number(double value) {
@@ -193,6 +199,7 @@ std::optional<std::string> model_base_out_of_range(const ModelBase& base,
     length_or_unbounded("extent.highest_mm", view.extent.highest_mm);
     length_or_unbounded("extent.widest_mm", view.extent.widest_mm);
     length_or_unbounded("extent.narrowest_mm", view.extent.narrowest_mm);
+    check.cumulative(where, "signature", view.signature);
   }
   for (std::size_t c = 0; c < base.clusters.size() && !check.failed(); ++c)
     check_moments(check, "cluster " + std::to_string(c), base.clusters[c].centroid);

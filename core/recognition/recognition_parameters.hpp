@@ -15,6 +15,7 @@
 #include "core/recognition/part_size_gate.hpp"
 #include "core/recognition/part_support.hpp"
 #include "core/recognition/resting_pose_search.hpp"
+#include "core/recognition/signature_rank.hpp"
 #include "core/recognition/size_variants.hpp"
 #include "core/recognition/surface_seen.hpp"
 #include "core/recognition/thin_scene.hpp"
@@ -99,6 +100,9 @@ struct RecognitionParameters {
   // Its order: the parts' quick field fits (part_pose_search.hpp); with it off, the spectral
   // order.
   CatalogRankParameters catalog_rank;
+  // Which parts it quick-fits first, and which only when none of those fits closely: in a
+  // large catalog a few (signature_rank.hpp).
+  SignatureRankParameters signature_rank;
   // The parts the search over every part leaves out: too small or too thick to be the
   // scene's (part_size_gate.hpp).
   PartSizeGateParameters size_gate;
@@ -205,6 +209,8 @@ struct RecognitionParameters {
     v("resting", resting, "the parts' stable poses on the belt, searched first");
     v("searched_parts", searched_parts, "parts the pose search falls back to", Range{0, 100000});
     v("catalog_rank", catalog_rank, "the order of the search over every part");
+    v("signature_rank", signature_rank,
+      "the parts that search quick-fits first, by their views' metric signatures");
     v("convincing_field_fit_mm2", convincing_field_fit_mm2,
       "a part whose best field pose fits this well is registered at once, mm^2", Range{0, 1e6});
     v("abandoned_part_support", abandoned_part_support,

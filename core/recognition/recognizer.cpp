@@ -144,12 +144,15 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
   const std::vector<SpectralCandidate> selected = selector_.select(analysis.moments);
   result.timings.selection_ms = elapsed_ms(stage);
 
-  ScenePoints points{std::move(scene_points.points), {}, {}, scene, parts, {}, {}};
+  ScenePoints points{std::move(scene_points.points), {}, {}, scene, parts, {}, {}, {}};
   points.coarse = spread_subset(points.all, parameters_.coarse_points);
   points.quick = quick_fit_points(points.all, parameters_.catalog_rank);
   points.extent = scene_extent(points.all, scene);
   points.views = view_size_gate(points.extent, parts, parameters_.resting.parts_touch_belt,
                                 parameters_.size_gate);
+  if (parameters_.signature_rank.enabled && parts == SceneParts::kOne &&
+      parameters_.resting.parts_touch_belt)
+    points.signature = view_signature(points.all.position_mm, 0.0);
   ModelSurfaces surfaces(model_base_, parameters_.surfaces);
   // The first views_before_search selected views are verified in nearly every scene (all but
   // a view of the part the first one found, passed over as its rival). With threads to spare

@@ -183,6 +183,9 @@ struct RecognitionResult {
   // The parts that search left out, too small or too thick for the scene (part_size_gate.hpp).
   int parts_smaller_than_scene = 0;
   int parts_thicker_than_scene = 0;
+  // The parts that search never quick-fitted: their signatures were far from the scene's, and
+  // one of those it fitted first fitted closely (signature_rank.hpp).
+  int parts_left_out_by_signature = 0;
   std::vector<RecognitionCandidate> candidates;  // spectral order
   RecognitionTimings timings;
 };
@@ -226,6 +229,9 @@ class Recognizer {
     SceneParts parts = SceneParts::kOne;
     SceneExtent extent;  // what the size gates compare with the parts' (part_size_gate.hpp)
     ViewSizeGate views;  // the start views the pose searches may start from
+    // Its metric signature, heights above the belt (empty when its parts may not lie on the
+    // belt alone, or signature_rank is off): what the parts are quick-fitted first by.
+    ViewSignature signature;
   };
   // The candidate reaches sufficient_support, at rest, with sufficient_seen_fraction of its
   // view seen (min_seen_fraction for a part with other sizes): no other part is likely to

@@ -10,6 +10,7 @@
 #include "core/recognition/ranked_candidates.hpp"
 #include "core/recognition/recognizer.hpp"
 #include "core/recognition/resting_pose_search.hpp"
+#include "core/recognition/signature_rank.hpp"
 #include "core/stage_clock.hpp"
 
 namespace cosmos {
@@ -99,19 +100,46 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
   const bool quick_ranked =
       only_parts.empty() && !resting_poses && parameters_.catalog_rank.enabled;
   std::vector<QuickFieldFit>& ranked = result.quick_fits;
+  std::size_t left_out_by_signature = 0;
   if (quick_ranked) {
     const StageClock::time_point stage = StageClock::now();
     ranked.assign(parts.size(), QuickFieldFit{});
     // Each part's quick fit reads the scene and its own field alone: a few shares of the parts,
     // each fitting its own into its own slots.
-    const int shares = std::min(static_cast<int>(parts.size()), kQuickFitShares);
-    tasks_.run(shares, [&](int share) {
-      const auto share_of = [&](int s) {
-        return parts.size() * static_cast<std::size_t>(s) / static_cast<std::size_t>(shares);
-      };
-      for (std::size_t k = share_of(share); k < share_of(share + 1); ++k)
-        ranked[k] = quick_fit(parts[k], scene_points);
-    });
+    const auto quick_fit_parts = [&](std::size_t begin, std::size_t end) {
+      const int shares = static_cast<int>(std::min(end - begin, std::size_t{kQuickFitShares}));
+      tasks_.run(shares, [&](int share) {
+        const auto share_of = [&](int s) {
+          return begin +
+                 (end - begin) * static_cast<std::size_t>(s) / static_cast<std::size_t>(shares);
+        };
+        for (std::size_t k = share_of(share); k < share_of(share + 1); ++k)
+          ranked[k] = quick_fit(parts[k], scene_points);
+      });
+    };
+    // The parts of closest signature first (signature_rank.hpp); the others only when none of
+    // those fits closely, and otherwise never searched.
+    std::size_t fitted_first = parts.size();
+    if (!scene_points.signature.empty()) {
+      const std::vector<PartSignatureDistance> by_signature =
+          rank_by_signature(scene_points.signature, parts, model_base_, part_search_models_);
+      for (std::size_t k = 0; k < parts.size(); ++k) parts[k] = by_signature[k].part;
+      fitted_first = parts_fitted_first(by_signature, parameters_.signature_rank);
+    }
+    quick_fit_parts(0, fitted_first);
+    const bool one_fits_closely =
+        std::any_of(ranked.begin(), ranked.begin() + static_cast<std::ptrdiff_t>(fitted_first),
+                    [&](const QuickFieldFit& quick) {
+                      return quick.on_belt && quick.fit_mm2 <= parameters_.signature_rank.fit_mm2;
+                    });
+    if (one_fits_closely) {
+      left_out_by_signature = parts.size() - fitted_first;
+      parts.resize(fitted_first);
+      ranked.resize(fitted_first);
+    } else {
+      quick_fit_parts(fitted_first, parts.size());
+    }
+    result.parts_left_out_by_signature = static_cast<int>(left_out_by_signature);
     std::stable_sort(
         ranked.begin(), ranked.end(),
         [](const QuickFieldFit& a, const QuickFieldFit& b) { return a.fit_mm2 < b.fit_mm2; });
@@ -213,7 +241,7 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
     if (!resting_poses && convincing) {
       const bool explains = register_part(part, field_poses);
       if (explained || (explains && (!quick_ranked || k + 1 == parts.size())))
-        return k + 1 == parts.size();
+        return k + 1 == parts.size() && left_out_by_signature == 0;
       explained = explains;
     } else {
       waiting.push_back({part, std::move(field_poses), best_fit_mm2});
@@ -234,7 +262,7 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
     ++registered;
     if (register_part(part.part, part.field_poses)) break;
   }
-  return every_part;
+  return every_part && left_out_by_signature == 0;
 }
 
 QuickFieldFit Recognizer::quick_fit(int part, const ScenePoints& scene_points) const {

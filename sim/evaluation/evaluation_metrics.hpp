@@ -89,6 +89,8 @@ struct EvaluationRecord {
   bool catalog_searched = false;
   // Parts the search over every part left out by size (part_size_gate.hpp).
   int parts_left_out_by_size = 0;
+  // Parts it never quick-fitted, their signatures far from the scan's (signature_rank.hpp).
+  int parts_left_out_by_signature = 0;
   // The winner's confusable parts the decision searched before it decided (confusable_parts.hpp).
   int confusable_parts_searched = 0;
   bool resting_searched = false;  // the parts' resting poses were searched

@@ -298,6 +298,7 @@ nlohmann::json tests_json(std::span<const EvaluationRecord> records,
                                ? nlohmann::json(record.true_part_quick_fit_rank)
                                : nlohmann::json()},
         {"parts_left_out_by_size", record.parts_left_out_by_size},
+        {"parts_left_out_by_signature", record.parts_left_out_by_signature},
         {"confusable_parts_searched", record.confusable_parts_searched},
         {"resting_searched", record.resting_searched},
         {"thin_scene", record.thin_scene},

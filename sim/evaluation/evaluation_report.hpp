@@ -13,7 +13,7 @@
 //                            rejected), status (record_status_name), reason, recognition_ms
 //                            and its features_ms, matching_ms and registration_ms,
 //                            pose_searched, catalog_searched, parts_left_out_by_size,
-//                            confusable_parts_searched,
+//                            parts_left_out_by_signature, confusable_parts_searched,
 //                            resting_searched, thin_scene,
 //                            truth_has_size_variants, taken_for_size_variant,
 //                            add_s_over_diameter (null where it does not apply).

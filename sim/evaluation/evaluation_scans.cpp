@@ -172,6 +172,7 @@ EvaluationRecord run_evaluation_test(const EvaluationTest& test,
     record.pose_searched |= candidate.from_pose_search;
   record.catalog_searched = result.catalog_searched;
   record.parts_left_out_by_size = result.parts_smaller_than_scene + result.parts_thicker_than_scene;
+  record.parts_left_out_by_signature = result.parts_left_out_by_signature;
   record.confusable_parts_searched = static_cast<int>(result.confusable_parts_searched.size());
   record.resting_searched = result.resting_searched;
   record.thin_scene = result.thin_scene;

@@ -12,6 +12,7 @@
 
 #include "core/modelbase/part_surface_summary.hpp"
 #include "core/modelbase/view_extent.hpp"
+#include "core/modelbase/view_signature.hpp"
 #include "core/recognition/confusable_parts.hpp"
 #include "core/representation/cosmos_pipeline.hpp"
 #include "core/task_runner.hpp"
@@ -253,6 +254,7 @@ ModelBase build_model_base(const PartCatalog& catalog, const ScannerParameters& 
   tasks.run(static_cast<int>(base.parts.size()), [&](int part) {
     summarize_part_surface(base, part, settings.field);
     summarize_view_extents(base, part);
+    summarize_view_signatures(base, part);
   });
   list_confusable_parts(base, settings.confusion, tasks);
   return base;

@@ -15,6 +15,7 @@
 
 #include "core/io/model_base_generated.h"
 #include "core/modelbase/part_surface_summary.hpp"
+#include "core/modelbase/view_signature.hpp"
 #include "tests/core/hand_made_view.hpp"
 
 namespace cosmos {
@@ -64,6 +65,7 @@ ModelBase small_base() {
   base.clusters[0].centroid.fill(0.125);
   base.clusters[1].centroid.fill(0.5);
   summarize_part_surfaces(base, {});
+  for (int part = 0; part < 2; ++part) summarize_view_signatures(base, part);
   return base;
 }
 
@@ -134,6 +136,8 @@ TEST(ModelBasePayload, DecodesWhatWasEncoded) {
   EXPECT_EQ(view.extent.narrowest_mm, 60.125);
   EXPECT_TRUE(std::isinf(read.views[0].extent.highest_mm));  // unbounded, kept so
   EXPECT_TRUE(std::isinf(read.views[0].extent.narrowest_mm));
+  EXPECT_FALSE(view.signature.empty());
+  EXPECT_EQ(view.signature.cumulative, written.signature.cumulative);
   ASSERT_EQ(view.cosmos.patches.size(), 4u);
   EXPECT_EQ(view.cosmos.patches[1].mean_normal, written.cosmos.patches[1].mean_normal);
   ASSERT_EQ(view.cosmos.patches[1].neighbors.size(), 3u);
@@ -265,6 +269,10 @@ TEST(ModelBasePayload, SurfaceVoxelsThatDoNotCoverTheirGridAreRefusedNamingThePa
               b.views[2].extent.highest_mm = std::numeric_limits<double>::quiet_NaN();
             }),
             "view 2: extent.highest_mm is nan, expected in [0, 10000]");
+  EXPECT_EQ(refusal_after([](ModelBase& b) {
+              b.views[1].signature.cumulative[ViewSignature::kHeightBins - 1] = 100;
+            }),
+            "view 1: signature is not three cumulative distributions, each ending at 65535");
 }
 
 TEST(ModelBasePayload, BytesThatAreNotAPayloadAreRefused) {

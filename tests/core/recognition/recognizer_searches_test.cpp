@@ -244,6 +244,61 @@ TEST_F(RecognizerOnRegressionBase, TheSearchOverEveryPartLeavesOutOnlyPartsOfAno
   EXPECT_GE(thicker, 2);
 }
 
+// The signature rank (signature_rank.hpp) quick-fits first the parts whose views' signatures
+// lie closest to the scene's. Told to fit first only the closest part and those nearly as close,
+// the search leaves the other parts out only when one of those fits closely, and then the scene
+// is identified as it is with every part quick-fitted; a scene that may hold several parts, or
+// parts that may not lie on the belt, leave none out.
+TEST_F(RecognizerOnRegressionBase, TheSearchOverEveryPartFitsThePartsOfClosestSignatureFirst) {
+  RecognitionParameters parameters;
+  parameters.views_before_search = 0;
+  parameters.resting.parts_touch_belt = true;
+  parameters.signature_rank.min_parts = 1;
+  parameters.signature_rank.ratio = 1.2;
+  RecognitionParameters every_part = parameters;
+  every_part.signature_rank.enabled = false;
+  RecognitionParameters off_belt = parameters;
+  off_belt.resting.parts_touch_belt = false;
+  const Recognizer recognizer(*base_, CosmosParameters{}, parameters);
+  const Recognizer every_part_recognizer(*base_, CosmosParameters{}, every_part);
+  const Recognizer off_belt_recognizer(*base_, CosmosParameters{}, off_belt);
+  int searched = 0, with_parts_left_out = 0, identified = 0;
+  for (std::uint64_t seed = 41; seed < 61; ++seed) {
+    const int own_part = static_cast<int>(seed % base_->parts.size());
+    const RangeImage image = scan(base_->parts[static_cast<std::size_t>(own_part)].name, seed);
+    const RecognitionResult result = recognizer.recognize(image);
+    if (result.quick_fits.empty()) continue;
+    ++searched;
+    const RecognitionResult all = every_part_recognizer.recognize(image);
+    EXPECT_EQ(all.parts_left_out_by_signature, 0) << seed;
+    EXPECT_EQ(
+        result.quick_fits.size() + static_cast<std::size_t>(result.parts_left_out_by_signature),
+        all.quick_fits.size())
+        << seed;
+    if (result.parts_left_out_by_signature > 0) {
+      ++with_parts_left_out;
+      EXPECT_TRUE(std::any_of(result.quick_fits.begin(), result.quick_fits.end(),
+                              [&](const QuickFieldFit& fit) {
+                                return fit.on_belt &&
+                                       fit.fit_mm2 <= parameters.signature_rank.fit_mm2;
+                              }))
+          << seed;
+      EXPECT_FALSE(result.catalog_searched) << seed;
+    }
+    EXPECT_EQ(result.status, all.status) << seed;
+    EXPECT_EQ(result.part, all.part) << seed;
+    identified += result.status == RecognitionStatus::kOk && result.part == own_part ? 1 : 0;
+    EXPECT_EQ(recognizer.recognize(image, SceneParts::kOneOrMore).parts_left_out_by_signature, 0)
+        << seed;
+    EXPECT_EQ(off_belt_recognizer.recognize(image).parts_left_out_by_signature, 0) << seed;
+  }
+  std::printf("%d scenes searched, %d with parts left out, %d identified\n", searched,
+              with_parts_left_out, identified);
+  EXPECT_GE(searched, 15);
+  EXPECT_GE(with_parts_left_out, 5);
+  EXPECT_GE(identified, searched - 2);
+}
+
 // Two parts side by side in one scene (touching parts in one blob): told the scene holds one
 // part, the gate leaves out the parts smaller than the pair, both of its own among them;
 // told it may hold several, it bounds no part's extent.
