@@ -215,21 +215,15 @@ Struct struct_at(const flatbuffers::Vector<const Struct*>& v, std::size_t i) {
 
 std::string view_label(std::size_t v) { return "view " + std::to_string(v); }
 
-std::optional<std::string> decode_signature(const flatbuffers::Vector<std::uint16_t>* in,
-                                            ViewSignature& out, const std::string& where) {
-  if (!in || in->size() != out.cumulative.size())
-    return where + ": " + std::to_string(in ? in->size() : 0) + " signature bins, expected " +
-           std::to_string(out.cumulative.size());
-  std::copy(in->begin(), in->end(), out.cumulative.begin());
-  return std::nullopt;
-}
-
-std::optional<std::string> decode_moments(const flatbuffers::Vector<double>* in, MomentVector& out,
-                                          const std::string& where) {
-  if (!in || in->size() != out.size())
-    return where + ": " + std::to_string(in ? in->size() : 0) + " moments, expected " +
-           std::to_string(out.size());
-  std::memcpy(out.data(), in->data(), sizeof(double) * out.size());
+// A fixed-length array (the moments, a signature's bins): refused unless the stored vector has
+// exactly its length, `what` naming its entries in the message.
+template <class T, std::size_t N>
+std::optional<std::string> decode_array(const flatbuffers::Vector<T>* in, std::array<T, N>& out,
+                                        const std::string& what, const std::string& where) {
+  if (!in || in->size() != N)
+    return where + ": " + std::to_string(in ? in->size() : 0) + " " + what + ", expected " +
+           std::to_string(N);
+  std::copy(in->begin(), in->end(), out.begin());
   return std::nullopt;
 }
 
@@ -411,9 +405,10 @@ std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::s
       if (const fb::ViewExtent* extent = view.extent())
         view_out.extent = {extent->highest_mm(), extent->widest_mm(), extent->narrowest_mm()};
       view_out.cosmos = decode_cosmos(view);
-      if (auto error = decode_moments(view.moments(), view_out.moments, view_label(v)))
+      if (auto error = decode_array(view.moments(), view_out.moments, "moments", view_label(v)))
         return error;
-      if (auto error = decode_signature(view.signature(), view_out.signature, view_label(v)))
+      if (auto error = decode_array(view.signature(), view_out.signature.cumulative,
+                                    "signature bins", view_label(v)))
         return error;
       if (auto error = decode_registration(view.registration(), owner, view_out.registration_packed,
                                            view_label(v)))
@@ -436,7 +431,7 @@ std::optional<std::string> decode_model_base(const std::uint8_t* payload, std::s
           return where + ": view " + std::to_string(member) + " belongs to another part";
       }
       cluster_out.views.assign(members.begin(), members.end());
-      if (auto error = decode_moments(cluster.centroid(), cluster_out.centroid, where))
+      if (auto error = decode_array(cluster.centroid(), cluster_out.centroid, "moments", where))
         return error;
     }
   }
