@@ -38,6 +38,7 @@
 // only on the input; only the timings vary between runs.
 #include <functional>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -91,6 +92,10 @@ struct RecognitionCandidate {
   bool from_pose_search = false;     // proposed by the fallback search, not by §5.2 selection
   bool from_vote_index = false;      // proposed by the vote index (core/indexing/)
   bool from_resting_search = false;  // proposed by the resting-pose search
+  // Registered from the poses of another size of its shape (size_variants.hpp): it stands for
+  // its part's pose search, and is trusted no more.
+  bool from_scaled_size = false;
+  bool searched_over_views() const { return from_pose_search || from_scaled_size; }
   // The decision may name it: it lies at rest on the belt and its surface is seen
   // (min_seen_fraction); set by the decision.
   bool qualified = false;
@@ -255,6 +260,16 @@ class Recognizer {
   // The poses the vote index proposes, one candidate per part, verified in vote order.
   void verify_voted_poses(const ViewAnalysis& scene, const ScenePoints& scene_points,
                           ModelSurfaces& surfaces, RecognitionResult& result) const;
+  // The part's poses (T_part_scene) aligned in its field and registered on their nearest views
+  // as one candidate (its flags unset); none when the part has no start view or no pose does.
+  std::optional<RecognitionCandidate> register_part_poses(
+      const ViewAnalysis& scene, const ScenePoints& scene_points, ModelSurfaces& surfaces, int part,
+      std::span<const RigidTransform> T_part_scene, RecognitionResult& result) const;
+  // Another size of `posed_part`'s shape (size_variants.hpp), registered from the registered
+  // poses of `posed_part`, scaled, instead of searched over its views: one candidate.
+  void register_scaled_size(const ViewAnalysis& scene, const ScenePoints& scene_points,
+                            ModelSurfaces& surfaces, int part, int posed_part,
+                            RecognitionResult& result) const;
   // The fallback: every view of the candidates' parts (part_pose_search.hpp), or with
   // `resting_poses` only their resting poses (resting_pose_search.hpp). Over every part (no
   // `only_parts`), in the order of their quick field fit (catalog_rank). `only_parts` not

@@ -138,9 +138,10 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
   // and the search, which stops at the first part that explains the scene, never reached the
   // size that would have rested.
   const auto pose_searched = [&](int part) {
-    return std::any_of(
-        result.candidates.begin(), result.candidates.end(),
-        [part](const RecognitionCandidate& c) { return c.part == part && c.from_pose_search; });
+    return std::any_of(result.candidates.begin(), result.candidates.end(),
+                       [part](const RecognitionCandidate& c) {
+                         return c.part == part && c.searched_over_views();
+                       });
   };
   // Unless the search over every part found its quick fit hopeless beside the best full fit
   // there: as in that search, its full stages would rarely lower the fit that much, and the
@@ -165,15 +166,23 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
         std::find(unsearched.begin(), unsearched.end(), part) == unsearched.end())
       unsearched.push_back(part);
   };
+  // The other sizes are registered from the poses of this one (size_variants.hpp).
+  std::vector<int> scaled_sizes;
   if (parameters_.size_variants.search)
-    for (int variant : size_variants_[static_cast<std::size_t>(family_of->part)])
-      search_too(variant);
+    for (int variant : size_variants_[static_cast<std::size_t>(family_of->part)]) {
+      if (!parameters_.size_variants.from_winner_poses)
+        search_too(variant);
+      else if (!pose_searched(variant) &&
+               std::find(unsearched.begin(), unsearched.end(), variant) == unsearched.end())
+        scaled_sizes.push_back(variant);
+    }
   // So do the parts the base lists as confusable with the winner's (one of them explains a view
   // of the other as closely as its own part): the search ended at the winner, and the scene's
   // own part may be one of them that ranked lower.
   const auto queued = [&](int part) {
     return pose_searched(part) ||
-           std::find(unsearched.begin(), unsearched.end(), part) != unsearched.end();
+           std::find(unsearched.begin(), unsearched.end(), part) != unsearched.end() ||
+           std::find(scaled_sizes.begin(), scaled_sizes.end(), part) != scaled_sizes.end();
   };
   if (parameters_.confusable.search) {
     std::vector<int> confusable =
@@ -185,7 +194,10 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
       result.confusable_parts_searched.push_back(part);
     }
   }
-  if (!unsearched.empty()) {
+  if (!unsearched.empty() || !scaled_sizes.empty()) {
+    const int posed_part = family_of->part;
+    for (int part : scaled_sizes)
+      register_scaled_size(analysis, points, surfaces, part, posed_part, result);
     // One part at a time: a search stops at the first part that explains the scene.
     for (int part : unsearched) search_candidate_parts(analysis, points, surfaces, result, {part});
     choose();
@@ -226,7 +238,7 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
            std::to_string(static_cast<int>(std::lround(100 * result.seen_fraction))) +
            " % of it seen";
   }
-  if (best->from_pose_search && best->seen_fraction < parameters_.min_accepted_seen_fraction) {
+  if (best->searched_over_views() && best->seen_fraction < parameters_.min_accepted_seen_fraction) {
     result.part = -1;
     return "only " + std::to_string(static_cast<int>(std::lround(100 * best->seen_fraction))) +
            " % of the best candidate's surface is where the scene is";

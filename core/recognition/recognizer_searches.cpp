@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "core/indexing/pose_voting.hpp"
 #include "core/recognition/free_space.hpp"
@@ -30,49 +31,83 @@ std::vector<int> close_fitting_parts(std::span<const QuickFieldFit> quick_fits,
   return parts;
 }
 
+std::optional<RecognitionCandidate> Recognizer::register_part_poses(
+    const ViewAnalysis& scene, const ScenePoints& scene_points, ModelSurfaces& surfaces, int part,
+    std::span<const RigidTransform> T_part_scene, RecognitionResult& result) const {
+  const PartSearchModel& model = part_search_model(part);
+  if (model.start_views.empty() || T_part_scene.empty()) return std::nullopt;
+  // The poses as starts on one of the part's views; aligning them in the part's field moves
+  // each onto the view nearest to it (part_pose_search.hpp).
+  const int view = model.views[model.start_views.front()];
+  const RigidTransform& T_view_part =
+      model_base_.views[static_cast<std::size_t>(view)].T_scanner_part;
+  std::vector<RigidTransform> starts;
+  starts.reserve(T_part_scene.size());
+  for (const RigidTransform& pose : T_part_scene) starts.push_back(T_view_part * pose);
+  StageClock::time_point stage = StageClock::now();
+  const std::vector<ViewPoseHypothesis> aligned = align_view_starts_in_field(
+      scene_points.all, model_base_, view, starts, model, parameters_.field_starts,
+      parameters_.search, parameters_.registered_hypotheses);
+  result.timings.registration_ms += elapsed_ms(stage);
+  if (aligned.empty()) return std::nullopt;
+  RecognitionCandidate candidate;
+  candidate.part = part;
+  candidate.view = aligned.front().view;
+  const ModelBaseView& nearest = model_base_.views[static_cast<std::size_t>(candidate.view)];
+  candidate.spectral_distance = selector_.distance(scene.moments, nearest.moments);
+  stage = StageClock::now();
+  candidate.goodness = match_patch_groups(scene.view, nearest.cosmos, parameters_.matching).score;
+  result.timings.matching_ms += elapsed_ms(stage);
+  stage = StageClock::now();
+  register_candidate(scene_points, aligned, surfaces, candidate);
+  result.timings.registration_ms += elapsed_ms(stage);
+  return candidate;
+}
+
 void Recognizer::verify_voted_poses(const ViewAnalysis& scene, const ScenePoints& scene_points,
                                     ModelSurfaces& surfaces, RecognitionResult& result) const {
-  StageClock::time_point stage = StageClock::now();
+  const StageClock::time_point stage = StageClock::now();
   PoseVoter voter(patch_pair_table_, parameters_.vote_index.voting);
   const std::span<const VotedPose> voted = voter.vote(scene.view);
   result.timings.selection_ms += elapsed_ms(stage);
-  std::vector<RigidTransform> starts;
+  std::vector<RigidTransform> T_part_scene;
   for (std::size_t first = 0; first < voted.size(); ++first) {
     const int part = voted[first].part;
     if (std::any_of(voted.begin(), voted.begin() + static_cast<std::ptrdiff_t>(first),
                     [part](const VotedPose& earlier) { return earlier.part == part; }))
       continue;
-    const PartSearchModel& model = part_search_model(part);
-    if (model.start_views.empty()) continue;
-    // The part's poses as starts on one of its views; aligning them in the part's field moves
-    // each onto the view nearest to it (part_pose_search.hpp).
-    const int view = model.views[model.start_views.front()];
-    const RigidTransform& T_view_part =
-        model_base_.views[static_cast<std::size_t>(view)].T_scanner_part;
-    starts.clear();
+    T_part_scene.clear();
     for (std::size_t v = first; v < voted.size(); ++v)
-      if (voted[v].part == part) starts.push_back(T_view_part * voted[v].T_part_scene);
-    stage = StageClock::now();
-    const std::vector<ViewPoseHypothesis> aligned = align_view_starts_in_field(
-        scene_points.all, model_base_, view, starts, model, parameters_.field_starts,
-        parameters_.search, parameters_.registered_hypotheses);
-    result.timings.registration_ms += elapsed_ms(stage);
-    if (aligned.empty()) continue;
-    RecognitionCandidate candidate;
-    candidate.part = part;
-    candidate.view = aligned.front().view;
-    candidate.from_vote_index = true;
-    const ModelBaseView& nearest = model_base_.views[static_cast<std::size_t>(candidate.view)];
-    candidate.spectral_distance = selector_.distance(scene.moments, nearest.moments);
-    stage = StageClock::now();
-    candidate.goodness = match_patch_groups(scene.view, nearest.cosmos, parameters_.matching).score;
-    result.timings.matching_ms += elapsed_ms(stage);
-    stage = StageClock::now();
-    register_candidate(scene_points, aligned, surfaces, candidate);
-    result.timings.registration_ms += elapsed_ms(stage);
-    result.candidates.push_back(candidate);
+      if (voted[v].part == part) T_part_scene.push_back(voted[v].T_part_scene);
+    std::optional<RecognitionCandidate> candidate =
+        register_part_poses(scene, scene_points, surfaces, part, T_part_scene, result);
+    if (!candidate) continue;
+    candidate->from_vote_index = true;
+    result.candidates.push_back(*candidate);
     ++result.views_examined;
   }
+}
+
+void Recognizer::register_scaled_size(const ViewAnalysis& scene, const ScenePoints& scene_points,
+                                      ModelSurfaces& surfaces, int part, int posed_part,
+                                      RecognitionResult& result) const {
+  const ModelPart& posed = model_base_.parts[static_cast<std::size_t>(posed_part)];
+  if (!(posed.diameter_mm > 0)) return;
+  std::vector<RigidTransform> T_posed_scene;
+  for (const RecognitionCandidate& candidate : result.candidates)
+    if (candidate.part == posed_part && candidate.registered)
+      T_posed_scene.push_back(
+          model_base_.views[static_cast<std::size_t>(candidate.view)].T_scanner_part.inverse() *
+          candidate.T_model_scene);
+  const double scale =
+      model_base_.parts[static_cast<std::size_t>(part)].diameter_mm / posed.diameter_mm;
+  const Eigen::Vector3d centroid_mm = scene_points.all.position_mm.rowwise().mean();
+  std::optional<RecognitionCandidate> candidate =
+      register_part_poses(scene, scene_points, surfaces, part,
+                          scaled_size_starts(T_posed_scene, scale, centroid_mm), result);
+  if (!candidate) return;
+  candidate->from_scaled_size = true;
+  result.candidates.push_back(*candidate);
 }
 
 bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePoints& scene_points,
@@ -80,10 +115,12 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
                                         const std::vector<int>& only_parts,
                                         bool resting_poses) const {
   // Parts in the order of their closest view, or of their quick field fit.
-  std::vector<int> parts = selector_.rank_parts(scene.moments);
-  if (parts.size() > static_cast<std::size_t>(parameters_.searched_parts))
-    parts.resize(static_cast<std::size_t>(parameters_.searched_parts));
-  if (!only_parts.empty()) parts = only_parts;
+  std::vector<int> parts = only_parts;
+  if (parts.empty()) {
+    parts = selector_.rank_parts(scene.moments);
+    if (parts.size() > static_cast<std::size_t>(parameters_.searched_parts))
+      parts.resize(static_cast<std::size_t>(parameters_.searched_parts));
+  }
   // Over every part, the parts that cannot be the scene's by size are left out
   // (part_size_gate.hpp): in a large catalog many of them, before any is fitted.
   if (only_parts.empty()) {

@@ -42,4 +42,19 @@ std::vector<std::vector<int>> find_size_variants(const ModelBase& base,
   return variants;
 }
 
+std::vector<RigidTransform> scaled_size_starts(std::span<const RigidTransform> T_part_scene,
+                                               double scale,
+                                               const Eigen::Vector3d& scene_centroid_mm) {
+  std::vector<RigidTransform> starts;
+  starts.reserve(2 * T_part_scene.size());
+  for (const RigidTransform& pose : T_part_scene) {
+    const Eigen::Vector3d centroid_in_part = pose.apply(scene_centroid_mm);
+    RigidTransform scaled = pose;
+    scaled.translation_mm += (scale - 1.0) * centroid_in_part;
+    starts.push_back(scaled);
+    starts.push_back(pose);
+  }
+  return starts;
+}
+
 }  // namespace cosmos

@@ -13,10 +13,12 @@
 // about the part origin) are the same up to one scale factor, so a catalog declares nothing and
 // renamed copies of a mesh are found too. (Hulls alone miss some: nearly coplanar corners of a
 // gear's teeth are kept at one scale and dropped at another.)
+#include <span>
 #include <vector>
 
 #include "core/modelbase/model_base.hpp"
 #include "core/parameter_visitor.hpp"
+#include "core/rigid_transform.hpp"
 
 namespace cosmos {
 
@@ -33,6 +35,10 @@ struct SizeVariantParameters {
   // A size whose two-way fit is this much better than its rival's is told apart from it
   // without the ambiguity test (part_ambiguity.hpp), which weighs only the scene's points.
   double fit_margin = 0.03;
+  // The other sizes are registered from the registered poses of the size that won, scaled
+  // (scaled_size_starts), instead of by a search over all their views: the sizes of one shape
+  // lie alike, and a pose of one is a pose of another up to where the scale moves the scene.
+  bool from_winner_poses = true;
 
   template <class Visitor>
   void visit(Visitor& v) {
@@ -42,6 +48,8 @@ struct SizeVariantParameters {
     v("min_diameter_difference_mm", min_diameter_difference_mm,
       "sizes nearer than this: left to the ambiguity test, mm", Range{0, 1e4});
     v("fit_margin", fit_margin, "a two-way fit this much better tells sizes apart", Range{0, 1});
+    v("from_winner_poses", from_winner_poses,
+      "register the other sizes from the winner's poses, scaled, not by a search over their views");
   }
 };
 
@@ -52,5 +60,15 @@ bool same_shape_scaled(const ModelPart& a, const ModelPart& b, double corner_tol
 // by at least min_diameter_difference_mm (ascending indices; empty for most parts).
 std::vector<std::vector<int>> find_size_variants(const ModelBase& base,
                                                  const SizeVariantParameters& parameters);
+
+// Poses of the scene in another size's frame (T_part_scene), scale times the size of the part
+// posed by `T_part_scene` (scale about the part origin, as the hulls are compared): each pose
+// turned alike, once moved so that the scene's centroid lands where the scale carries it, and
+// once as it is (a part on the belt keeps its rest, and a scene seen from one side is often
+// nearer one end of the part than its centroid says). The field alignment takes them the rest
+// of the way.
+std::vector<RigidTransform> scaled_size_starts(std::span<const RigidTransform> T_part_scene,
+                                               double scale,
+                                               const Eigen::Vector3d& scene_centroid_mm);
 
 }  // namespace cosmos

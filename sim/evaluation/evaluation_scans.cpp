@@ -150,7 +150,7 @@ EvaluationRecord run_evaluation_test(const EvaluationTest& test,
         record.true_cluster_rank = static_cast<int>(r);
     for (const RecognitionCandidate& candidate : result.candidates)
       record.true_part_among_selected_views |=
-          !candidate.from_pose_search && candidate.part == part.base_index;
+          !candidate.searched_over_views() && candidate.part == part.base_index;
     record.quick_fits_ranked = !result.quick_fits.empty();
     for (std::size_t r = 0; r < result.quick_fits.size(); ++r)
       if (result.quick_fits[r].part == part.base_index)

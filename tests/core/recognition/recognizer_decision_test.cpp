@@ -61,10 +61,11 @@ RangeImage scan_part(const PartEntry& part, std::uint64_t seed) {
                           scanner, ConditioningParameters{});
 }
 
+// Searched over its views, or registered from another size's poses in the search's stead.
 bool part_pose_searched(const RecognitionResult& result, int part) {
   return std::any_of(
       result.candidates.begin(), result.candidates.end(),
-      [part](const RecognitionCandidate& c) { return c.part == part && c.from_pose_search; });
+      [part](const RecognitionCandidate& c) { return c.part == part && c.searched_over_views(); });
 }
 
 // A rival only verified on a selected view is searched over its part's views before it is
@@ -177,8 +178,9 @@ TEST_F(RecognizerOnRegressionBase, AWinnerWithListedPartsLeftUnsearchedMustShowI
 // The head and the holes at 100, 110 and 121 % of their catalog size. A scan of the middle
 // holes (seed 44) is explained by no candidate: its best registered candidate, the middle
 // head, puts surface where the scene has none. The search over the candidates' parts stopped
-// at that size, so the decision searches the head's other sizes before it rejects the scene;
-// none of them explains it either, and the scene is rejected rather than named.
+// at that size, so the decision registers the head's other sizes from its poses, scaled,
+// before it rejects the scene; none of them explains it either, and the scene is rejected
+// rather than named.
 TEST(RecognizerDecision, WhenNoCandidateQualifiesTheBestOnesOtherSizesAreSearched) {
   const PartCatalog catalog = large_catalog();
   const ModelBase base =
@@ -254,6 +256,46 @@ TEST_F(RecognizerOnFlatFamilies, ARivalOfAnotherSizeDoesNotHideAPartOfAnotherSha
   }
   EXPECT_GE(other_shapes, 5);
   EXPECT_GE(examined, 1);
+}
+
+// The other sizes of the winner's shape are registered from its poses, scaled: each has a
+// candidate so registered and none searched over its views by the decision. No scan is named
+// wrongly that a search over every size's views names rightly; a scaled pose may fit another
+// size better than that search did, and leave a scan ambiguous between the two.
+TEST_F(RecognizerOnFlatFamilies, TheOtherSizesAreRegisteredFromTheWinnersPosesScaled) {
+  RecognitionParameters searching_sizes;
+  searching_sizes.size_variants.from_winner_poses = false;
+  const Recognizer searching(*base_, CosmosParameters{}, searching_sizes);
+  int scaled = 0, named = 0, named_searching = 0, wrong = 0, wrong_searching = 0;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    const ModelPart& truth = base_->parts[seed % base_->parts.size()];
+    const RangeImage image = scan_part(catalog_->at(truth.name), seed);
+    const RecognitionResult result = recognizer_->recognize(image);
+    const int truth_index = static_cast<int>(seed % base_->parts.size());
+    named += result.part == truth_index ? 1 : 0;
+    const RecognitionResult other = searching.recognize(image);
+    named_searching += other.part == truth_index ? 1 : 0;
+    wrong += result.part >= 0 && result.part != truth_index ? 1 : 0;
+    wrong_searching += other.part >= 0 && other.part != truth_index ? 1 : 0;
+    for (const RecognitionCandidate& candidate : result.candidates) {
+      if (!candidate.from_scaled_size) continue;
+      ++scaled;
+      EXPECT_FALSE(candidate.from_pose_search) << seed;
+      EXPECT_TRUE(base_->parts[static_cast<std::size_t>(candidate.part)].mesh ==
+                  base_->parts[static_cast<std::size_t>(result.best_candidate_part)].mesh)
+          << seed;
+      EXPECT_EQ(std::count_if(result.candidates.begin(), result.candidates.end(),
+                              [&](const RecognitionCandidate& c) {
+                                return c.part == candidate.part && c.searched_over_views();
+                              }),
+                1)
+          << seed;
+    }
+  }
+  EXPECT_GE(scaled, 12);
+  EXPECT_LE(wrong, wrong_searching);
+  EXPECT_GE(named, named_searching - 1);
+  EXPECT_GE(named, 9);
 }
 
 }  // namespace

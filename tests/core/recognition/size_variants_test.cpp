@@ -55,5 +55,24 @@ TEST(SizeVariants, FamiliesByMeshOrHullAndOnlySizesFarEnoughApart) {
   EXPECT_EQ(variants[6], (std::vector<int>{5}));
 }
 
+TEST(SizeVariants, ScaledStartsCarryTheSceneCentroidWhereTheScaleMovesIt) {
+  // A scene seen on a part 10 % smaller: its centroid at (10, 0, 5) in that part's frame,
+  // the scene frame turned 90 degrees about z from the part's.
+  RigidTransform T_part_scene;
+  T_part_scene.rotation = rotation_from_xyz_angles_deg(0, 0, 90);
+  const Eigen::Vector3d centroid_in_scene_mm(4, -7, 2);
+  T_part_scene.translation_mm =
+      Eigen::Vector3d(10, 0, 5) - T_part_scene.rotation * centroid_in_scene_mm;
+  const std::vector<RigidTransform> starts =
+      scaled_size_starts(std::span(&T_part_scene, 1), 1.1, centroid_in_scene_mm);
+  ASSERT_EQ(starts.size(), 2u);
+  EXPECT_TRUE(starts[0].rotation.isApprox(T_part_scene.rotation));
+  EXPECT_NEAR((starts[0].apply(centroid_in_scene_mm) - Eigen::Vector3d(11, 0, 5.5)).norm(), 0,
+              1e-9);
+  EXPECT_TRUE(starts[1].rotation.isApprox(T_part_scene.rotation));
+  EXPECT_NEAR((starts[1].translation_mm - T_part_scene.translation_mm).norm(), 0, 1e-12);
+  EXPECT_TRUE(scaled_size_starts({}, 1.1, centroid_in_scene_mm).empty());
+}
+
 }  // namespace
 }  // namespace cosmos
