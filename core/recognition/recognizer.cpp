@@ -110,7 +110,7 @@ RecognitionResult Recognizer::recognize_analyzed(const RangeImage& scene,
     if (!thin.enabled || model_base_.views.empty() || !scene.belt_known() ||
         scene.count_valid() < static_cast<std::size_t>(thin.min_points))
       return finish(std::move(reason));
-    const std::string thin_reason = recognize_thin_scene(scene, result);
+    const std::string thin_reason = recognize_thin_scene(scene, parts, result);
     return finish(thin_reason.empty() ? thin_reason
                                       : reason + "; searched as a thin scene, " + thin_reason);
   };

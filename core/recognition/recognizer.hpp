@@ -185,7 +185,8 @@ struct RecognitionResult {
   // The winner's confusable parts (confusable_parts.hpp) the decision searched over their views,
   // in that order: those its list holds that the scene's size allows and no search had reached.
   std::vector<int> confusable_parts_searched;
-  // The parts that search left out, too small or too thick for the scene (part_size_gate.hpp).
+  // The parts the search over every part, or the thin scene's, left out, too small or too thick
+  // for the scene (part_size_gate.hpp).
   int parts_smaller_than_scene = 0;
   int parts_thicker_than_scene = 0;
   // The parts that search never quick-fitted: their signatures were far from the scene's, and
@@ -252,8 +253,9 @@ class Recognizer {
 
   // A scene without enough fitted surface, from its range points (thin_scene.hpp): sets the
   // result's part, pose and figures when accepted; returns why the scene is rejected, empty
-  // when it is not.
-  std::string recognize_thin_scene(const RangeImage& scene, RecognitionResult& result) const;
+  // when it is not. `parts` as for recognize: one part bounds the parts' extent.
+  std::string recognize_thin_scene(const RangeImage& scene, SceneParts parts,
+                                   RecognitionResult& result) const;
   RecognitionCandidate verify(const ViewAnalysis& scene, const ScenePoints& scene_points,
                               const SpectralCandidate& selected, ModelSurfaces& surfaces,
                               double& matching_ms, double& registration_ms) const;

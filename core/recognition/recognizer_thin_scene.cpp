@@ -1,7 +1,7 @@
-// The recognizer's path for a scene without a fitted surface (thin_scene.hpp): the parts in the
-// order of their quick field fit on the range points, the first few searched in full, and the
-// best pose of each that, set down on the belt, fits inside the scene's silhouette
-// (ThinSceneFit) judged.
+// The recognizer's path for a scene without a fitted surface (thin_scene.hpp): the parts the
+// scene's size allows (part_size_gate.hpp, on its range points) in the order of their quick
+// field fit on those points, the first few searched in full, and the best pose of each that,
+// set down on the belt, fits inside the scene's silhouette (ThinSceneFit) judged.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -18,7 +18,7 @@ std::string percent(double fraction) { return std::to_string(std::lround(100 * f
 
 }  // namespace
 
-std::string Recognizer::recognize_thin_scene(const RangeImage& scene,
+std::string Recognizer::recognize_thin_scene(const RangeImage& scene, SceneParts parts,
                                              RecognitionResult& result) const {
   const ThinSceneParameters& thin = parameters_.thin_scene;
   const StageClock::time_point start = StageClock::now();
@@ -31,7 +31,18 @@ std::string Recognizer::recognize_thin_scene(const RangeImage& scene,
 
   std::vector<std::pair<double, int>> ranked;  // (quick fit, part), best first
   const QuickFitPoints quick_points = quick_fit_points(points, parameters_.catalog_rank);
+  // A ribbon's range points lie on its part as a surface's control points do: the same bounds
+  // leave out the parts too small or too thick for it before any is fitted, which in a large
+  // catalog is most of the cost of a thin scene.
+  const SceneExtent extent = scene_extent(points, scene);
+  result.parts_smaller_than_scene = result.parts_thicker_than_scene = 0;
   for (int part = 0; part < static_cast<int>(model_base_.parts.size()); ++part) {
+    const SizeVerdict verdict =
+        judge_part_size(part_extents_[static_cast<std::size_t>(part)], extent, parts,
+                        parameters_.resting.parts_touch_belt, parameters_.size_gate);
+    result.parts_smaller_than_scene += verdict == SizeVerdict::kSmallerThanScene ? 1 : 0;
+    result.parts_thicker_than_scene += verdict == SizeVerdict::kThickerThanScene ? 1 : 0;
+    if (verdict != SizeVerdict::kFits) continue;
     const PartSearchModel& model = part_search_model(part);
     const std::optional<SettledPose> quick =
         fit.best_settled(part, part_of(part), model,

@@ -106,6 +106,32 @@ TEST_F(ThinSceneRecognition, ABladeSeenEdgeOnIsNamedFromItsRangePointsInItsPose)
   EXPECT_GE(within_2_percent, 14);
 }
 
+// The parts too small or too thick for the ribbon (part_size_gate.hpp, on its range points) are
+// not fitted to it, and the scene is named and posed as when every part is fitted.
+TEST_F(ThinSceneRecognition, TheRibbonIsFittedOnlyByThePartsItsSizeAllows) {
+  const Recognizer recognizer(*with_blade_, CosmosParameters{}, RecognitionParameters{});
+  RecognitionParameters ungated;
+  ungated.size_gate.enabled = false;
+  const Recognizer every_part(*with_blade_, CosmosParameters{}, ungated);
+  int gated = 0;
+  for (const std::uint64_t seed : kEdgeOnSeeds) {
+    const RangeImage scene = edge_on_scan(seed);
+    const RecognitionResult result = recognizer.recognize(scene);
+    const RecognitionResult reference = every_part.recognize(scene);
+    ASSERT_TRUE(result.thin_scene) << "seed " << seed;
+    EXPECT_EQ(reference.parts_smaller_than_scene + reference.parts_thicker_than_scene, 0);
+    const int left_out = result.parts_smaller_than_scene + result.parts_thicker_than_scene;
+    EXPECT_LT(left_out, 3) << "seed " << seed;  // never the blade
+    gated += left_out > 0 ? 1 : 0;
+    EXPECT_EQ(result.part, reference.part) << "seed " << seed;
+    EXPECT_NEAR(
+        (result.T_scanner_part.translation_mm - reference.T_scanner_part.translation_mm).norm(), 0,
+        1e-9)
+        << "seed " << seed;
+  }
+  EXPECT_GE(gated, 6);
+}
+
 TEST_F(ThinSceneRecognition, ABaseWithoutTheBladeRejectsItsRibbon) {
   const Recognizer recognizer(*without_blade_, CosmosParameters{}, RecognitionParameters{});
   for (const std::uint64_t seed : kEdgeOnSeeds) {
