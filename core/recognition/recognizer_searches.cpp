@@ -155,7 +155,7 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
       });
     };
     // The parts of closest signature first (signature_rank.hpp); the others only when none of
-    // those fits closely, and otherwise never searched.
+    // those fits closely, in tiers while they fit better, and otherwise never searched.
     std::size_t fitted_first = parts.size();
     if (!scene_points.signature.empty()) {
       const std::vector<PartSignatureDistance> by_signature =
@@ -169,13 +169,27 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
                     [&](const QuickFieldFit& quick) {
                       return quick.on_belt && quick.fit_mm2 <= parameters_.signature_rank.fit_mm2;
                     });
-    if (one_fits_closely) {
-      left_out_by_signature = parts.size() - fitted_first;
-      parts.resize(fitted_first);
-      ranked.resize(fitted_first);
-    } else {
-      quick_fit_parts(fitted_first, parts.size());
+    std::size_t fitted = fitted_first;
+    if (!one_fits_closely) {
+      const auto best_fit_mm2 = [&](std::size_t begin, std::size_t end) {
+        double best = std::numeric_limits<double>::infinity();
+        for (std::size_t k = begin; k < end; ++k) best = std::min(best, ranked[k].fit_mm2);
+        return best;
+      };
+      double best_mm2 = best_fit_mm2(0, fitted);
+      while (fitted < parts.size()) {
+        const std::size_t end = std::min(
+            parts.size(), fitted + static_cast<std::size_t>(parameters_.signature_rank.tier_parts));
+        quick_fit_parts(fitted, end);
+        const double tier_best_mm2 = best_fit_mm2(fitted, end);
+        fitted = end;
+        if (!(tier_best_mm2 < best_mm2)) break;
+        best_mm2 = tier_best_mm2;
+      }
     }
+    left_out_by_signature = parts.size() - fitted;
+    parts.resize(fitted);
+    ranked.resize(fitted);
     result.parts_left_out_by_signature = static_cast<int>(left_out_by_signature);
     std::stable_sort(
         ranked.begin(), ranked.end(),

@@ -10,8 +10,11 @@
 // So the quick fits run first on the parts whose closest view is within ratio times the
 // closest part's distance (at least min_parts of them). When none of those fits the scan as
 // closely as a scan fits its own part (fit_mm2), the scan's own part may be among the others,
-// and they are fitted too: a part left out this way can cost a poorer ranking, never a guess
-// among the wrong parts alone.
+// and they are fitted too, tier_parts at a time in signature order, for as long as each tier
+// holds a part that fits better than every part fitted before it: a scan none of whose first
+// parts fits closely is most often a poor scan (shadowed, seen on a rim) that no part fits
+// closely, and the parts ever farther by signature fit it no better. A part left out this way
+// can cost a poorer ranking, never a guess among the wrong parts alone.
 //
 // A scan's heights are taken above the belt, a view's above its part's lowest point: the
 // signatures compare only scans of one part lying on the belt.
@@ -29,6 +32,7 @@ struct SignatureRankParameters {
   double ratio = 2.5;
   int min_parts = 8;
   double fit_mm2 = 0.3;
+  int tier_parts = 8;
 
   template <class Visitor>
   void visit(Visitor& v) {
@@ -41,6 +45,9 @@ struct SignatureRankParameters {
     v("fit_mm2", fit_mm2,
       "when none of them fits this closely, the other parts are quick-fitted too, mm^2",
       Range{0, 1e6});
+    v("tier_parts", tier_parts,
+      "those this many at a time, while each tier holds a part fitting better than all before",
+      Range{1, 100000});
   }
 };
 
