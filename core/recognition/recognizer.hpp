@@ -190,7 +190,8 @@ struct RecognitionResult {
   int parts_smaller_than_scene = 0;
   int parts_thicker_than_scene = 0;
   // The parts that search never quick-fitted: their signatures were far from the scene's, and
-  // one of those it fitted first fitted closely (signature_rank.hpp).
+  // one of those it fitted first fitted closely, or the last tier fitted after them fitted no
+  // better than the parts before it (signature_rank.hpp).
   int parts_left_out_by_signature = 0;
   std::vector<RecognitionCandidate> candidates;  // spectral order
   RecognitionTimings timings;
