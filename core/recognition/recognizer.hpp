@@ -249,6 +249,10 @@ class Recognizer {
   // empty when it is not. May search the rival's part and the winner's other sizes first.
   std::string decide(const ViewAnalysis& analysis, const ScenePoints& points,
                      ModelSurfaces& surfaces, RecognitionResult& result) const;
+  // Whether the scene's size allows the part (part_size_gate.hpp); a part it does not is
+  // counted in the result as too small or too thick.
+  bool admitted_by_size(int part, const SceneExtent& extent, SceneParts parts,
+                        RecognitionResult& result) const;
   // The part's quick field fit (catalog_rank), what the search over every part ranks it by.
   QuickFieldFit quick_fit(int part, const ScenePoints& scene_points) const;
 

@@ -126,12 +126,7 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
   if (only_parts.empty()) {
     result.parts_smaller_than_scene = result.parts_thicker_than_scene = 0;
     std::erase_if(parts, [&](int part) {
-      const SizeVerdict verdict = judge_part_size(
-          part_extents_[static_cast<std::size_t>(part)], scene_points.extent, scene_points.parts,
-          parameters_.resting.parts_touch_belt, parameters_.size_gate);
-      result.parts_smaller_than_scene += verdict == SizeVerdict::kSmallerThanScene ? 1 : 0;
-      result.parts_thicker_than_scene += verdict == SizeVerdict::kThickerThanScene ? 1 : 0;
-      return verdict != SizeVerdict::kFits;
+      return !admitted_by_size(part, scene_points.extent, scene_points.parts, result);
     });
   }
   const bool quick_ranked =
@@ -314,6 +309,16 @@ bool Recognizer::search_candidate_parts(const ViewAnalysis& scene, const ScenePo
     if (register_part(part.part, part.field_poses)) break;
   }
   return every_part && left_out_by_signature == 0;
+}
+
+bool Recognizer::admitted_by_size(int part, const SceneExtent& extent, SceneParts parts,
+                                  RecognitionResult& result) const {
+  const SizeVerdict verdict =
+      judge_part_size(part_extents_[static_cast<std::size_t>(part)], extent, parts,
+                      parameters_.resting.parts_touch_belt, parameters_.size_gate);
+  result.parts_smaller_than_scene += verdict == SizeVerdict::kSmallerThanScene ? 1 : 0;
+  result.parts_thicker_than_scene += verdict == SizeVerdict::kThickerThanScene ? 1 : 0;
+  return verdict == SizeVerdict::kFits;
 }
 
 QuickFieldFit Recognizer::quick_fit(int part, const ScenePoints& scene_points) const {

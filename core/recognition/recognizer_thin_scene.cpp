@@ -37,12 +37,7 @@ std::string Recognizer::recognize_thin_scene(const RangeImage& scene, SceneParts
   const SceneExtent extent = scene_extent(points, scene);
   result.parts_smaller_than_scene = result.parts_thicker_than_scene = 0;
   for (int part = 0; part < static_cast<int>(model_base_.parts.size()); ++part) {
-    const SizeVerdict verdict =
-        judge_part_size(part_extents_[static_cast<std::size_t>(part)], extent, parts,
-                        parameters_.resting.parts_touch_belt, parameters_.size_gate);
-    result.parts_smaller_than_scene += verdict == SizeVerdict::kSmallerThanScene ? 1 : 0;
-    result.parts_thicker_than_scene += verdict == SizeVerdict::kThickerThanScene ? 1 : 0;
-    if (verdict != SizeVerdict::kFits) continue;
+    if (!admitted_by_size(part, extent, parts, result)) continue;
     const PartSearchModel& model = part_search_model(part);
     const std::optional<SettledPose> quick =
         fit.best_settled(part, part_of(part), model,
