@@ -23,4 +23,24 @@ std::vector<const RecognitionCandidate*> ranked_candidates(
   return ranked;
 }
 
+double two_way_fit(const RecognitionCandidate& candidate) {
+  return candidate.inlier_fraction * candidate.seen_fraction;
+}
+
+const RecognitionCandidate* score_or_fit_winner(
+    const std::vector<const RecognitionCandidate*>& ranked, double examined_score_margin,
+    double two_way_fit_margin) {
+  const RecognitionCandidate* top = nullptr;
+  const RecognitionCandidate* best_fit = nullptr;
+  for (const RecognitionCandidate* candidate : ranked) {
+    if (!candidate->qualified) continue;
+    if (!top) top = candidate;
+    if (top->score - candidate->score < examined_score_margin &&
+        (!best_fit || two_way_fit(*candidate) > two_way_fit(*best_fit)))
+      best_fit = candidate;
+  }
+  if (best_fit && two_way_fit(*best_fit) > two_way_fit(*top) + two_way_fit_margin) return best_fit;
+  return top;
+}
+
 }  // namespace cosmos

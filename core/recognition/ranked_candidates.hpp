@@ -15,4 +15,18 @@ const RecognitionCandidate* best_candidate(const std::vector<RecognitionCandidat
 std::vector<const RecognitionCandidate*> ranked_candidates(
     const std::vector<RecognitionCandidate>& candidates);
 
+// How well a candidate fits both ways: the share of the scene's points on its surface times
+// the share of its placed view where the scene is (surface_seen.hpp).
+double two_way_fit(const RecognitionCandidate& candidate);
+
+// The winner among the qualified candidates of `ranked` (best score first): the best-scored,
+// unless one scoring within examined_score_margin of it fits better both ways by
+// two_way_fit_margin. Then the one of those that fits best both ways wins: each is weighed
+// against the best-scored, not against whichever outweighed it before, so the order of their
+// scores, which differ by registration noise, does not choose among them. nullptr when none
+// qualified.
+const RecognitionCandidate* score_or_fit_winner(
+    const std::vector<const RecognitionCandidate*>& ranked, double examined_score_margin,
+    double two_way_fit_margin);
+
 }  // namespace cosmos

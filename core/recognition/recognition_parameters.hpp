@@ -138,6 +138,12 @@ struct RecognitionParameters {
   // them alone (it cannot pass min_inlier_fraction on all points).
   double plausible_support = 0.45;
   double max_rms_mm = 0.12;
+  // Support and residual each near its limit is no fit: a winner must score (its support,
+  // residual and COSMOS match together) about what a candidate at min_inlier_fraction scores
+  // with a residual of half max_rms_mm. One near the support limit must fit closely, and a
+  // loose fit must explain more of the scene. In a large catalog, a scene whose own part did
+  // not register otherwise went to another part that explained most of it loosely.
+  double min_score = 0.4;
   int min_scene_points = 30;
   // The winner's placed surface must be where the scene shows surface (surface_seen.hpp): a
   // candidate with less of its matched view seen than this neither wins nor rivals. Wrong
@@ -226,6 +232,9 @@ struct RecognitionParameters {
     v("plausible_support", plausible_support, "below this on the coarse points: judged on them",
       Range{0, 1});
     v("max_rms_mm", max_rms_mm, "larger RMS residual: rejected, mm", Range::above(0, 100));
+    v("min_score", min_score,
+      "a lower score (support, residual and COSMOS match together): rejected as unknown",
+      Range{0, 1});
     v("min_scene_points", min_scene_points, "fewer scene control points: rejected",
       Range{0, 1000000});
     v("surface_seen", surface_seen, "where the placed winner's surface is looked up");

@@ -68,9 +68,6 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
   const RecognitionCandidate* shape_rival = nullptr;
   const RecognitionCandidate* winner = nullptr;
   bool best_at_rest = true;
-  const auto two_way_fit = [&](const RecognitionCandidate& candidate) {
-    return candidate.inlier_fraction * candidate.seen_fraction;
-  };
   // A candidate is only as good as its placed surface is seen in the scene (surface_seen.hpp):
   // one that puts surface where the scanner saw none explains the scene's points by chance.
   const auto qualifies = [&](const RecognitionCandidate& candidate) {
@@ -84,19 +81,11 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
     result.seen_fraction = best->seen_fraction;
     best_at_rest = at_rest(*best);
     const std::vector<const RecognitionCandidate*> ranked = ranked_candidates(result.candidates);
-    // Of the qualifying candidates within examined_score_margin of the best, one that fits
-    // better both ways (the scene's points on its surface, its surface where the scene is) by
-    // two_way_fit_margin wins instead. A part that contains the scene (a plate under a
-    // bracket's face) explains its points as well as the scene's own part, and puts surface
-    // where the scanner saw the belt.
-    const RecognitionCandidate* top = nullptr;
-    for (const RecognitionCandidate* candidate : ranked) {
-      if (!candidate->qualified) continue;
-      if (!top) top = winner = candidate;
-      if (top->score - candidate->score < parameters_.ambiguity.examined_score_margin &&
-          two_way_fit(*candidate) > two_way_fit(*winner) + parameters_.ambiguity.two_way_fit_margin)
-        winner = candidate;
-    }
+    // A part that contains the scene (a plate under a bracket's face) explains its points as
+    // well as the scene's own part, and puts surface where the scanner saw the belt: among
+    // candidates scoring alike, the one fitting better both ways wins.
+    winner = score_or_fit_winner(ranked, parameters_.ambiguity.examined_score_margin,
+                                 parameters_.ambiguity.two_way_fit_margin);
     if (winner && parameters_.size_variants.search &&
         !size_variants_[static_cast<std::size_t>(winner->part)].empty()) {
       const int family_part = winner->part;
@@ -317,6 +306,13 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
     result.score = refined.score;
     result.registration_rms_mm = refined.rms_mm;
     result.inlier_fraction = refined.inlier_fraction;
+  }
+  // On the score reported: the pose along the free motion is the one published.
+  if (result.score < parameters_.min_score) {
+    result.part = -1;
+    char score[16];
+    std::snprintf(score, sizeof score, "%.2f", result.score);
+    return std::string("best candidate fits too loosely: score ") + score;
   }
   result.status = RecognitionStatus::kOk;
   return "";

@@ -175,6 +175,51 @@ TEST_F(RecognizerOnRegressionBase, AWinnerWithListedPartsLeftUnsearchedMustShowI
   EXPECT_GE(named, 1);
 }
 
+// A winner scoring under min_score is rejected as fitting too loosely, and one scoring at
+// least that is named as before: with the bar at the median score of ten scans that a
+// recognizer without it names, those below are rejected with that reason and the others are
+// named with the same part and score.
+TEST_F(RecognizerOnRegressionBase, AWinnerScoringUnderTheMinimumIsRejectedAsFittingLoosely) {
+  RecognitionParameters no_bar;
+  no_bar.min_score = 0;
+  const Recognizer unbarred(*base_, CosmosParameters{}, no_bar);
+  std::vector<RangeImage> images;
+  std::vector<RecognitionResult> named;
+  for (std::uint64_t seed = 501; named.size() < 10 && seed < 540; ++seed) {
+    const std::string& name = base_->parts[seed % base_->parts.size()].name;
+    RangeImage image = scan(name, seed);
+    RecognitionResult result = unbarred.recognize(image);
+    if (result.status != RecognitionStatus::kOk) continue;
+    images.push_back(std::move(image));
+    named.push_back(std::move(result));
+  }
+  ASSERT_EQ(named.size(), 10u);
+  std::vector<double> scores;
+  for (const RecognitionResult& result : named) scores.push_back(result.score);
+  std::nth_element(scores.begin(), scores.begin() + 5, scores.end());
+  RecognitionParameters barred = no_bar;
+  barred.min_score = scores[5];
+  const Recognizer recognizer(*base_, CosmosParameters{}, barred);
+  int rejected = 0, kept = 0;
+  for (std::size_t k = 0; k < images.size(); ++k) {
+    const RecognitionResult result = recognizer.recognize(images[k]);
+    if (named[k].score < barred.min_score) {
+      ++rejected;
+      EXPECT_EQ(result.status, RecognitionStatus::kRejected) << k;
+      EXPECT_EQ(result.part, -1) << k;
+      EXPECT_EQ(result.reason.rfind("best candidate fits too loosely: score ", 0), 0u)
+          << result.reason;
+    } else {
+      ++kept;
+      EXPECT_EQ(result.status, RecognitionStatus::kOk) << k;
+      EXPECT_EQ(result.part, named[k].part) << k;
+      EXPECT_DOUBLE_EQ(result.score, named[k].score) << k;
+    }
+  }
+  EXPECT_EQ(rejected, 5);
+  EXPECT_EQ(kept, 5);
+}
+
 // The head and the holes at 100, 110 and 121 % of their catalog size. A scan of the middle
 // holes (seed 44) is explained by no candidate: its best registered candidate, the middle
 // head, puts surface where the scene has none. The search over the candidates' parts stopped
