@@ -18,6 +18,28 @@ std::string percent(double fraction) { return std::to_string(std::lround(100 * f
 
 }  // namespace
 
+Recognizer::SizeOnRibbon Recognizer::size_on_ribbon(const std::vector<SettledPose>& fits) const {
+  SizeOnRibbon sizes;
+  if (fits.empty() || !parameters_.size_variants.search) return sizes;
+  const int family_part = fits.front().part;
+  const auto explaining_size = [&](const SettledPose& fit) {
+    return (fit.part == family_part || is_size_variant(family_part, fit.part)) &&
+           fit.inlier_fraction >= parameters_.thin_scene.min_inlier_fraction;
+  };
+  for (const SettledPose& fit : fits)
+    if (explaining_size(fit) &&
+        (!sizes.fit || fit.fraction_over_belt < sizes.fit->fraction_over_belt))
+      sizes.fit = &fit;
+  if (!sizes.fit) return sizes;
+  sizes.told_apart = std::all_of(fits.begin(), fits.end(), [&](const SettledPose& fit) {
+    return !explaining_size(fit) || fit.part == sizes.fit->part ||
+           (fit.fraction_over_belt - sizes.fit->fraction_over_belt >=
+                parameters_.size_variants.fit_margin &&
+            sizes.fit->inlier_fraction >= fit.inlier_fraction);
+  });
+  return sizes;
+}
+
 std::string Recognizer::recognize_thin_scene(const RangeImage& scene, SceneParts parts,
                                              RecognitionResult& result) const {
   const ThinSceneParameters& thin = parameters_.thin_scene;
@@ -83,21 +105,23 @@ std::string Recognizer::recognize_thin_scene(const RangeImage& scene, SceneParts
   result.timings.registration_ms += elapsed_ms(search_start);
   result.thin_scene = true;
   if (fits.empty()) return "no part stands inside its thin silhouette";
-  const SettledPose& best = fits.front();
+  const SizeOnRibbon sizes = size_on_ribbon(fits);
+  const SettledPose& best = sizes.told_apart ? *sizes.fit : fits.front();
   result.best_candidate_part = best.part;
   const auto name = [&](int part) { return part_of(part).name; };
   if (best.inlier_fraction < thin.min_inlier_fraction)
     return "its best part, " + name(best.part) + ", lies near only " +
            percent(best.inlier_fraction) + " % of its range points";
   // Another part fitting nearly as well, or another size of it standing inside the silhouette
-  // and explaining the ribbon at all, leaves the scene ambiguous: a wrong part is worse.
-  for (std::size_t k = 1; k < fits.size(); ++k) {
-    const SettledPose& other = fits[k];
+  // and explaining the ribbon at all, unless the fits told the sizes apart, leaves the scene
+  // ambiguous: a wrong part is worse.
+  for (const SettledPose& other : fits) {
     if (other.part == best.part) continue;
     if (result.runner_up_part < 0) result.runner_up_part = other.part;
-    const bool other_size =
-        is_size_variant(best.part, other.part) && other.inlier_fraction >= thin.min_inlier_fraction;
-    if (other_size || other.mean_square_mm2 < thin.ambiguity_factor * best.mean_square_mm2)
+    const bool other_size = is_size_variant(best.part, other.part);
+    if (other_size && sizes.told_apart) continue;
+    if ((other_size && other.inlier_fraction >= thin.min_inlier_fraction) ||
+        other.mean_square_mm2 < thin.ambiguity_factor * best.mean_square_mm2)
       return "ambiguous between " + name(best.part) + " and " + name(other.part);
   }
   result.part = best.part;

@@ -2,9 +2,10 @@
 // of the blade (150 mm long, under a millimetre thick) in random poses that show it edge-on:
 // no CSMP and too few control points to register, only a ribbon of range points. A base that
 // holds the blade names it from that ribbon, in its pose (ADD-S within 5 % of its diameter,
-// most within 2 %); a base without it rejects the scene rather than fit another part into the
-// ribbon; with the path switched off, or without the belt mask that tells the parts apart,
-// the scene is rejected as before.
+// most within 2 %); a base of the blade at two sizes names a ribbon's size only when the other
+// reaches over the belt beyond the ribbon's ends, and never the wrong one; a base without it
+// rejects the scene rather than fit another part into the ribbon; with the path switched off, or
+// without the belt mask that tells the parts apart, the scene is rejected as before.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -50,9 +51,12 @@ class ThinSceneRecognition : public ::testing::Test {
         std::make_unique<ModelBase>(build_model_base(family, ScannerParameters{}, settings));
     const PartEntry& blade = catalog_->at("blade");
     blade_mesh_ = std::make_unique<TriangleMesh>(load_mesh(blade.mesh_path, blade.size_mm));
+    larger_blade_mesh_ =
+        std::make_unique<TriangleMesh>(load_mesh(larger.mesh_path, larger.size_mm));
   }
   static void TearDownTestSuite() {
     blade_mesh_.reset();
+    larger_blade_mesh_.reset();
     without_blade_.reset();
     blade_sizes_.reset();
     with_blade_.reset();
@@ -68,10 +72,11 @@ class ThinSceneRecognition : public ::testing::Test {
     return build_model_base(catalog, ScannerParameters{}, settings);
   }
 
-  static RangeImage edge_on_scan(std::uint64_t seed) {
+  static RangeImage edge_on_scan(std::uint64_t seed, bool larger = false) {
     ScannerParameters scanner;
     scanner.seed = seed;
-    return scan_single_part(*blade_mesh_, "blade", random_rotation(seed), scanner,
+    return scan_single_part(larger ? *larger_blade_mesh_ : *blade_mesh_,
+                            larger ? "blade-110" : "blade", random_rotation(seed), scanner,
                             ConditioningParameters{});
   }
 
@@ -80,6 +85,7 @@ class ThinSceneRecognition : public ::testing::Test {
   static inline std::unique_ptr<ModelBase> without_blade_;
   static inline std::unique_ptr<ModelBase> blade_sizes_;  // the blade and a copy 10 % larger
   static inline std::unique_ptr<TriangleMesh> blade_mesh_;
+  static inline std::unique_ptr<TriangleMesh> larger_blade_mesh_;
 };
 
 TEST_F(ThinSceneRecognition, ABladeSeenEdgeOnIsNamedFromItsRangePointsInItsPose) {
@@ -163,6 +169,31 @@ TEST_F(ThinSceneRecognition, ARibbonNeverNamesTheWrongSizeOfTheBlade) {
   // ... while a ribbon the larger size cannot explain (its ends would reach over the belt)
   // is still named.
   EXPECT_GE(named, 3);
+}
+
+// The blade and the blade 10 % larger, each seen edge-on in the same poses: a size is named
+// from its ribbon only when the other size, fitted to the whole ribbon too, reaches over the
+// belt beyond its ends by size_variants.fit_margin more, and then it is the scanned size. With
+// sizes never told apart (a margin of 1) at least three fewer ribbons are named.
+TEST_F(ThinSceneRecognition, TheBladesSizesAreToldApartOnARibbonByTheBeltBeyondItsEnds) {
+  const Recognizer recognizer(*blade_sizes_, CosmosParameters{}, RecognitionParameters{});
+  RecognitionParameters never_told_apart;
+  never_told_apart.size_variants.fit_margin = 1;
+  const Recognizer undecided(*blade_sizes_, CosmosParameters{}, never_told_apart);
+  int named = 0, named_undecided = 0;
+  for (const bool larger : {false, true})
+    for (const std::uint64_t seed : kEdgeOnSeeds) {
+      const RangeImage scene = edge_on_scan(seed, larger);
+      const RecognitionResult result = recognizer.recognize(scene);
+      if (!result.thin_scene) continue;
+      if (undecided.recognize(scene).status == RecognitionStatus::kOk) ++named_undecided;
+      if (result.status != RecognitionStatus::kOk) continue;
+      ++named;
+      EXPECT_EQ(blade_sizes_->parts[static_cast<std::size_t>(result.part)].name,
+                larger ? "blade-110" : "blade")
+          << "seed " << seed;
+    }
+  EXPECT_GE(named, named_undecided + 3);
 }
 
 TEST_F(ThinSceneRecognition, SwitchedOffTheRibbonIsRejectedForItsMissingSurface) {
