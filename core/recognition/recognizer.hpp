@@ -267,7 +267,8 @@ class Recognizer {
   // and each stands over the belt by size_variants.fit_margin more: a larger size fitted to
   // the whole ribbon reaches over the belt beyond its ends. A smaller size's ribbon points
   // left unexplained tell nothing: a failed pose search leaves them too. One whose extra
-  // length lies in a shadow fits alike and is not told apart.
+  // length lies in a shadow fits alike and is not told apart. Nothing is told apart when the
+  // best fit by distance does not explain the ribbon.
   struct SizeOnRibbon {
     const SettledPose* fit = nullptr;  // into the fits; nullptr: none
     bool told_apart = false;

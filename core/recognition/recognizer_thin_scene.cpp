@@ -26,6 +26,8 @@ Recognizer::SizeOnRibbon Recognizer::size_on_ribbon(const std::vector<SettledPos
     return (fit.part == family_part || is_size_variant(family_part, fit.part)) &&
            fit.inlier_fraction >= parameters_.thin_scene.min_inlier_fraction;
   };
+  // The best fit by distance explaining too little is rejected so, whatever the other sizes.
+  if (!explaining_size(fits.front())) return sizes;
   for (const SettledPose& fit : fits)
     if (explaining_size(fit) &&
         (!sizes.fit || fit.fraction_over_belt < sizes.fit->fraction_over_belt))
