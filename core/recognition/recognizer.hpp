@@ -261,19 +261,16 @@ class Recognizer {
   // when it is not. `parts` as for recognize: one part bounds the parts' extent.
   std::string recognize_thin_scene(const RangeImage& scene, SceneParts parts,
                                    RecognitionResult& result) const;
-  // The size of the best-fitting shape that a ribbon's fits name: of its sizes that explain
-  // the ribbon (thin_scene.min_inlier_fraction of its points), the one standing least over
-  // measured belt, told apart when it explains as much of the ribbon as each other such size
-  // and each stands over the belt by size_variants.fit_margin more: a larger size fitted to
-  // the whole ribbon reaches over the belt beyond its ends. A smaller size's ribbon points
-  // left unexplained tell nothing: a failed pose search leaves them too. One whose extra
-  // length lies in a shadow fits alike and is not told apart. Nothing is told apart when the
-  // best fit by distance does not explain the ribbon.
-  struct SizeOnRibbon {
-    const SettledPose* fit = nullptr;  // into the fits; nullptr: none
-    bool told_apart = false;
-  };
-  SizeOnRibbon size_on_ribbon(const std::vector<SettledPose>& fits) const;
+  // The size of the best-fitting shape that a ribbon's fits tell apart from its other sizes
+  // (into `fits`; nullptr: none): of its sizes that explain the ribbon
+  // (thin_scene.min_inlier_fraction of its points), the one standing least over measured
+  // belt, when it explains as much of the ribbon as each other such size and each stands over
+  // the belt by size_variants.fit_margin more: a larger size fitted to the whole ribbon
+  // reaches over the belt beyond its ends. A smaller size's ribbon points left unexplained
+  // tell nothing: a failed pose search leaves them too. One whose extra length lies in a
+  // shadow fits alike and is not told apart. None is when the best fit by distance does not
+  // explain the ribbon.
+  const SettledPose* size_told_apart_on_ribbon(const std::vector<SettledPose>& fits) const;
   RecognitionCandidate verify(const ViewAnalysis& scene, const ScenePoints& scene_points,
                               const SpectralCandidate& selected, ModelSurfaces& surfaces,
                               double& matching_ms, double& registration_ms) const;

@@ -18,28 +18,27 @@ std::string percent(double fraction) { return std::to_string(std::lround(100 * f
 
 }  // namespace
 
-Recognizer::SizeOnRibbon Recognizer::size_on_ribbon(const std::vector<SettledPose>& fits) const {
-  SizeOnRibbon sizes;
-  if (fits.empty() || !parameters_.size_variants.search) return sizes;
+const SettledPose* Recognizer::size_told_apart_on_ribbon(
+    const std::vector<SettledPose>& fits) const {
+  if (fits.empty() || !parameters_.size_variants.search) return nullptr;
   const int family_part = fits.front().part;
   const auto explaining_size = [&](const SettledPose& fit) {
     return (fit.part == family_part || is_size_variant(family_part, fit.part)) &&
            fit.inlier_fraction >= parameters_.thin_scene.min_inlier_fraction;
   };
   // The best fit by distance explaining too little is rejected so, whatever the other sizes.
-  if (!explaining_size(fits.front())) return sizes;
+  if (!explaining_size(fits.front())) return nullptr;
+  const SettledPose* least_over_belt = &fits.front();
   for (const SettledPose& fit : fits)
-    if (explaining_size(fit) &&
-        (!sizes.fit || fit.fraction_over_belt < sizes.fit->fraction_over_belt))
-      sizes.fit = &fit;
-  if (!sizes.fit) return sizes;
-  sizes.told_apart = std::all_of(fits.begin(), fits.end(), [&](const SettledPose& fit) {
-    return !explaining_size(fit) || fit.part == sizes.fit->part ||
-           (fit.fraction_over_belt - sizes.fit->fraction_over_belt >=
+    if (explaining_size(fit) && fit.fraction_over_belt < least_over_belt->fraction_over_belt)
+      least_over_belt = &fit;
+  const bool told_apart = std::all_of(fits.begin(), fits.end(), [&](const SettledPose& fit) {
+    return !explaining_size(fit) || fit.part == least_over_belt->part ||
+           (fit.fraction_over_belt - least_over_belt->fraction_over_belt >=
                 parameters_.size_variants.fit_margin &&
-            sizes.fit->inlier_fraction >= fit.inlier_fraction);
+            least_over_belt->inlier_fraction >= fit.inlier_fraction);
   });
-  return sizes;
+  return told_apart ? least_over_belt : nullptr;
 }
 
 std::string Recognizer::recognize_thin_scene(const RangeImage& scene, SceneParts parts,
@@ -107,8 +106,8 @@ std::string Recognizer::recognize_thin_scene(const RangeImage& scene, SceneParts
   result.timings.registration_ms += elapsed_ms(search_start);
   result.thin_scene = true;
   if (fits.empty()) return "no part stands inside its thin silhouette";
-  const SizeOnRibbon sizes = size_on_ribbon(fits);
-  const SettledPose& best = sizes.told_apart ? *sizes.fit : fits.front();
+  const SettledPose* named_size = size_told_apart_on_ribbon(fits);
+  const SettledPose& best = named_size ? *named_size : fits.front();
   result.best_candidate_part = best.part;
   const auto name = [&](int part) { return part_of(part).name; };
   if (best.inlier_fraction < thin.min_inlier_fraction)
@@ -121,7 +120,7 @@ std::string Recognizer::recognize_thin_scene(const RangeImage& scene, SceneParts
     if (other.part == best.part) continue;
     if (result.runner_up_part < 0) result.runner_up_part = other.part;
     const bool other_size = is_size_variant(best.part, other.part);
-    if (other_size && sizes.told_apart) continue;
+    if (other_size && named_size) continue;
     if ((other_size && other.inlier_fraction >= thin.min_inlier_fraction) ||
         other.mean_square_mm2 < thin.ambiguity_factor * best.mean_square_mm2)
       return "ambiguous between " + name(best.part) + " and " + name(other.part);
