@@ -73,9 +73,11 @@ std::vector<EvaluationRecord> run_tests(const std::vector<EvaluationTest>& plan,
   });
   std::mutex progress_mutex;
   const auto work = [&] {
+    ViewAnalysisWorkspace workspace;
     try {
       for (std::size_t i = next++; i < plan.size(); i = next++) {
-        records[i] = run_evaluation_test(plan[i], parts, scanner, conditioning, recognizer, base);
+        records[i] =
+            run_evaluation_test(plan[i], parts, scanner, conditioning, recognizer, base, workspace);
         const std::lock_guard lock(progress_mutex);
         const int finished = static_cast<int>(++done);
         const int total = static_cast<int>(plan.size());

@@ -79,6 +79,12 @@ Recognizer::Recognizer(const ModelBase& model_base, const CosmosParameters& cosm
 }
 
 RecognitionResult Recognizer::recognize(const RangeImage& scene, SceneParts parts) const {
+  ViewAnalysisWorkspace workspace;
+  return recognize(scene, workspace, parts);
+}
+
+RecognitionResult Recognizer::recognize(const RangeImage& scene, ViewAnalysisWorkspace& workspace,
+                                        SceneParts parts) const {
   const StageClock::time_point start = StageClock::now();
   if (scene.width() == 0 || scene.count_valid() == 0) {
     RecognitionResult empty;
@@ -86,7 +92,7 @@ RecognitionResult Recognizer::recognize(const RangeImage& scene, SceneParts part
     empty.timings.total_ms = elapsed_ms(start);
     return empty;
   }
-  const ViewAnalysis analysis = analyze_view(scene, cosmos_);
+  const ViewAnalysis analysis = analyze_view(scene, cosmos_, workspace);
   return recognize_analyzed(scene, analysis, elapsed_ms(start), parts);
 }
 

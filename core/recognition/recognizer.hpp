@@ -211,6 +211,10 @@ class Recognizer {
   // `parts`: whether the scene holds one part, as a scan of a single part does, or possibly
   // several touching (part_size_gate.hpp: only one part bounds a part's size by the scene's).
   RecognitionResult recognize(const RangeImage& scene, SceneParts parts = SceneParts::kOne) const;
+  // The same, analysing the scene with the caller's workspace (one per thread): a run of scans
+  // reuses what the last one's analysis learnt, as the cell's part builders do.
+  RecognitionResult recognize(const RangeImage& scene, ViewAnalysisWorkspace& workspace,
+                              SceneParts parts = SceneParts::kOne) const;
   // For a scene whose chapter-3 analysis already exists (the incremental builder's).
   RecognitionResult recognize_analyzed(const RangeImage& scene, const ViewAnalysis& analysis,
                                        double features_ms = 0,

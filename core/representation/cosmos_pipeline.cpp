@@ -5,14 +5,44 @@
 
 namespace cosmos {
 
-ViewAnalysis analyze_view(const RangeImage& image, const CosmosParameters& parameters) {
-  ViewAnalysis analysis;
-  analysis.frames = fit_local_surfaces(image, parameters.fit);
+namespace {
+
+// Chapter 3 from the fitted frames on.
+void analyze_fitted_view(const RangeImage& image, const CosmosParameters& parameters,
+                         ViewAnalysis& analysis) {
   smooth_curvatures(analysis.frames, image.pixel_size_x_mm, image.pixel_size_y_mm,
                     parameters.smoothing);
   analysis.field = classify_surface(analysis.frames, image.pixel_size_x_mm, image.pixel_size_y_mm,
                                     parameters.shape_index);
   finish_view_analysis(analysis, parameters);
+}
+
+}  // namespace
+
+ViewAnalysis analyze_view(const RangeImage& image, const CosmosParameters& parameters) {
+  ViewAnalysis analysis;
+  analysis.frames = fit_local_surfaces(image, parameters.fit);
+  analyze_fitted_view(image, parameters, analysis);
+  return analysis;
+}
+
+PartialWindowKernels& ViewAnalysisWorkspace::partial_window_kernels(
+    const SurfaceFitParameters& fit) {
+  if (!kernels_ || kernels_->side() != LocalSurfaceFitter::window_side(fit) ||
+      kernels_->bicubic() != fit.bicubic)
+    kernels_ =
+        std::make_unique<PartialWindowKernels>(LocalSurfaceFitter::partial_window_kernels_for(
+            fit, PartialWindowKernels::kStreamEntriesLog2));
+  return *kernels_;
+}
+
+ViewAnalysis analyze_view(const RangeImage& image, const CosmosParameters& parameters,
+                          ViewAnalysisWorkspace& workspace) {
+  ViewAnalysis analysis;
+  analysis.frames = DarbouxFrameField(image.width(), image.height());
+  fit_local_surfaces(image, parameters.fit, analysis.frames,
+                     workspace.partial_window_kernels(parameters.fit));
+  analyze_fitted_view(image, parameters, analysis);
   return analysis;
 }
 

@@ -5,11 +5,17 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <stdexcept>
+#include <utility>
 
 #include "core/surface/window_monomials.hpp"
 
 namespace cosmos {
 namespace {
+
+int half_window_of(const SurfaceFitParameters& parameters) {
+  return std::clamp(parameters.window_size / 2, 1, LocalSurfaceFitter::kMaxWindowSize / 2);
+}
 
 // Derivatives at (u, v) of the monomials, as rows z, z_u, z_v, z_uu/2, z_uv, z_vv/2 (the
 // quadric coefficients of the Taylor expansion at that point).
@@ -92,18 +98,47 @@ void darboux_frame_from_derivatives(const SurfaceDerivatives& d, float* f) {
   std::copy(values.begin(), values.end(), f);
 }
 
+int LocalSurfaceFitter::window_side(const SurfaceFitParameters& parameters) {
+  return 2 * half_window_of(parameters) + 1;
+}
+
+PartialWindowKernels LocalSurfaceFitter::partial_window_kernels_for(
+    const SurfaceFitParameters& parameters, int entries_log2) {
+  return PartialWindowKernels(window_side(parameters), parameters.bicubic, entries_log2);
+}
+
 LocalSurfaceFitter::LocalSurfaceFitter(const SurfaceFitParameters& parameters,
                                        double pixel_size_x_mm, double pixel_size_y_mm,
                                        int max_width)
+    : LocalSurfaceFitter(
+          parameters, pixel_size_x_mm, pixel_size_y_mm, max_width,
+          std::make_unique<PartialWindowKernels>(partial_window_kernels_for(parameters)), nullptr) {
+}
+
+LocalSurfaceFitter::LocalSurfaceFitter(const SurfaceFitParameters& parameters,
+                                       double pixel_size_x_mm, double pixel_size_y_mm,
+                                       int max_width, PartialWindowKernels& kernels)
+    : LocalSurfaceFitter(parameters, pixel_size_x_mm, pixel_size_y_mm, max_width, nullptr,
+                         &kernels) {}
+
+LocalSurfaceFitter::LocalSurfaceFitter(const SurfaceFitParameters& parameters,
+                                       double pixel_size_x_mm, double pixel_size_y_mm,
+                                       int max_width,
+                                       std::unique_ptr<PartialWindowKernels> own_kernels,
+                                       PartialWindowKernels* shared_kernels)
     : parameters_(parameters),
       pixel_size_x_mm_(pixel_size_x_mm),
       pixel_size_y_mm_(pixel_size_y_mm),
-      half_window_(std::clamp(parameters.window_size / 2, 1, kMaxWindowSize / 2)),
+      half_window_(half_window_of(parameters)),
       side_(2 * half_window_ + 1),
       basis_size_(parameters.bicubic ? kBicubicTerms : kBiquadraticTerms),
       separable_(half_window_, parameters.bicubic ? 3 : 2, max_width),
-      partial_kernels_(side_, parameters.bicubic),
+      own_kernels_(std::move(own_kernels)),
+      partial_kernels_(own_kernels_ ? own_kernels_.get() : shared_kernels),
       fits_(static_cast<std::size_t>(std::max(max_width, 1)), 0.0f) {
+  if (partial_kernels_->side() != side_ || partial_kernels_->bicubic() != parameters.bicubic)
+    throw std::invalid_argument(
+        "LocalSurfaceFitter: the shared kernel table is for another fit window");
   const int samples = side_ * side_;
   Eigen::MatrixXd design(samples, basis_size_);
   for (int dv = -half_window_, k = 0; dv <= half_window_; ++dv)
@@ -241,7 +276,7 @@ bool LocalSurfaceFitter::fit_partial_window(const RangeImage& image, int column,
     }
   }
   if (count < parameters_.min_samples) return false;
-  const PartialWindowKernels::Kernel* kernel = partial_kernels_.kernel(valid, count);
+  const PartialWindowKernels::Kernel* kernel = partial_kernels_->kernel(valid, count);
   if (kernel == nullptr) return false;
   QuadricCoefficients coefficients = QuadricCoefficients::Zero();
   for (int k = 0; k < side_ * side_; ++k)
@@ -329,12 +364,27 @@ void LocalSurfaceFitter::link_row(const RangeImage& image, int row, DarbouxFrame
   }
 }
 
+namespace {
+
+void fit_rows(const RangeImage& image, LocalSurfaceFitter& fitter, DarbouxFrameField& field) {
+  for (int row = 0; row < image.height(); ++row) fitter.fit_row(image, row, field);
+  for (int row = 0; row < image.height(); ++row) fitter.link_row(image, row, field);
+}
+
+}  // namespace
+
 void fit_local_surfaces(const RangeImage& image, const SurfaceFitParameters& parameters,
                         DarbouxFrameField& field) {
   LocalSurfaceFitter fitter(parameters, image.pixel_size_x_mm, image.pixel_size_y_mm,
                             image.width());
-  for (int row = 0; row < image.height(); ++row) fitter.fit_row(image, row, field);
-  for (int row = 0; row < image.height(); ++row) fitter.link_row(image, row, field);
+  fit_rows(image, fitter, field);
+}
+
+void fit_local_surfaces(const RangeImage& image, const SurfaceFitParameters& parameters,
+                        DarbouxFrameField& field, PartialWindowKernels& kernels) {
+  LocalSurfaceFitter fitter(parameters, image.pixel_size_x_mm, image.pixel_size_y_mm, image.width(),
+                            kernels);
+  fit_rows(image, fitter, field);
 }
 
 DarbouxFrameField fit_local_surfaces(const RangeImage& image,

@@ -8,6 +8,7 @@
 // edge-awareness the thesis asks for in §3.5.2 and §7.2.1).
 #include <Eigen/Core>
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "core/cosmos_parameters.hpp"
@@ -35,6 +36,18 @@ class LocalSurfaceFitter {
 
   LocalSurfaceFitter(const SurfaceFitParameters& parameters, double pixel_size_x_mm,
                      double pixel_size_y_mm, int max_width);
+  // With a kernel table that outlives the fitter and is shared by the fitters of a stream of
+  // images, one after another: each image's silhouettes and holes repeat the last one's
+  // validity patterns, whose kernels are then solved once, not once per image. Its window must
+  // be partial_window_kernels_for(parameters)'s (std::invalid_argument otherwise).
+  LocalSurfaceFitter(const SurfaceFitParameters& parameters, double pixel_size_x_mm,
+                     double pixel_size_y_mm, int max_width, PartialWindowKernels& kernels);
+
+  // The side of the windows a fitter with `parameters` fits, and a kernel table for them.
+  static int window_side(const SurfaceFitParameters& parameters);
+  static PartialWindowKernels partial_window_kernels_for(
+      const SurfaceFitParameters& parameters,
+      int entries_log2 = PartialWindowKernels::kImageEntriesLog2);
 
   // Fits row `row` of the image into `out` (needs image rows row +- window size). Fitting
   // rows in increasing order reuses the separable row filters.
@@ -45,6 +58,11 @@ class LocalSurfaceFitter {
   void link_row(const RangeImage& image, int row, DarbouxFrameField& out) const;
 
  private:
+  LocalSurfaceFitter(const SurfaceFitParameters& parameters, double pixel_size_x_mm,
+                     double pixel_size_y_mm, int max_width,
+                     std::unique_ptr<PartialWindowKernels> own_kernels,
+                     PartialWindowKernels* shared_kernels);
+
   using WindowSamples = std::array<double, kMaxWindowSize * kMaxWindowSize>;
   using QuadricCoefficients = Eigen::Matrix<double, 6, 1>;
 
@@ -70,8 +88,9 @@ class LocalSurfaceFitter {
   // Orthonormal basis of the polynomial space over the window (rows): residual = |z|^2 - |Q z|^2.
   Eigen::MatrixXd residual_basis_;
   SeparableWindowFit separable_;
-  // Logically const: a cache whose contents never change a result.
-  mutable PartialWindowKernels partial_kernels_;
+  // A cache whose contents never change a result: the fitter's own, or a shared one.
+  std::unique_ptr<PartialWindowKernels> own_kernels_;
+  PartialWindowKernels* partial_kernels_;
   std::vector<float> fits_;  // per column of the current row: 1 where the separable fit holds
 };
 
@@ -80,5 +99,8 @@ DarbouxFrameField fit_local_surfaces(const RangeImage& image,
 // Into a field of the image's size (every pixel is written): no allocation of the field.
 void fit_local_surfaces(const RangeImage& image, const SurfaceFitParameters& parameters,
                         DarbouxFrameField& field);
+// The same with a shared kernel table (the fitter's constructor above).
+void fit_local_surfaces(const RangeImage& image, const SurfaceFitParameters& parameters,
+                        DarbouxFrameField& field, PartialWindowKernels& kernels);
 
 }  // namespace cosmos

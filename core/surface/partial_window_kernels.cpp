@@ -9,10 +9,6 @@ namespace cosmos {
 namespace {
 
 constexpr int kMinBicubicSamples = 16;
-// 2048 kernels (2.4 MB for 5 x 5 windows): the silhouettes, borders and holes of a catalog
-// scan repeat more validity patterns than a small table keeps, and every miss solves a
-// least-squares system; the storage costs nothing until an entry is filled.
-constexpr int kEntriesLog2 = 11;
 
 bool is_valid(const PartialWindowKernels::Mask& mask, int k) {
   return ((mask[static_cast<std::size_t>(k / 64)] >> (k % 64)) & 1u) != 0;
@@ -20,10 +16,12 @@ bool is_valid(const PartialWindowKernels::Mask& mask, int k) {
 
 }  // namespace
 
-PartialWindowKernels::PartialWindowKernels(int side, bool bicubic)
-    : side_(side), bicubic_(bicubic) {
+PartialWindowKernels::PartialWindowKernels(int side, bool bicubic, int entries_log2)
+    : side_(side), bicubic_(bicubic), entries_log2_(entries_log2) {
   if (side < 3 || side % 2 == 0 || side * side > kMaxSamples)
     throw std::invalid_argument("PartialWindowKernels: window side must be odd, 3..11");
+  if (entries_log2 < 1 || entries_log2 > 20)
+    throw std::invalid_argument("PartialWindowKernels: entries_log2 must be 1..20");
   const int half = side / 2;
   for (int k = 0; k < side * side; ++k) {
     const Eigen::Matrix<double, kBicubicTerms, 1> m =
@@ -31,7 +29,7 @@ PartialWindowKernels::PartialWindowKernels(int side, bool bicubic)
     monomials_.push_back(m);
     outer_products_.push_back(m * m.transpose());
   }
-  const std::size_t entries = std::size_t{1} << kEntriesLog2;
+  const std::size_t entries = std::size_t{1} << entries_log2_;
   const std::size_t kernel_size = 6 * static_cast<std::size_t>(side * side);
   kernel_storage_.reset(new double[entries * kernel_size]);
   entries_.reserve(entries);
@@ -73,7 +71,7 @@ const PartialWindowKernels::Kernel* PartialWindowKernels::kernel(const Mask& mas
                                                                  int valid_count) {
   std::uint64_t hash = 0;
   for (std::uint64_t word : mask) hash = (hash ^ word) * 0x9E3779B97F4A7C15ULL;
-  const std::size_t index = static_cast<std::size_t>(hash >> (64 - kEntriesLog2));
+  const std::size_t index = static_cast<std::size_t>(hash >> (64 - entries_log2_));
   Entry& entry = entries_[index];
   if (!entry.filled || entry.mask != mask) {
     entry.mask = mask;

@@ -114,10 +114,11 @@ EvaluationRecord run_evaluation_test(const EvaluationTest& test,
                                      const std::vector<EvaluationPart>& parts,
                                      const ScannerParameters& scanner,
                                      const ConditioningParameters& conditioning,
-                                     const Recognizer& recognizer, const ModelBase& base) {
+                                     const Recognizer& recognizer, const ModelBase& base,
+                                     ViewAnalysisWorkspace& workspace) {
   const EvaluationPart& part = parts[static_cast<std::size_t>(test.part)];
   const RangeImage image = scan_evaluation_test(test, parts, scanner, conditioning);
-  const RecognitionResult result = recognizer.recognize(image);
+  const RecognitionResult result = recognizer.recognize(image, workspace);
 
   EvaluationRecord record;
   record.test_index = test.index;

@@ -62,11 +62,13 @@ RangeImage scan_evaluation_test(const EvaluationTest& test,
                                 const ScannerParameters& scanner,
                                 const ConditioningParameters& conditioning);
 
-// Scans the test's part and recognizes it. Thread-safe: everything shared is read-only.
+// Scans the test's part and recognizes it, analysing the scan with `workspace` (the calling
+// thread's). Thread-safe: everything else shared is read-only.
 EvaluationRecord run_evaluation_test(const EvaluationTest& test,
                                      const std::vector<EvaluationPart>& parts,
                                      const ScannerParameters& scanner,
                                      const ConditioningParameters& conditioning,
-                                     const Recognizer& recognizer, const ModelBase& base);
+                                     const Recognizer& recognizer, const ModelBase& base,
+                                     ViewAnalysisWorkspace& workspace);
 
 }  // namespace cosmos

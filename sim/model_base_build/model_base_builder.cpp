@@ -80,11 +80,11 @@ struct BuildJobs {
   std::size_t views_per_part() const { return view_indices.size(); }
 };
 
-void analyze_job(const ModelBaseBuildSettings& settings, ModelViewRenderer& renderer, int part,
-                 int view_index, ViewResult& result) {
+void analyze_job(const ModelBaseBuildSettings& settings, ModelViewRenderer& renderer,
+                 ViewAnalysisWorkspace& workspace, int part, int view_index, ViewResult& result) {
   const ModelView scanned = renderer.scan_view(view_index);
   if (scanned.image.width() == 0 || scanned.image.count_valid() == 0) return;
-  ViewAnalysis analysis = analyze_view(scanned.image, settings.cosmos);
+  ViewAnalysis analysis = analyze_view(scanned.image, settings.cosmos, workspace);
   ModelBaseView& view = result.view;
   view.part_index = part;
   view.view_index = view_index;
@@ -104,6 +104,7 @@ void analyze_job(const ModelBaseBuildSettings& settings, ModelViewRenderer& rend
 void run_worker(BuildJobs& jobs) {
   std::unique_ptr<ModelViewRenderer> renderer;  // one Embree scene per part and worker
   int renderer_part = -1;
+  ViewAnalysisWorkspace workspace;  // the worker's views, one after another
   const std::size_t total = jobs.results.size();
   try {
     for (std::size_t job = jobs.next_job++; job < total && !jobs.failed; job = jobs.next_job++) {
@@ -117,7 +118,7 @@ void run_worker(BuildJobs& jobs) {
             jobs.settings.conditioning, kViewSphereSubdivisions);
         renderer_part = part;
       }
-      analyze_job(jobs.settings, *renderer, part, view_index, jobs.results[job]);
+      analyze_job(jobs.settings, *renderer, workspace, part, view_index, jobs.results[job]);
       ++jobs.done_per_part[static_cast<std::size_t>(part)];
       jobs.progressed.notify_one();
     }

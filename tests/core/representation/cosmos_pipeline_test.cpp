@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
+#include <vector>
 
 #include "tests/core/analytic_fixture.hpp"
 
@@ -92,6 +94,41 @@ TEST(CosmosPipeline, CylinderSpectrumPeaksAtTheRidgeShapeIndex) {
   EXPECT_TRUE(peak == 149 || peak == 150) << peak;
   EXPECT_GE(spectrum_mass(analysis.spectrum, 149, 150), 0.99);
   EXPECT_NEAR(analysis.moments[0], 0.75, 0.005);
+}
+
+template <class T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+}
+
+void expect_same_analysis(const ViewAnalysis& reused, const ViewAnalysis& fresh) {
+  for (int m = 0; m < kFrameComponents; ++m)
+    EXPECT_TRUE(same_bits(reused.frames.frame[m].values(), fresh.frames.frame[m].values())) << m;
+  EXPECT_TRUE(same_bits(reused.frames.valid.values(), fresh.frames.valid.values()));
+  EXPECT_TRUE(same_bits(reused.field.shape_index.values(), fresh.field.shape_index.values()));
+  EXPECT_TRUE(
+      same_bits(reused.field.curvedness_per_mm.values(), fresh.field.curvedness_per_mm.values()));
+  EXPECT_EQ(reused.view.patches.size(), fresh.view.patches.size());
+  EXPECT_EQ(reused.valid_pixels, fresh.valid_pixels);
+  for (std::size_t k = 0; k < fresh.moments.size(); ++k)
+    EXPECT_EQ(reused.moments[k], fresh.moments[k]) << k;
+}
+
+TEST(CosmosPipeline, AnalysesSharingAWorkspaceEqualFreshOnesBitForBit) {
+  // Rims, corners and noise leave many windows partial, each image its own patterns and some
+  // of the last one's; the window changes once, so the workspace's table must too.
+  const std::vector<AnalyticSurface> surfaces = {
+      analytic(AnalyticShape::kSphere, 0.01), analytic(AnalyticShape::kBoxCorner, 0.01, 30),
+      analytic(AnalyticShape::kTorus, 0.01), analytic(AnalyticShape::kSphere, 0.01)};
+  ViewAnalysisWorkspace workspace;
+  CosmosParameters parameters;
+  for (std::size_t i = 0; i < surfaces.size(); ++i) {
+    SCOPED_TRACE(i);
+    parameters.fit.window_size = i == 2 ? 7 : 5;
+    const ViewAnalysis fresh = analyze_view(surfaces[i].range, parameters);
+    ASSERT_GT(surfaces[i].range.count_valid(), fresh.valid_pixels);  // some windows partial
+    expect_same_analysis(analyze_view(surfaces[i].range, parameters, workspace), fresh);
+  }
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace cosmos {
 namespace {
@@ -88,6 +89,44 @@ TEST(LocalSurfaceFit, SphereCurvatureSignConvention) {
   const PrincipalCurvatures k = principal_curvatures(values);
   EXPECT_NEAR(k.kappa1, 0.04, 1e-6);
   EXPECT_NEAR(k.kappa2, 0.04, 1e-6);
+}
+
+// A table shared by the fits of a stream of images gives each the frames its own table would:
+// the holes of one image and the step of the next need kernels of different patterns, and
+// the second image repeats some of the first's.
+TEST(LocalSurfaceFit, ASharedKernelTableFitsEachImageAsAFreshOneDoes) {
+  RangeImage holes = cubic_image();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (int k = 0; k < 21; k += 4) holes.z_mm(k, (3 * k) % 21) = nan;
+  RangeImage step = cubic_image();
+  for (int row = 0; row < 21; ++row)
+    for (int column = 12; column < 21; ++column) step.z_mm(column, row) += 10.0f;
+  step.z_mm(4, 4) = nan;
+  const SurfaceFitParameters parameters;
+  PartialWindowKernels shared = LocalSurfaceFitter::partial_window_kernels_for(parameters);
+  for (const RangeImage* image : {&holes, &step, &holes}) {
+    const DarbouxFrameField fresh = fit_local_surfaces(*image, parameters);
+    DarbouxFrameField reused(image->width(), image->height());
+    fit_local_surfaces(*image, parameters, reused, shared);
+    EXPECT_EQ(reused.valid.values(), fresh.valid.values());
+    EXPECT_EQ(reused.same_side.values(), fresh.same_side.values());
+    for (int m = 0; m < kFrameComponents; ++m)
+      EXPECT_EQ(reused.frame[m].values(), fresh.frame[m].values()) << m;
+  }
+}
+
+TEST(LocalSurfaceFit, AKernelTableForAnotherWindowIsRefused) {
+  SurfaceFitParameters seven;
+  seven.window_size = 7;
+  PartialWindowKernels table_of_seven = LocalSurfaceFitter::partial_window_kernels_for(seven);
+  EXPECT_THROW(LocalSurfaceFitter(SurfaceFitParameters{}, 0.5, 0.5, 21, table_of_seven),
+               std::invalid_argument);
+  SurfaceFitParameters biquadratic;
+  biquadratic.bicubic = false;
+  PartialWindowKernels table_of_biquadratic =
+      LocalSurfaceFitter::partial_window_kernels_for(biquadratic);
+  EXPECT_THROW(LocalSurfaceFitter(SurfaceFitParameters{}, 0.5, 0.5, 21, table_of_biquadratic),
+               std::invalid_argument);
 }
 
 }  // namespace
