@@ -62,7 +62,9 @@ void run_check(const CheckOptions& options) {
                      "profile (" + std::to_string(source.mm_per_profile()) + " mm)");
   const CellWorld world(config);
   const CellModelBase loaded = world.load_model_base();
-  const Recognizer recognizer(loaded.base, loaded.cosmos, RecognitionParameters{});
+  RecognitionParameters recognition;
+  recognition.surface_seen.sight = scanner_sight(config.scanner);
+  const Recognizer recognizer(loaded.base, loaded.cosmos, recognition);
   ScanLoop loop({.conditioning = config.conditioning,
                  .tracking = config.tracking.tracker,
                  .cosmos = loaded.cosmos,

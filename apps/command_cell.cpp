@@ -163,6 +163,7 @@ void run(const CellOptions& options) {
   recognition.surfaces = config.realtime.recognizer_surfaces;
   recognition.resting.parts_touch_belt = config.cell.parts_touch_belt;
   recognition.resting.parts_rest = config.cell.parts_rest;
+  recognition.surface_seen.sight = scanner_sight(config.scanner);
   const HelperThreads recognition_helpers(config.realtime.threads.recognition_helpers);
   const Recognizer recognizer(base, cosmos, recognition, &recognition_helpers);
   LcmPublisher lcm_publisher(config.lcm.url, config.lcm.channels());

@@ -141,6 +141,7 @@ void run(const EvalOptions& options) {
   RecognitionParameters recognition;
   recognition.resting.parts_touch_belt = true;
   recognition.resting.parts_rest = options.pose == "resting";
+  recognition.surface_seen.sight = scanner_sight(scanner);
   const HelperThreads helpers(options.helpers);
   const Recognizer recognizer(base, cosmos, recognition, &helpers);
   const std::vector<EvaluationRecord> records =

@@ -13,6 +13,7 @@
 #include "core/io/range_image_file.hpp"
 #include "core/io/recorded_parameters.hpp"
 #include "core/recognition/recognizer.hpp"
+#include "scanner/scanner_model.hpp"
 
 namespace cosmos::cli {
 namespace {
@@ -32,6 +33,9 @@ RecognitionParameters recognition_parameters(const RecognizeOptions& options) {
                                           : RegistrationEstimator::kMinimumVariance;
   parameters.selection.distance = options.distance == "mahalanobis" ? SpectralDistance::kMahalanobis
                                                                     : SpectralDistance::kEuclidean;
+  // A range image file does not say which scanner took it: the simulated scanner's, by which
+  // `cosmos sim scan` writes them and the default base is built.
+  parameters.surface_seen.sight = scanner_sight(ScannerParameters{});
   return parameters;
 }
 

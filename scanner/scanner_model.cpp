@@ -24,4 +24,12 @@ TriangulationGeometry scanner_triangulation_geometry(const ScannerParameters& pa
   return make_triangulation_geometry(design);
 }
 
+ScannerSight scanner_sight(const ScannerParameters& parameters) {
+  ScannerSight sight;
+  sight.camera_mm = scanner_triangulation_geometry(parameters).t_scanner_camera_mm;
+  sight.laser_height_mm =
+      parameters.laser_model == LaserModel::kFan ? parameters.laser_height_mm : 0;
+  return sight;
+}
+
 }  // namespace cosmos

@@ -25,6 +25,7 @@
 #include <span>
 
 #include "core/parameter_visitor.hpp"
+#include "core/scanner_sight.hpp"
 #include "scanner/triangulation_geometry.hpp"
 
 namespace cosmos {
@@ -174,5 +175,7 @@ struct ScannerParameters {
 
 // The camera and laser sheet of the scanner, built by firmware_bridge's design helper.
 TriangulationGeometry scanner_triangulation_geometry(const ScannerParameters& parameters);
+// Where that scanner measures a point from (the recognizer's surface-seen test).
+ScannerSight scanner_sight(const ScannerParameters& parameters);
 
 }  // namespace cosmos

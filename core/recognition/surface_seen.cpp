@@ -12,10 +12,16 @@ SurfaceSeen measure_surface_seen(const RangeImage& scene, const RegistrationPoin
   const RigidTransform T_scene_model = T_model_scene.inverse();
   const double tolerance_mm = parameters.depth_tolerance_mm;
   const bool belt_known = scene.belt_known();
+  const bool facing_known = parameters.sight && model.normal.cols() == model.position_mm.cols();
   for (Eigen::Index i = 0; i < model.position_mm.cols(); ++i) {
     const Eigen::Vector3d point = T_scene_model.apply(model.position_mm.col(i));
     const long column = scene.column_at(point.x());
     const long row = scene.row_at(point.y());
+    if (facing_known &&
+        !parameters.sight->measurable(point, T_scene_model.rotate(model.normal.col(i)))) {
+      ++result.hidden;
+      continue;
+    }
     // Against the part: a lower surface, or the belt measured (beyond the image: its
     // background, belt as far as it can tell).
     bool seen = false, hidden = false, against = false;

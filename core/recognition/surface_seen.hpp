@@ -13,16 +13,27 @@
 // the point lay in a camera or laser shadow, which a laser-triangulation scanner casts into
 // every hollow: it counts as hidden. Without the belt mask no data counts against. A pixel's 3 x 3
 // neighbourhood is asked, so silhouettes a pixel off and the few degrees between the matched
-// view and the scene's viewing direction do not count against the part.
+// view and the scene's viewing direction do not count against the part. A point whose surface
+// faces away from the scanner's camera or laser (core/scanner_sight.hpp) is hidden whatever the
+// scene shows there: the matched view, taken from another side, holds surface no scan from this
+// side measures, such as the steep downstream slope of a tall part, where the scene's image
+// (cropped to what was measured) may not even reach.
+#include <optional>
+
 #include "core/parameter_visitor.hpp"
 #include "core/range_image.hpp"
 #include "core/registration/registration_points.hpp"
 #include "core/rigid_transform.hpp"
+#include "core/scanner_sight.hpp"
 
 namespace cosmos {
 
 struct SurfaceSeenParameters {
   double depth_tolerance_mm = 1.0;
+  // Where the scene's scanner measures from: set by whoever makes the recognizer, from its
+  // scanner's keys (scanner_sight(), scanner/scanner_model.hpp), so not a key itself. Unset, no
+  // point is taken for one facing away.
+  std::optional<ScannerSight> sight;
 
   template <class Visitor>
   void visit(Visitor& v) {

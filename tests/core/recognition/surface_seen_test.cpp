@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 #include "tests/core/recognition/plate_scene.hpp"
@@ -94,6 +96,66 @@ TEST(SurfaceSeen, BelowTheSceneIsHiddenAboveItIsContradicted) {
   const SurfaceSeen near = measure_surface_seen(scene, grid_points(10, kPlateHeightMm + 0.9),
                                                 RigidTransform::identity(), {});
   EXPECT_EQ(near.seen, 20 * 16);
+}
+
+// The default scanner's: the camera 600 mm above the belt, 30 degrees upstream (-y) of the laser
+// sheet, and the fan's source 600 mm above the belt centre.
+ScannerSight default_sight() {
+  ScannerSight sight;
+  sight.camera_mm = Eigen::Vector3d(0, -600 * std::tan(30 * std::numbers::pi / 180), 600);
+  sight.laser_height_mm = 600;
+  return sight;
+}
+
+RegistrationPoints with_normals(RegistrationPoints points, const Eigen::Vector3d& normal) {
+  points.normal = normal.normalized().replicate(1, points.position_mm.cols());
+  return points;
+}
+
+// Half of the shifted points lie over the belt. Facing the camera they count as they do without
+// a sight; tilted 70 degrees downstream, away from a camera 30 degrees upstream, or facing the
+// belt, away from the laser, no scan from this side measures them, so they say nothing.
+TEST(SurfaceSeen, SurfaceFacingAwayFromTheCameraOrTheLaserIsHiddenWhereverItLies) {
+  SurfaceSeenParameters parameters;
+  parameters.sight = default_sight();
+  const double tilt = 70 * std::numbers::pi / 180;
+  const RegistrationPoints points = grid_points(20, kPlateHeightMm);
+  const SurfaceSeen upstream = measure_surface_seen(
+      plate_scene(), with_normals(points, {0, -std::sin(tilt), std::cos(tilt)}),
+      RigidTransform::identity(), parameters);
+  EXPECT_EQ(upstream.seen, 11 * 16);
+  EXPECT_EQ(upstream.contradicted, 9 * 16);
+  const SurfaceSeen downstream =
+      measure_surface_seen(plate_scene(), with_normals(points, {0, std::sin(tilt), std::cos(tilt)}),
+                           RigidTransform::identity(), parameters);
+  EXPECT_EQ(downstream.seen, 0);
+  EXPECT_EQ(downstream.contradicted, 0);
+  EXPECT_EQ(downstream.hidden, 20 * 16);
+  const SurfaceSeen underside = measure_surface_seen(
+      plate_scene(), with_normals(points, {0, 0, -1}), RigidTransform::identity(), parameters);
+  EXPECT_EQ(underside.hidden, 20 * 16);
+  // Without the sight the downstream slope counts as any surface does.
+  const SurfaceSeen unknown =
+      measure_surface_seen(plate_scene(), with_normals(points, {0, std::sin(tilt), std::cos(tilt)}),
+                           RigidTransform::identity(), {});
+  EXPECT_EQ(unknown.seen, 11 * 16);
+  EXPECT_EQ(unknown.contradicted, 9 * 16);
+}
+
+// The normals are the model's: the transform turns them into the scene with the points. A point
+// facing straight up in the model, turned 70 degrees about x by T_scene_model, faces downstream.
+TEST(SurfaceSeen, TheModelsNormalsAreTurnedIntoTheSceneBeforeFacingIsJudged) {
+  SurfaceSeenParameters parameters;
+  parameters.sight = default_sight();
+  RigidTransform T_scene_model;
+  T_scene_model.rotation =
+      Eigen::AngleAxisd(-70 * std::numbers::pi / 180, Eigen::Vector3d::UnitX()).matrix();
+  RegistrationPoints points =
+      with_normals(grid_points(20, kPlateHeightMm), Eigen::Vector3d::UnitZ());
+  points.position_mm = T_scene_model.inverse().rotation * points.position_mm;
+  const SurfaceSeen seen =
+      measure_surface_seen(plate_scene(), points, T_scene_model.inverse(), parameters);
+  EXPECT_EQ(seen.hidden, 20 * 16);
 }
 
 }  // namespace
