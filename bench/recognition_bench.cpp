@@ -24,8 +24,10 @@ namespace {
 void BM_Features(benchmark::State& state) {
   const RecognitionScanSet* fixture = ready_scan_set(state);
   if (!fixture) return;
+  // One workspace over the run of scans, as `cosmos eval` and the cell's part builders keep.
+  ViewAnalysisWorkspace workspace;
   over_scans(state, *fixture, [&](const TestScan& scan) {
-    benchmark::DoNotOptimize(analyze_view(scan.image, fixture->cosmos()).moments);
+    benchmark::DoNotOptimize(analyze_view(scan.image, fixture->cosmos(), workspace).moments);
   });
 }
 BENCHMARK(BM_Features)->Unit(benchmark::kMillisecond)->Iterations(10);
@@ -185,8 +187,9 @@ void report_outcomes(benchmark::State& state, const RecognitionScanSet& fixture)
 void BM_Recognize(benchmark::State& state) {
   const RecognitionScanSet* fixture = ready_scan_set(state);
   if (!fixture) return;
+  ViewAnalysisWorkspace workspace;
   over_scans(state, *fixture, [&](const TestScan& scan) {
-    benchmark::DoNotOptimize(fixture->recognizer().recognize(scan.image).part);
+    benchmark::DoNotOptimize(fixture->recognizer().recognize(scan.image, workspace).part);
   });
   report_outcomes(state, *fixture);
 }

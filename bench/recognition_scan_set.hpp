@@ -155,10 +155,12 @@ class RecognitionScanSet {
 
  private:
   void make_scans() {
+    const ScannerParameters scanner;
+    // The scans' scanner, as `cosmos eval` tells its recognizer.
+    parameters_.surface_seen.sight = scanner_sight(scanner);
     recognizer_ = std::make_unique<Recognizer>(base_, cosmos_, parameters_);
     const std::vector<EvaluationPart> parts =
         evaluation_parts(base_, read_part_catalog(regression_catalog_path()), {});
-    const ScannerParameters scanner;
     for (const EvaluationTest& test : evaluation_plan(parts, kScans, kScanSeed)) {
       const EvaluationPart& part = parts[static_cast<std::size_t>(test.part)];
       TestScan scan;
