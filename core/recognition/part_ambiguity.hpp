@@ -53,9 +53,17 @@ struct PartAmbiguityParameters {
   // (the share of the scene it explains times the share of its view seen) is better by this
   // wins instead: a smaller difference is registration noise between near-identical parts.
   double two_way_fit_margin = 0.1;
-  // Verification stops at the first view that explains sufficient_support of the scene; then
-  // up to this many further selected views, each of a part not verified yet, are verified so
-  // that the winner has a rival to be compared with.
+  // A winner must also fit the scene best both ways among the parts of other shapes: a
+  // candidate of one fitting better by more than two_way_fit_noise, whatever its score, makes
+  // the scene ambiguous, as does one scoring higher that the winner does not outfit by
+  // two_way_fit_margin. The score (support, residual and COSMOS match) and the fit both ways
+  // then name different parts; where a bracket's view is a channel's or a plate's, each
+  // measure is fooled by one of them, and which it is cannot be told from the scene. Fits
+  // closer than two_way_fit_noise differ by registration noise and name no part: the score
+  // decides between shapes, and sizes of one shape, which the fit alone tells apart
+  // (size_variants.hpp), are then ambiguous.
+  double two_way_fit_noise = 0.01;
+
   int rival_verifications = 1;
   // The rival part, when only verification proposed it, is searched over all its views
   // (part_pose_search.hpp) before the comparison, unless the search over every part found its
@@ -82,6 +90,8 @@ struct PartAmbiguityParameters {
       "a placed view's contradicted share below this is no evidence", Range{0, 1});
     v("two_way_fit_margin", two_way_fit_margin,
       "a close candidate fitting this much better both ways wins instead", Range{0, 1});
+    v("two_way_fit_noise", two_way_fit_noise, "two-way fits closer than this tell no parts apart",
+      Range{0, 1});
     v("rival_verifications", rival_verifications,
       "views of other parts verified after a sufficient one", Range{0, 1000});
     v("search_rival_part", search_rival_part, "the rival part's views searched before comparing");

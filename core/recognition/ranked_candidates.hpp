@@ -1,6 +1,7 @@
 #pragma once
 // The recognizer's registered candidates in the order the decision weighs them (recognizer.hpp):
 // by score, the figure of merit of support, residual and COSMOS match together.
+#include <functional>
 #include <vector>
 
 #include "core/recognition/recognizer.hpp"
@@ -28,5 +29,14 @@ double two_way_fit(const RecognitionCandidate& candidate);
 const RecognitionCandidate* score_or_fit_winner(
     const std::vector<const RecognitionCandidate*>& ranked, double examined_score_margin,
     double two_way_fit_margin);
+
+// The best-scored qualified candidate of a part `compared` accepts that contests `winner`: one
+// fitting the scene better both ways by more than max_fit_deficit, or one scoring higher that fits
+// within two_way_fit_margin of it both ways (a winner that outweighed higher scores by its fit,
+// score_or_fit_winner, leads each of them by the margin, not only the best-scored). The
+// best-fitting such one; nullptr when none.
+const RecognitionCandidate* contesting_candidate(
+    const std::vector<RecognitionCandidate>& candidates, const RecognitionCandidate& winner,
+    double two_way_fit_margin, double max_fit_deficit, const std::function<bool(int)>& compared);
 
 }  // namespace cosmos

@@ -264,8 +264,44 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
     return "ambiguous: " + std::to_string(uncompared) +
            " parts never compared with the best fit the scene as closely";
   }
+  const auto percent = [](double fraction) {
+    return std::to_string(static_cast<int>(std::lround(100 * fraction)));
+  };
+  const auto part_name = [this](int part) {
+    return model_base_.parts[static_cast<std::size_t>(part)].name;
+  };
+  // Score and fit both ways must name the same part (part_ambiguity.hpp).
+  if (const RecognitionCandidate* contesting = contesting_candidate(
+          result.candidates, *best, parameters_.ambiguity.two_way_fit_margin,
+          parameters_.ambiguity.two_way_fit_noise,
+          [&](int part) { return part != best->part && !is_size_variant(best->part, part); })) {
+    result.part = -1;
+    result.other_shape_part = contesting->part;
+    char figures[96];
+    std::snprintf(figures, sizeof figures,
+                  "scores %.2f and %.2f, fit both ways %.0f %% and %.0f %%", best->score,
+                  contesting->score, 100 * two_way_fit(*best), 100 * two_way_fit(*contesting));
+    return "ambiguous between " + part_name(best->part) + " and " + part_name(contesting->part) +
+           ": score and fit name different parts (" + figures + ")";
+  }
   // Sizes of one shape are told apart by the two-way fit, which the ambiguity test (the scene's
-  // points alone) cannot see: a larger size explains a smaller one's scene as well.
+  // points alone) cannot see: a larger size explains a smaller one's scene as well. So sizes
+  // whose fits differ by registration noise alone are not told apart at all.
+  const double fit_noise = parameters_.ambiguity.two_way_fit_noise;
+  if (parameters_.size_variants.search)
+    if (const RecognitionCandidate* size =
+            contesting_candidate(result.candidates, *best, fit_noise, -fit_noise,
+                                 [&](int part) { return is_size_variant(best->part, part); })) {
+      result.part = -1;
+      result.runner_up_part = size->part;
+      result.runner_up_score = size->score;
+      result.size_fit = two_way_fit(*best);
+      result.runner_up_size_fit = two_way_fit(*size);
+      result.ambiguity.ambiguous = true;
+      return "ambiguous between " + part_name(best->part) + " and " + part_name(size->part) +
+             ": sizes of one shape that fit alike both ways (" + percent(result.size_fit) +
+             " % and " + percent(result.runner_up_size_fit) + " %)";
+    }
   const bool sizes_told_apart =
       rival && is_size_variant(best->part, rival->part) && parameters_.size_variants.search &&
       two_way_fit(*best) - two_way_fit(*rival) >= parameters_.size_variants.fit_margin;
@@ -289,12 +325,8 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
         parameters_.registration, parameters_.support, parameters_.ambiguity, surfaces);
     if (result.ambiguity.ambiguous) {
       result.part = -1;
-      const auto percent = [](double fraction) {
-        return std::to_string(static_cast<int>(std::lround(100 * fraction)));
-      };
-      return "ambiguous between " + model_base_.parts[static_cast<std::size_t>(best->part)].name +
-             " and " + model_base_.parts[static_cast<std::size_t>(compared->part)].name + ": " +
-             percent(result.ambiguity.discriminating_fraction) +
+      return "ambiguous between " + part_name(best->part) + " and " + part_name(compared->part) +
+             ": " + percent(result.ambiguity.discriminating_fraction) +
              " % of scene and surfaces tell them apart, " +
              percent(result.ambiguity.discriminating_share) + " % of it for the first";
     }

@@ -1,5 +1,6 @@
-// The order the decision weighs registered candidates in, and its winner among candidates
-// scoring alike (ranked_candidates.hpp), on hand-made candidates.
+// The order the decision weighs registered candidates in, its winner among candidates scoring
+// alike, and the candidates contesting a winner (ranked_candidates.hpp), on hand-made
+// candidates.
 #include "core/recognition/ranked_candidates.hpp"
 
 #include <gtest/gtest.h>
@@ -67,6 +68,76 @@ TEST(RankedCandidates, OnlyQualifiedCandidatesWin) {
   EXPECT_EQ(score_or_fit_winner(ranked_candidates(candidates), kScoreMargin, kFitMargin)->part, 1);
   candidates[1].qualified = false;
   EXPECT_EQ(score_or_fit_winner(ranked_candidates(candidates), kScoreMargin, kFitMargin), nullptr);
+}
+
+const auto any_other_part = [](int part) { return part != 0; };
+
+TEST(RankedCandidates, APartFittingBetterBothWaysContestsAWinnerOfHigherScore) {
+  // The winner scores 0.85 and fits 0.90 x 0.90 = 0.81; the other scores 0.80 and fits 0.855.
+  const std::vector<RecognitionCandidate> candidates = {candidate(0, 0.85, 0.90, 0.90),
+                                                        candidate(1, 0.80, 0.90, 0.95)};
+  const RecognitionCandidate* contesting =
+      contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, any_other_part);
+  ASSERT_NE(contesting, nullptr);
+  EXPECT_EQ(contesting->part, 1);
+  EXPECT_EQ(contesting_candidate(candidates, candidates[0], kFitMargin, 0.05, any_other_part),
+            nullptr);
+}
+
+TEST(RankedCandidates, AWinnerByFitMustOutfitEveryHigherScoreByTheMargin) {
+  // The winner fits 0.92; the higher-scored fits 0.84 (0.08 behind), then 0.81 (0.11 behind).
+  std::vector<RecognitionCandidate> candidates = {candidate(0, 0.70, 0.92, 1.00),
+                                                  candidate(1, 0.74, 0.84, 1.00)};
+  EXPECT_EQ(contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, any_other_part),
+            &candidates[1]);
+  candidates[1].inlier_fraction = 0.81;
+  EXPECT_EQ(contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, any_other_part),
+            nullptr);
+}
+
+TEST(RankedCandidates, OnlyQualifiedCandidatesOfComparedPartsContest) {
+  std::vector<RecognitionCandidate> candidates = {candidate(0, 0.85, 0.90, 0.90),
+                                                  candidate(0, 0.80, 1.00, 1.00),
+                                                  candidate(1, 0.80, 1.00, 1.00)};
+  candidates[2].qualified = false;
+  EXPECT_EQ(contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, any_other_part),
+            nullptr);
+  candidates[2].qualified = true;
+  EXPECT_EQ(contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, any_other_part),
+            &candidates[2]);
+  EXPECT_EQ(
+      contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, [](int) { return false; }),
+      nullptr);
+}
+
+TEST(RankedCandidates, APartContestsByItsBestScoredCandidateAlone) {
+  // Part 1's best-scored candidate fits 0.50; its other, fitting 0.95, scores below it.
+  std::vector<RecognitionCandidate> candidates = {candidate(0, 0.85, 0.90, 0.90),
+                                                  candidate(1, 0.80, 0.50, 1.00),
+                                                  candidate(1, 0.60, 0.95, 1.00)};
+  EXPECT_EQ(contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, any_other_part),
+            nullptr);
+  candidates[1].qualified = false;
+  EXPECT_EQ(contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, any_other_part),
+            &candidates[2]);
+}
+
+TEST(RankedCandidates, EqualFitsOfALowerScoreDoNotContest) {
+  const std::vector<RecognitionCandidate> candidates = {candidate(0, 0.90, 1.00, 1.00),
+                                                        candidate(1, 0.80, 1.00, 1.00)};
+  EXPECT_EQ(contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, any_other_part),
+            nullptr);
+}
+
+// As sizes of one shape are weighed: the winner outfits each of them by the margin, or they
+// contest it (a deficit of minus the margin).
+TEST(RankedCandidates, ANegativeDeficitIsALeadTheWinnerMustHaveOverLowerScores) {
+  std::vector<RecognitionCandidate> candidates = {candidate(0, 0.90, 0.95, 1.00),
+                                                  candidate(1, 0.80, 0.93, 1.00)};
+  EXPECT_EQ(contesting_candidate(candidates, candidates[0], 0.03, -0.03, any_other_part),
+            &candidates[1]);
+  candidates[1].inlier_fraction = 0.91;
+  EXPECT_EQ(contesting_candidate(candidates, candidates[0], 0.03, -0.03, any_other_part), nullptr);
 }
 
 }  // namespace
