@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/recognition/ranked_candidates.hpp"
 #include "core/recognition/recognizer.hpp"
 #include "sim/model_base_build/model_base_builder.hpp"
 #include "tests/core/recognition/recognizer_fixture.hpp"
@@ -301,6 +302,40 @@ TEST_F(RecognizerOnFlatFamilies, ARivalOfAnotherSizeDoesNotHideAPartOfAnotherSha
   }
   EXPECT_GE(other_shapes, 5);
   EXPECT_GE(examined, 1);
+}
+
+// A part is named only when its score and its fit both ways name it: among the parts of other
+// shapes (each by its best-scored qualified candidate) none fits the scene better both ways
+// beyond the fit's noise, and none scoring higher comes within two_way_fit_margin of its fit;
+// each other size of its shape it outfits by the noise at least.
+TEST_F(RecognizerOnFlatFamilies, ANamedPartIsTheOneItsScoreAndItsFitBothWaysName) {
+  const PartAmbiguityParameters ambiguity;
+  int named = 0;
+  for (std::uint64_t seed = 41; seed <= 60; ++seed) {
+    const RecognitionResult result = recognize(seed);
+    if (result.status != RecognitionStatus::kOk) continue;
+    ++named;
+    const RecognitionCandidate* winner = nullptr;
+    for (const RecognitionCandidate& candidate : result.candidates)
+      if (candidate.qualified && candidate.part == result.part && candidate.view == result.view &&
+          (!winner || candidate.score > winner->score))
+        winner = &candidate;
+    ASSERT_NE(winner, nullptr) << seed;
+    const ModelPart& named_part = base_->parts[static_cast<std::size_t>(result.part)];
+    for (const RecognitionCandidate& other : result.candidates) {
+      if (!other.qualified || other.part == result.part ||
+          other.score < best_qualified_score(result, other.part))
+        continue;
+      const double lead = two_way_fit(*winner) - two_way_fit(other);
+      if (base_->parts[static_cast<std::size_t>(other.part)].mesh == named_part.mesh)
+        EXPECT_GE(lead, ambiguity.two_way_fit_noise) << seed;
+      else if (other.score > winner->score)
+        EXPECT_GT(lead, ambiguity.two_way_fit_margin) << seed;
+      else
+        EXPECT_GE(lead, -ambiguity.two_way_fit_noise) << seed;
+    }
+  }
+  EXPECT_GE(named, 15);
 }
 
 // The other sizes of the winner's shape are registered from its poses, scaled: each has a
