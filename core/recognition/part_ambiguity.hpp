@@ -63,7 +63,9 @@ struct PartAmbiguityParameters {
   // decides between shapes, and sizes of one shape, which the fit alone tells apart
   // (size_variants.hpp), are then ambiguous.
   double two_way_fit_noise = 0.01;
-
+  // Verification stops at the first view that explains sufficient_support of the scene; then
+  // up to this many further selected views, each of a part not verified yet, are verified so
+  // that the winner has a rival to be compared with.
   int rival_verifications = 1;
   // The rival part, when only verification proposed it, is searched over all its views
   // (part_pose_search.hpp) before the comparison, unless the search over every part found its

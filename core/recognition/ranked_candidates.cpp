@@ -44,26 +44,21 @@ const RecognitionCandidate* score_or_fit_winner(
 }
 
 const RecognitionCandidate* contesting_candidate(
-    const std::vector<RecognitionCandidate>& candidates, const RecognitionCandidate& winner,
+    const std::vector<const RecognitionCandidate*>& ranked, const RecognitionCandidate& winner,
     double two_way_fit_margin, double max_fit_deficit, const std::function<bool(int)>& compared) {
-  const auto counts = [&](const RecognitionCandidate& candidate) {
-    return candidate.registered && candidate.qualified && compared(candidate.part);
-  };
   const RecognitionCandidate* contesting = nullptr;
-  for (const RecognitionCandidate& candidate : candidates) {
-    if (!counts(candidate)) continue;
-    // A part stands by its best-scored candidate, as a rival does.
-    if (std::any_of(candidates.begin(), candidates.end(), [&](const RecognitionCandidate& other) {
-          return counts(other) && other.part == candidate.part &&
-                 (other.score > candidate.score ||
-                  (other.score == candidate.score && &other < &candidate));
-        }))
+  std::vector<int> parts_weighed;
+  for (const RecognitionCandidate* candidate : ranked) {
+    if (!candidate->qualified || !compared(candidate->part) ||
+        std::find(parts_weighed.begin(), parts_weighed.end(), candidate->part) !=
+            parts_weighed.end())
       continue;
-    const double lead = two_way_fit(winner) - two_way_fit(candidate);
+    parts_weighed.push_back(candidate->part);
+    const double lead = two_way_fit(winner) - two_way_fit(*candidate);
     const bool contests =
-        candidate.score > winner.score ? lead <= two_way_fit_margin : -lead > max_fit_deficit;
-    if (contests && (!contesting || two_way_fit(candidate) > two_way_fit(*contesting)))
-      contesting = &candidate;
+        candidate->score > winner.score ? lead <= two_way_fit_margin : -lead > max_fit_deficit;
+    if (contests && (!contesting || two_way_fit(*candidate) > two_way_fit(*contesting)))
+      contesting = candidate;
   }
   return contesting;
 }

@@ -30,13 +30,14 @@ const RecognitionCandidate* score_or_fit_winner(
     const std::vector<const RecognitionCandidate*>& ranked, double examined_score_margin,
     double two_way_fit_margin);
 
-// The best-scored qualified candidate of a part `compared` accepts that contests `winner`: one
-// fitting the scene better both ways by more than max_fit_deficit, or one scoring higher that fits
-// within two_way_fit_margin of it both ways (a winner that outweighed higher scores by its fit,
+// Among the qualified candidates of `ranked` (best score first), each part of those `compared`
+// accepts by its best-scored one, as a rival stands: the one contesting `winner`, fitting the
+// scene better both ways by more than max_fit_deficit, or scoring higher and fitting within
+// two_way_fit_margin of it both ways (a winner that outweighed higher scores by its fit,
 // score_or_fit_winner, leads each of them by the margin, not only the best-scored). The
 // best-fitting such one; nullptr when none.
 const RecognitionCandidate* contesting_candidate(
-    const std::vector<RecognitionCandidate>& candidates, const RecognitionCandidate& winner,
+    const std::vector<const RecognitionCandidate*>& ranked, const RecognitionCandidate& winner,
     double two_way_fit_margin, double max_fit_deficit, const std::function<bool(int)>& compared);
 
 }  // namespace cosmos

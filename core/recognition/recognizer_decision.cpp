@@ -271,8 +271,9 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
     return model_base_.parts[static_cast<std::size_t>(part)].name;
   };
   // Score and fit both ways must name the same part (part_ambiguity.hpp).
+  const std::vector<const RecognitionCandidate*> ranked = ranked_candidates(result.candidates);
   if (const RecognitionCandidate* contesting = contesting_candidate(
-          result.candidates, *best, parameters_.ambiguity.two_way_fit_margin,
+          ranked, *best, parameters_.ambiguity.two_way_fit_margin,
           parameters_.ambiguity.two_way_fit_noise,
           [&](int part) { return part != best->part && !is_size_variant(best->part, part); })) {
     result.part = -1;
@@ -290,13 +291,14 @@ std::string Recognizer::decide(const ViewAnalysis& analysis, const ScenePoints& 
   const double fit_noise = parameters_.ambiguity.two_way_fit_noise;
   if (parameters_.size_variants.search)
     if (const RecognitionCandidate* size =
-            contesting_candidate(result.candidates, *best, fit_noise, -fit_noise,
+            contesting_candidate(ranked, *best, fit_noise, -fit_noise,
                                  [&](int part) { return is_size_variant(best->part, part); })) {
       result.part = -1;
       result.runner_up_part = size->part;
       result.runner_up_score = size->score;
       result.size_fit = two_way_fit(*best);
       result.runner_up_size_fit = two_way_fit(*size);
+      // Reported as an ambiguity with that size: the evaluation counts the sizes not told apart.
       result.ambiguity.ambiguous = true;
       return "ambiguous between " + part_name(best->part) + " and " + part_name(size->part) +
              ": sizes of one shape that fit alike both ways (" + percent(result.size_fit) +

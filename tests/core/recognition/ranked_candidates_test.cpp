@@ -76,11 +76,12 @@ TEST(RankedCandidates, APartFittingBetterBothWaysContestsAWinnerOfHigherScore) {
   // The winner scores 0.85 and fits 0.90 x 0.90 = 0.81; the other scores 0.80 and fits 0.855.
   const std::vector<RecognitionCandidate> candidates = {candidate(0, 0.85, 0.90, 0.90),
                                                         candidate(1, 0.80, 0.90, 0.95)};
-  const RecognitionCandidate* contesting =
-      contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, any_other_part);
+  const RecognitionCandidate* contesting = contesting_candidate(
+      ranked_candidates(candidates), candidates[0], kFitMargin, 0.0, any_other_part);
   ASSERT_NE(contesting, nullptr);
   EXPECT_EQ(contesting->part, 1);
-  EXPECT_EQ(contesting_candidate(candidates, candidates[0], kFitMargin, 0.05, any_other_part),
+  EXPECT_EQ(contesting_candidate(ranked_candidates(candidates), candidates[0], kFitMargin, 0.05,
+                                 any_other_part),
             nullptr);
 }
 
@@ -88,10 +89,12 @@ TEST(RankedCandidates, AWinnerByFitMustOutfitEveryHigherScoreByTheMargin) {
   // The winner fits 0.92; the higher-scored fits 0.84 (0.08 behind), then 0.81 (0.11 behind).
   std::vector<RecognitionCandidate> candidates = {candidate(0, 0.70, 0.92, 1.00),
                                                   candidate(1, 0.74, 0.84, 1.00)};
-  EXPECT_EQ(contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, any_other_part),
+  EXPECT_EQ(contesting_candidate(ranked_candidates(candidates), candidates[0], kFitMargin, 0.0,
+                                 any_other_part),
             &candidates[1]);
   candidates[1].inlier_fraction = 0.81;
-  EXPECT_EQ(contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, any_other_part),
+  EXPECT_EQ(contesting_candidate(ranked_candidates(candidates), candidates[0], kFitMargin, 0.0,
+                                 any_other_part),
             nullptr);
 }
 
@@ -100,14 +103,16 @@ TEST(RankedCandidates, OnlyQualifiedCandidatesOfComparedPartsContest) {
                                                   candidate(0, 0.80, 1.00, 1.00),
                                                   candidate(1, 0.80, 1.00, 1.00)};
   candidates[2].qualified = false;
-  EXPECT_EQ(contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, any_other_part),
+  EXPECT_EQ(contesting_candidate(ranked_candidates(candidates), candidates[0], kFitMargin, 0.0,
+                                 any_other_part),
             nullptr);
   candidates[2].qualified = true;
-  EXPECT_EQ(contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, any_other_part),
+  EXPECT_EQ(contesting_candidate(ranked_candidates(candidates), candidates[0], kFitMargin, 0.0,
+                                 any_other_part),
             &candidates[2]);
-  EXPECT_EQ(
-      contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, [](int) { return false; }),
-      nullptr);
+  EXPECT_EQ(contesting_candidate(ranked_candidates(candidates), candidates[0], kFitMargin, 0.0,
+                                 [](int) { return false; }),
+            nullptr);
 }
 
 TEST(RankedCandidates, APartContestsByItsBestScoredCandidateAlone) {
@@ -115,17 +120,20 @@ TEST(RankedCandidates, APartContestsByItsBestScoredCandidateAlone) {
   std::vector<RecognitionCandidate> candidates = {candidate(0, 0.85, 0.90, 0.90),
                                                   candidate(1, 0.80, 0.50, 1.00),
                                                   candidate(1, 0.60, 0.95, 1.00)};
-  EXPECT_EQ(contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, any_other_part),
+  EXPECT_EQ(contesting_candidate(ranked_candidates(candidates), candidates[0], kFitMargin, 0.0,
+                                 any_other_part),
             nullptr);
   candidates[1].qualified = false;
-  EXPECT_EQ(contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, any_other_part),
+  EXPECT_EQ(contesting_candidate(ranked_candidates(candidates), candidates[0], kFitMargin, 0.0,
+                                 any_other_part),
             &candidates[2]);
 }
 
 TEST(RankedCandidates, EqualFitsOfALowerScoreDoNotContest) {
   const std::vector<RecognitionCandidate> candidates = {candidate(0, 0.90, 1.00, 1.00),
                                                         candidate(1, 0.80, 1.00, 1.00)};
-  EXPECT_EQ(contesting_candidate(candidates, candidates[0], kFitMargin, 0.0, any_other_part),
+  EXPECT_EQ(contesting_candidate(ranked_candidates(candidates), candidates[0], kFitMargin, 0.0,
+                                 any_other_part),
             nullptr);
 }
 
@@ -134,10 +142,13 @@ TEST(RankedCandidates, EqualFitsOfALowerScoreDoNotContest) {
 TEST(RankedCandidates, ANegativeDeficitIsALeadTheWinnerMustHaveOverLowerScores) {
   std::vector<RecognitionCandidate> candidates = {candidate(0, 0.90, 0.95, 1.00),
                                                   candidate(1, 0.80, 0.93, 1.00)};
-  EXPECT_EQ(contesting_candidate(candidates, candidates[0], 0.03, -0.03, any_other_part),
+  EXPECT_EQ(contesting_candidate(ranked_candidates(candidates), candidates[0], 0.03, -0.03,
+                                 any_other_part),
             &candidates[1]);
   candidates[1].inlier_fraction = 0.91;
-  EXPECT_EQ(contesting_candidate(candidates, candidates[0], 0.03, -0.03, any_other_part), nullptr);
+  EXPECT_EQ(contesting_candidate(ranked_candidates(candidates), candidates[0], 0.03, -0.03,
+                                 any_other_part),
+            nullptr);
 }
 
 }  // namespace
